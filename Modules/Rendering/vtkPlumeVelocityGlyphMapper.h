@@ -1,0 +1,205 @@
+/**
+ * @class   vtkPlumeVelocityGlyphMapper
+ * @brief   velocity glyph lines drawn by a geometry shader from a 3D velocity texture
+ *
+ * Input port 0: a vtkImageData carrying a 3-component point array (the active
+ * vectors unless SetInputArrayToProcess / SelectVectorArray names another).
+ * The velocity is uploaded once as a 3D texture and re-uploaded only when the
+ * image or the chosen array changes. Optional input port 1: any vtkDataSet
+ * whose points are glyph roots (seed mode).
+ *
+ * For every root p, a geometry shader samples the velocity v(p) (trilinear)
+ * and emits a line from p to p + Scale·v(p), with alpha rising from RootAlpha
+ * at the root to 1 at the tip (seed 002). In streamlet mode the shader
+ * instead integrates K = StreamletSegments steps of length Scale/K through
+ * the texture (RK2 or RK4), so each glyph follows the flow.
+ *
+ * Roots come from one of three sources:
+ *  - ROOTS_SCREEN_ADAPTIVE (default): a lattice whose stride keeps about one
+ *    glyph per ScreenSpacing×ScreenSpacing pixels of the volume's projected
+ *    footprint; recomputed when the camera moves (an O(1) CPU cost).
+ *  - ROOTS_LATTICE: every LatticeStride-th grid node along each axis.
+ *  - ROOTS_SEEDS: the points of input port 1.
+ *
+ * Culling in the shader: roots outside the view frustum, outside the valid
+ * mask (the point array named by ValidMaskArrayName, e.g. vtkResampleToImage's
+ * "vtkValidPointMask", and any node whose vector has a NaN/Inf component) or
+ * with |v| <= MinimumSpeed emit nothing.
+ *
+ * Colour: by |v| through LookupTable over ScalarRange (ColorByMagnitude on,
+ * the default), or the actor property's colour.
+ */
+#ifndef vtkPlumeVelocityGlyphMapper_h
+#define vtkPlumeVelocityGlyphMapper_h
+
+#include "PlumeRenderingModule.h" // For export macro
+#include "vtkMapper.h"
+
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+
+class vtkImageData;
+class vtkDataSet;
+
+class PLUMERENDERING_EXPORT vtkPlumeVelocityGlyphMapper : public vtkMapper
+{
+public:
+  static vtkPlumeVelocityGlyphMapper* New();
+  vtkTypeMacro(vtkPlumeVelocityGlyphMapper, vtkMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum RootModes
+  {
+    ROOTS_SCREEN_ADAPTIVE = 0,
+    ROOTS_LATTICE = 1,
+    ROOTS_SEEDS = 2
+  };
+  enum IntegratorTypes
+  {
+    STRAIGHT = 0, ///< one straight segment p → p + Scale·v(p) (seed 002)
+    RK2 = 2,      ///< streamlet, midpoint rule
+    RK4 = 4       ///< streamlet, classical Runge–Kutta
+  };
+
+  ///@{
+  /** The image whose vectors are drawn (input port 0). */
+  void SetInputData(vtkImageData* input);
+  vtkImageData* GetInput();
+  ///@}
+
+  ///@{
+  /** Seed points for ROOTS_SEEDS (input port 1; only the points are used). */
+  void SetSeedData(vtkDataSet* seeds);
+  void SetSeedConnection(vtkAlgorithmOutput* output);
+  ///@}
+
+  ///@{
+  /** Name of the 3-component point array to draw; empty (default) = the active vectors. */
+  vtkSetStdStringFromCharMacro(VectorArrayName);
+  vtkGetCharFromStdStringMacro(VectorArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Name of a point array whose zero entries mark invalid nodes (no glyph, and
+   * no sampling across them). Default "vtkValidPointMask"; ignored if absent.
+   */
+  vtkSetStdStringFromCharMacro(ValidMaskArrayName);
+  vtkGetCharFromStdStringMacro(ValidMaskArrayName);
+  ///@}
+
+  ///@{
+  /** Where glyph roots come from. Default ROOTS_SCREEN_ADAPTIVE. */
+  vtkSetClampMacro(RootMode, int, ROOTS_SCREEN_ADAPTIVE, ROOTS_SEEDS);
+  vtkGetMacro(RootMode, int);
+  ///@}
+
+  ///@{
+  /** Lattice stride in grid nodes along each axis for ROOTS_LATTICE. Default 1 (every node). */
+  vtkSetClampMacro(LatticeStride, int, 1, VTK_INT_MAX);
+  vtkGetMacro(LatticeStride, int);
+  ///@}
+
+  ///@{
+  /** Target spacing in pixels between glyphs for ROOTS_SCREEN_ADAPTIVE. Default 12. */
+  vtkSetClampMacro(ScreenSpacing, double, 1.0, 1e6);
+  vtkGetMacro(ScreenSpacing, double);
+  ///@}
+
+  /** The lattice stride used by the last render (equals LatticeStride unless screen-adaptive). */
+  vtkGetMacro(EffectiveStride, int);
+
+  ///@{
+  /** Glyph length per unit of velocity, in world units. Default 1. */
+  vtkSetMacro(Scale, double);
+  vtkGetMacro(Scale, double);
+  ///@}
+
+  ///@{
+  /** STRAIGHT (default), RK2 or RK4. */
+  vtkSetMacro(Integrator, int);
+  vtkGetMacro(Integrator, int);
+  ///@}
+
+  ///@{
+  /** Segments per streamlet for RK2/RK4. Default 8, clamped to 1..32. */
+  vtkSetClampMacro(StreamletSegments, int, 1, 32);
+  vtkGetMacro(StreamletSegments, int);
+  ///@}
+
+  ///@{
+  /** Roots with |v| <= MinimumSpeed emit nothing. Default 0 (only zero vectors are culled). */
+  vtkSetClampMacro(MinimumSpeed, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MinimumSpeed, double);
+  ///@}
+
+  ///@{
+  /** Alpha at the root; the tip has alpha 1. Default 0 (seed 002's fade-in). */
+  vtkSetClampMacro(RootAlpha, double, 0.0, 1.0);
+  vtkGetMacro(RootAlpha, double);
+  ///@}
+
+  ///@{
+  /** Line width in pixels (wide lines are expanded to quads by the shader). Default 1. */
+  vtkSetClampMacro(LineWidth, double, 0.5, 64.0);
+  vtkGetMacro(LineWidth, double);
+  ///@}
+
+  ///@{
+  /**
+   * Colour by |v| through the lookup table (default on). Off: the actor's
+   * property colour. The table is vtkMapper's LookupTable; the range is
+   * vtkMapper's ScalarRange unless UseDataRange is on (default), in which case
+   * it is the magnitude range of the valid nodes.
+   */
+  vtkSetMacro(ColorByMagnitude, bool);
+  vtkGetMacro(ColorByMagnitude, bool);
+  vtkBooleanMacro(ColorByMagnitude, bool);
+  vtkSetMacro(UseDataRange, bool);
+  vtkGetMacro(UseDataRange, bool);
+  vtkBooleanMacro(UseDataRange, bool);
+  ///@}
+
+  /** Number of glyph roots submitted by the last render (before shader culling). */
+  vtkGetMacro(LastRootCount, vtkIdType);
+
+  /** Number of texture uploads so far (tests check that re-renders do not upload). */
+  vtkGetMacro(UploadCount, int);
+
+  void Render(vtkRenderer* ren, vtkActor* actor) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->vtkMapper::GetBounds(bounds); }
+
+protected:
+  vtkPlumeVelocityGlyphMapper();
+  ~vtkPlumeVelocityGlyphMapper() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  std::string VectorArrayName;
+  std::string ValidMaskArrayName = "vtkValidPointMask";
+  int RootMode = ROOTS_SCREEN_ADAPTIVE;
+  int LatticeStride = 1;
+  double ScreenSpacing = 12.0;
+  int EffectiveStride = 1;
+  double Scale = 1.0;
+  int Integrator = STRAIGHT;
+  int StreamletSegments = 8;
+  double MinimumSpeed = 0.0;
+  double RootAlpha = 0.0;
+  double LineWidth = 1.0;
+  bool ColorByMagnitude = true;
+  bool UseDataRange = true;
+  vtkIdType LastRootCount = 0;
+  int UploadCount = 0;
+
+private:
+  vtkPlumeVelocityGlyphMapper(const vtkPlumeVelocityGlyphMapper&) = delete;
+  void operator=(const vtkPlumeVelocityGlyphMapper&) = delete;
+
+  class Internals; // GL state lives here
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif
