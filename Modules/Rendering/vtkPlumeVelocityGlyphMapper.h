@@ -3,7 +3,7 @@
  * @brief   velocity glyph lines drawn by a geometry shader from a 3D velocity texture
  *
  * Input port 0: a vtkImageData carrying a 3-component point array (the active
- * vectors unless SetInputArrayToProcess / SelectVectorArray names another).
+ * vectors unless VectorArrayName names another).
  * The velocity is uploaded once as a 3D texture and re-uploaded only when the
  * image or the chosen array changes. Optional input port 1: any vtkDataSet
  * whose points are glyph roots (seed mode).
@@ -27,7 +27,37 @@
  * with |v| <= MinimumSpeed emit nothing.
  *
  * Colour: by |v| through LookupTable over ScalarRange (ColorByMagnitude on,
- * the default), or the actor property's colour.
+ * the default), or the actor property's diffuse colour.
+ *
+ * Screen-adaptive stride: each frame the 8 corners of the volume are
+ * projected to the viewport; A is the area in pixels of their screen-space
+ * bounding box clipped to the viewport (the whole viewport if a corner lies
+ * behind the camera). With N grid nodes and a target of
+ * G = max(1, A / ScreenSpacing²) glyphs, the stride is
+ * max(1, ceil(cbrt(N / G))), reported by GetEffectiveStride().
+ *
+ * Compositing: glyphs are drawn in the opaque pass with depth test and depth
+ * write on and standard (non-premultiplied) alpha blending,
+ * (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) for colour and (ONE, ONE_MINUS_SRC_ALPHA)
+ * for alpha; fragments with alpha < 1/512 are discarded (no depth write).
+ * Opaque actors occlude glyphs and glyphs occlude what is behind them; the
+ * faded part of a glyph blends with what was drawn before it, so add the glyph
+ * actor after the opaque actors it overlaps. Keep the actor's opacity at 1
+ * (it multiplies the glyph alpha, but opacity < 1 moves the actor into VTK's
+ * translucent pass, which this mapper does not take part in).
+ *
+ * Precision: positions in the shaders are offsets from the volume centre;
+ * the model-to-clip matrix is composed in double precision on the CPU
+ * (camera x actor x translation to the centre), so data far from the origin
+ * (e.g. at 1e6) renders like the same data at the origin.
+ *
+ * Images are taken as axis-aligned (origin + index·spacing); a VTK ≥ 9.2
+ * image direction matrix is ignored.
+ *
+ * Errors (no input, no vectors, a named array that is missing or does not
+ * have 3 components, a grid larger than GL_MAX_3D_TEXTURE_SIZE) are reported
+ * with vtkErrorMacro and nothing is drawn. Hardware selection is not supported
+ * (glyphs are skipped while a selector is active).
  */
 #ifndef vtkPlumeVelocityGlyphMapper_h
 #define vtkPlumeVelocityGlyphMapper_h
@@ -116,13 +146,18 @@ public:
   ///@}
 
   ///@{
-  /** STRAIGHT (default), RK2 or RK4. */
+  /** STRAIGHT (default), RK2 or RK4; other values are treated as STRAIGHT. */
   vtkSetMacro(Integrator, int);
   vtkGetMacro(Integrator, int);
   ///@}
 
   ///@{
-  /** Segments per streamlet for RK2/RK4. Default 8, clamped to 1..32. */
+  /**
+   * Segments per streamlet for RK2/RK4. Default 8, clamped to 1..32.
+   * Streamlets stop where they leave the volume or reach an invalid node. On a
+   * grid one node thick along an axis (a slice), the velocity component along
+   * that axis is ignored while integrating, so streamlets stay in the slice.
+   */
   vtkSetClampMacro(StreamletSegments, int, 1, 32);
   vtkGetMacro(StreamletSegments, int);
   ///@}
@@ -163,11 +198,28 @@ public:
   /** Number of glyph roots submitted by the last render (before shader culling). */
   vtkGetMacro(LastRootCount, vtkIdType);
 
-  /** Number of texture uploads so far (tests check that re-renders do not upload). */
+  /**
+   * Number of velocity-texture uploads so far (tests check that re-renders do
+   * not upload). A new upload happens only when the image, the chosen vector
+   * array or the mask array changes (pointer or MTime) or after
+   * ReleaseGraphicsResources.
+   */
   vtkGetMacro(UploadCount, int);
+
+  /** Glyphs are drawn in the opaque pass (with blending, see the class documentation). */
+  bool HasOpaqueGeometry() override { return true; }
+  bool HasTranslucentPolygonalGeometry() override { return false; }
 
   void Render(vtkRenderer* ren, vtkActor* actor) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
+  /**
+   * The image bounds (plus the seed bounds in ROOTS_SEEDS mode), padded on
+   * every side by the longest possible glyph, Scale·max|v| over the valid
+   * nodes (a streamlet's arc is no longer), so VTK's automatic clipping range
+   * never cuts glyphs. The padding is capped at 10 data diagonals so that
+   * absurd vectors (1e30) do not ruin the automatic clipping range; glyphs
+   * longer than that may be clipped by the far plane.
+   */
   double* GetBounds() override;
   void GetBounds(double bounds[6]) override { this->vtkMapper::GetBounds(bounds); }
 
@@ -176,6 +228,9 @@ protected:
   ~vtkPlumeVelocityGlyphMapper() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  // Bring the inputs up to date (unless Static).
+  void UpdateInputs();
 
   std::string VectorArrayName;
   std::string ValidMaskArrayName = "vtkValidPointMask";

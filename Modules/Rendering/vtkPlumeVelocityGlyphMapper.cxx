@@ -1,0 +1,890 @@
+#include "vtkPlumeVelocityGlyphMapper.h"
+
+#include "vtkPlumeGlyphFS.h"
+#include "vtkPlumeGlyphGS.h"
+#include "vtkPlumeGlyphVS.h"
+
+#include "vtkActor.h"
+#include "vtkAlgorithmOutput.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPointData.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkWeakPointer.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+// Keep only the `//PLUME::IF name...` ... `//PLUME::ENDIF` blocks (not nested)
+// where one of the names is enabled, and put `defines` in place of the
+// `//PLUME::Defines` tag.
+std::string SelectVariant(
+  const char* source, const std::set<std::string>& enabled, const std::string& defines)
+{
+  std::istringstream in(source);
+  std::string line;
+  std::string out;
+  bool keep = true;
+  while (std::getline(in, line))
+  {
+    const size_t first = line.find_first_not_of(" \t");
+    const std::string trimmed = first == std::string::npos ? std::string() : line.substr(first);
+    if (trimmed.compare(0, 12, "//PLUME::IF ") == 0)
+    {
+      std::istringstream names(trimmed.substr(12));
+      std::string name;
+      keep = false;
+      while (names >> name)
+      {
+        keep = keep || enabled.count(name) > 0;
+      }
+      continue;
+    }
+    if (trimmed.compare(0, 14, "//PLUME::ENDIF") == 0)
+    {
+      keep = true;
+      continue;
+    }
+    if (!keep)
+    {
+      continue;
+    }
+    if (trimmed.compare(0, 16, "//PLUME::Defines") == 0)
+    {
+      out += defines;
+      continue;
+    }
+    out += line;
+    out += '\n';
+  }
+  return out;
+}
+
+// row-major 4x4 helpers (double)
+void Multiply(const double a[16], const double b[16], double c[16])
+{
+  double r[16];
+  vtkMatrix4x4::Multiply4x4(a, b, r);
+  std::copy(r, r + 16, c);
+}
+
+void Transpose(const double a[16], double b[16])
+{
+  double r[16];
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      r[4 * i + j] = a[4 * j + i];
+    }
+  }
+  std::copy(r, r + 16, b);
+}
+
+// GL wants column-major floats
+void ToGL(const double m[16], float out[16])
+{
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      out[4 * c + r] = static_cast<float>(m[4 * r + c]);
+    }
+  }
+}
+
+void Apply(const double m[16], const double p[3], double out[4])
+{
+  for (int r = 0; r < 4; ++r)
+  {
+    out[r] = m[4 * r] * p[0] + m[4 * r + 1] * p[1] + m[4 * r + 2] * p[2] + m[4 * r + 3];
+  }
+}
+
+template <typename T>
+void CopyVectors(const T* src, vtkIdType n, std::vector<float>& rgba)
+{
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rgba[4 * i + c] = static_cast<float>(src[3 * i + c]);
+    }
+    rgba[4 * i + 3] = 1.0f;
+  }
+}
+
+template <typename T>
+void ApplyMask(const T* src, vtkIdType n, int comps, std::vector<float>& rgba)
+{
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (src[i * comps] == T(0))
+    {
+      rgba[4 * i + 3] = 0.0f;
+    }
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+class vtkPlumeVelocityGlyphMapper::Internals
+{
+public:
+  // What the velocity texture (or the CPU statistics) were built from.
+  struct Signature
+  {
+    vtkImageData* Image = nullptr;
+    vtkDataArray* Vectors = nullptr;
+    vtkDataArray* Mask = nullptr;
+    vtkMTimeType Time = 0;
+    bool operator==(const Signature& o) const
+    {
+      return this->Image == o.Image && this->Vectors == o.Vectors && this->Mask == o.Mask &&
+        this->Time == o.Time;
+    }
+    bool operator!=(const Signature& o) const { return !(*this == o); }
+  };
+
+  // Sanitised velocity: RGBA = (v, valid). Also gives the speed statistics.
+  void BuildVelocity(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask,
+    std::vector<float>* rgbaOut)
+  {
+    const vtkIdType n = image->GetNumberOfPoints();
+    std::vector<float> local;
+    std::vector<float>& rgba = rgbaOut ? *rgbaOut : local;
+    rgba.assign(4 * static_cast<size_t>(n), 0.0f);
+    switch (vectors->GetDataType())
+    {
+      vtkTemplateMacro(
+        CopyVectors(static_cast<const VTK_TT*>(vectors->GetVoidPointer(0)), n, rgba));
+      default:
+        for (vtkIdType i = 0; i < n; ++i)
+        {
+          double v[3];
+          vectors->GetTuple(i, v);
+          for (int c = 0; c < 3; ++c)
+          {
+            rgba[4 * i + c] = static_cast<float>(v[c]);
+          }
+          rgba[4 * i + 3] = 1.0f;
+        }
+    }
+    if (mask)
+    {
+      const int comps = mask->GetNumberOfComponents();
+      switch (mask->GetDataType())
+      {
+        vtkTemplateMacro(
+          ApplyMask(static_cast<const VTK_TT*>(mask->GetVoidPointer(0)), n, comps, rgba));
+        default:
+          for (vtkIdType i = 0; i < n; ++i)
+          {
+            if (mask->GetComponent(i, 0) == 0.0)
+            {
+              rgba[4 * i + 3] = 0.0f;
+            }
+          }
+      }
+    }
+    double lo = VTK_DOUBLE_MAX;
+    double hi = 0.0;
+    bool any = false;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      float* t = &rgba[4 * i];
+      if (!std::isfinite(t[0]) || !std::isfinite(t[1]) || !std::isfinite(t[2]) || t[3] == 0.0f)
+      {
+        t[0] = t[1] = t[2] = t[3] = 0.0f;
+        continue;
+      }
+      const double s = std::sqrt(double(t[0]) * t[0] + double(t[1]) * t[1] + double(t[2]) * t[2]);
+      lo = std::min(lo, s);
+      hi = std::max(hi, s);
+      any = true;
+    }
+    this->SpeedRange[0] = any ? lo : 0.0;
+    this->SpeedRange[1] = any ? hi : 0.0;
+  }
+
+  // GL objects
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  vtkNew<vtkTextureObject> VelocityTexture;
+  vtkNew<vtkTextureObject> LUTTexture;
+  vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
+  vtkNew<vtkOpenGLVertexArrayObject> SeedVAO;
+  vtkNew<vtkOpenGLBufferObject> SeedBuffer;
+  std::map<std::string, vtkShaderProgram*> Programs; // owned by the window's shader cache
+  vtkShaderProgram* SeedVAOProgram = nullptr;
+  int Max3DTextureSize = 0;
+
+  // upload bookkeeping
+  Signature Uploaded;       // velocity texture content
+  Signature StatsSignature; // SpeedRange content
+  double SpeedRange[2] = { 0, 0 };
+  vtkMTimeType LUTTime = 0;
+  double LUTRange[2] = { 0, 0 };
+  vtkScalarsToColors* LUTObject = nullptr;
+  static constexpr int LUTSize = 256;
+  vtkMTimeType SeedTime = 0;
+  vtkDataSet* SeedObject = nullptr;
+  double SeedCentre[3] = { 0, 0, 0 };
+  vtkIdType SeedCount = 0;
+  bool SeedUploadChanged = false;
+
+  void ReleaseGraphicsResources(vtkWindow* window)
+  {
+    this->VelocityTexture->ReleaseGraphicsResources(window);
+    this->LUTTexture->ReleaseGraphicsResources(window);
+    this->EmptyVAO->ReleaseGraphicsResources();
+    this->SeedVAO->ReleaseGraphicsResources();
+    this->SeedBuffer->ReleaseGraphicsResources();
+    this->Programs.clear();
+    this->SeedVAOProgram = nullptr;
+    this->Uploaded = Signature();
+    this->LUTTime = 0;
+    this->LUTObject = nullptr;
+    this->SeedTime = 0;
+    this->SeedObject = nullptr;
+    this->Max3DTextureSize = 0;
+    this->Window = nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkStandardNewMacro(vtkPlumeVelocityGlyphMapper);
+
+vtkPlumeVelocityGlyphMapper::vtkPlumeVelocityGlyphMapper()
+  : Impl(new Internals)
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+vtkPlumeVelocityGlyphMapper::~vtkPlumeVelocityGlyphMapper() = default;
+
+int vtkPlumeVelocityGlyphMapper::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+    return 1;
+  }
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+void vtkPlumeVelocityGlyphMapper::SetInputData(vtkImageData* input)
+{
+  this->SetInputDataInternal(0, input);
+}
+
+vtkImageData* vtkPlumeVelocityGlyphMapper::GetInput()
+{
+  if (this->GetNumberOfInputConnections(0) < 1)
+  {
+    return nullptr;
+  }
+  return vtkImageData::SafeDownCast(this->GetExecutive()->GetInputData(0, 0));
+}
+
+void vtkPlumeVelocityGlyphMapper::SetSeedData(vtkDataSet* seeds)
+{
+  this->SetInputDataInternal(1, seeds);
+}
+
+void vtkPlumeVelocityGlyphMapper::SetSeedConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+void vtkPlumeVelocityGlyphMapper::UpdateInputs()
+{
+  if (this->Static)
+  {
+    return;
+  }
+  for (int port = 0; port < 2; ++port)
+  {
+    if (this->GetNumberOfInputConnections(port) > 0)
+    {
+      int algPort = 0;
+      vtkAlgorithm* alg = this->GetInputAlgorithm(port, 0, algPort);
+      if (alg)
+      {
+        alg->Update(algPort);
+      }
+    }
+  }
+}
+
+namespace
+{
+vtkDataSet* SeedInput(vtkPlumeVelocityGlyphMapper* self)
+{
+  if (self->GetNumberOfInputConnections(1) < 1)
+  {
+    return nullptr;
+  }
+  return vtkDataSet::SafeDownCast(self->GetExecutive()->GetInputData(1, 0));
+}
+
+// Resolve the vector and mask arrays; reports errors through `self` when `report`.
+bool ResolveArrays(vtkPlumeVelocityGlyphMapper* self, vtkImageData* image,
+  const std::string& vectorName, const std::string& maskName, vtkDataArray*& vectors,
+  vtkDataArray*& mask, std::string& error)
+{
+  vtkPointData* pd = image->GetPointData();
+  vectors = vectorName.empty() ? pd->GetVectors() : pd->GetArray(vectorName.c_str());
+  mask = maskName.empty() ? nullptr : pd->GetArray(maskName.c_str());
+  std::ostringstream msg;
+  if (!vectors)
+  {
+    if (vectorName.empty())
+    {
+      msg << "the input image has no active vectors; set VectorArrayName to a 3-component point "
+             "array";
+    }
+    else
+    {
+      msg << "the input image has no point array named '" << vectorName << "'";
+    }
+  }
+  else if (vectors->GetNumberOfComponents() != 3)
+  {
+    msg << "point array '" << (vectors->GetName() ? vectors->GetName() : "(unnamed)") << "' has "
+        << vectors->GetNumberOfComponents() << " components; 3 are required";
+  }
+  else if (vectors->GetNumberOfTuples() != image->GetNumberOfPoints())
+  {
+    msg << "point array '" << (vectors->GetName() ? vectors->GetName() : "(unnamed)") << "' has "
+        << vectors->GetNumberOfTuples() << " tuples for " << image->GetNumberOfPoints()
+        << " points";
+  }
+  if (mask && mask->GetNumberOfTuples() != image->GetNumberOfPoints())
+  {
+    mask = nullptr; // not a usable mask: ignore it
+  }
+  (void)self;
+  error = msg.str();
+  return error.empty();
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+double* vtkPlumeVelocityGlyphMapper::GetBounds()
+{
+  vtkMath::UninitializeBounds(this->Bounds);
+  this->UpdateInputs();
+  vtkImageData* image = this->GetInput();
+  if (!image || image->GetNumberOfPoints() < 1)
+  {
+    return this->Bounds;
+  }
+  image->GetBounds(this->Bounds);
+  if (this->RootMode == ROOTS_SEEDS)
+  {
+    vtkDataSet* seeds = SeedInput(this);
+    if (seeds && seeds->GetNumberOfPoints() > 0)
+    {
+      const double* sb = seeds->GetBounds();
+      for (int a = 0; a < 3; ++a)
+      {
+        this->Bounds[2 * a] = std::min(this->Bounds[2 * a], sb[2 * a]);
+        this->Bounds[2 * a + 1] = std::max(this->Bounds[2 * a + 1], sb[2 * a + 1]);
+      }
+    }
+  }
+  // pad by the longest possible glyph (a streamlet's arc length is also at most Scale·max|v|)
+  vtkDataArray* vectors = nullptr;
+  vtkDataArray* mask = nullptr;
+  std::string error;
+  if (ResolveArrays(this, image, this->VectorArrayName, this->ValidMaskArrayName, vectors, mask,
+        error))
+  {
+    Internals::Signature sig{ image, vectors, mask,
+      std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 }) };
+    if (sig != this->Impl->StatsSignature)
+    {
+      this->Impl->BuildVelocity(image, vectors, mask, nullptr);
+      this->Impl->StatsSignature = sig;
+    }
+    double pad = std::fabs(this->Scale) * this->Impl->SpeedRange[1];
+    // absurd vectors (e.g. 1e30) must not wreck the automatic clipping range:
+    // cap the padding at 10 data diagonals
+    const double* ib = image->GetBounds();
+    const double diagonal =
+      std::sqrt((ib[1] - ib[0]) * (ib[1] - ib[0]) + (ib[3] - ib[2]) * (ib[3] - ib[2]) +
+        (ib[5] - ib[4]) * (ib[5] - ib[4]));
+    if (diagonal > 0)
+    {
+      pad = std::min(pad, 10.0 * diagonal);
+    }
+    if (!std::isfinite(pad))
+    {
+      pad = 0.0;
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Bounds[2 * a] -= pad;
+      this->Bounds[2 * a + 1] += pad;
+    }
+  }
+  return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
+{
+  Internals& impl = *this->Impl;
+  this->LastRootCount = 0;
+
+  this->UpdateInputs();
+  vtkImageData* image = this->GetInput();
+  if (!image)
+  {
+    vtkErrorMacro(<< "no input image");
+    return;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1 || image->GetNumberOfPoints() < 1)
+  {
+    return;
+  }
+  vtkDataArray* vectors = nullptr;
+  vtkDataArray* mask = nullptr;
+  std::string error;
+  if (!ResolveArrays(
+        this, image, this->VectorArrayName, this->ValidMaskArrayName, vectors, mask, error))
+  {
+    vtkErrorMacro(<< error);
+    return;
+  }
+  if (ren->GetSelector())
+  {
+    return; // hardware selection is not supported
+  }
+
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  auto* camera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
+  if (!renWin || !camera)
+  {
+    vtkErrorMacro(<< "an OpenGL render window and camera are required");
+    return;
+  }
+  if (impl.Window && impl.Window != renWin)
+  {
+    impl.ReleaseGraphicsResources(impl.Window);
+  }
+  impl.Window = renWin;
+
+  if (impl.Max3DTextureSize == 0)
+  {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
+    impl.Max3DTextureSize = maxSize;
+  }
+  if (dims[0] > impl.Max3DTextureSize || dims[1] > impl.Max3DTextureSize ||
+    dims[2] > impl.Max3DTextureSize)
+  {
+    vtkErrorMacro(<< "grid " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                  << " exceeds GL_MAX_3D_TEXTURE_SIZE = " << impl.Max3DTextureSize
+                  << " along at least one axis; resample the data to a coarser image");
+    return;
+  }
+
+  // ---- velocity texture: only when the data changed
+  Internals::Signature sig{ image, vectors, mask,
+    std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 }) };
+  if (sig != impl.Uploaded || !impl.VelocityTexture->GetHandle())
+  {
+    std::vector<float> rgba;
+    impl.BuildVelocity(image, vectors, mask, &rgba);
+    impl.StatsSignature = sig;
+    impl.VelocityTexture->SetContext(renWin);
+    impl.VelocityTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.VelocityTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.VelocityTexture->SetWrapR(vtkTextureObject::ClampToEdge);
+    impl.VelocityTexture->SetMinificationFilter(vtkTextureObject::Linear);
+    impl.VelocityTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+    if (!impl.VelocityTexture->Create3DFromRaw(
+          dims[0], dims[1], dims[2], 4, VTK_FLOAT, rgba.data()))
+    {
+      vtkErrorMacro(<< "could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                    << " RGBA32F velocity texture");
+      impl.Uploaded = Internals::Signature();
+      return;
+    }
+    impl.Uploaded = sig;
+    ++this->UploadCount;
+  }
+
+  // ---- geometry: index space -> centre-relative model -> clip, composed in double
+  double spacing[3], origin[3];
+  image->GetSpacing(spacing);
+  image->GetOrigin(origin);
+  // axis-aligned images (VTK 9.1 has no image direction matrix)
+  double indexToModel[16] = { 0 };
+  for (int r = 0; r < 3; ++r)
+  {
+    indexToModel[4 * r + r] = spacing[r];
+    indexToModel[4 * r + 3] = origin[r];
+  }
+  indexToModel[15] = 1.0;
+  double centre[4];
+  const double mid[3] = { 0.5 * (dims[0] - 1), 0.5 * (dims[1] - 1), 0.5 * (dims[2] - 1) };
+  Apply(indexToModel, mid, centre);
+  double indexToRel[16];
+  std::copy(indexToModel, indexToModel + 16, indexToRel);
+  for (int r = 0; r < 3; ++r)
+  {
+    indexToRel[4 * r + 3] = origin[r] - centre[r];
+  }
+  double relToIndex[16];
+  vtkMatrix4x4::Invert(indexToRel, relToIndex);
+
+  vtkMatrix4x4* wcvc = nullptr;
+  vtkMatrix4x4* vcdc = nullptr;
+  vtkMatrix4x4* wcdcT = nullptr;
+  vtkMatrix3x3* normals = nullptr;
+  camera->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdcT); // transposed for GL
+  double wcdc[16];
+  Transpose(wcdcT->GetData(), wcdc);
+  double modelToWorld[16];
+  vtkMatrix4x4::Identity(modelToWorld);
+  if (!actor->GetIsIdentity())
+  {
+    std::copy(actor->GetMatrix()->GetData(), actor->GetMatrix()->GetData() + 16, modelToWorld);
+  }
+  double relToModel[16];
+  vtkMatrix4x4::Identity(relToModel);
+  for (int r = 0; r < 3; ++r)
+  {
+    relToModel[4 * r + 3] = centre[r];
+  }
+  double mcdcRel[16];
+  Multiply(modelToWorld, relToModel, mcdcRel);
+  Multiply(wcdc, mcdcRel, mcdcRel);
+
+  int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
+  ren->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &vpX, &vpY);
+  if (vpWidth < 1 || vpHeight < 1)
+  {
+    return;
+  }
+
+  // ---- roots
+  const bool seedMode = this->RootMode == ROOTS_SEEDS;
+  int stride = 1;
+  int stridedDims[3] = { dims[0], dims[1], dims[2] };
+  vtkIdType rootCount = 0;
+  if (!seedMode)
+  {
+    if (this->RootMode == ROOTS_LATTICE)
+    {
+      stride = this->LatticeStride;
+    }
+    else
+    {
+      // projected footprint of the volume's 8 corners, clipped to the viewport
+      double xmin = VTK_DOUBLE_MAX, xmax = -VTK_DOUBLE_MAX;
+      double ymin = VTK_DOUBLE_MAX, ymax = -VTK_DOUBLE_MAX;
+      bool behind = false;
+      double indexToClip[16];
+      Multiply(mcdcRel, indexToRel, indexToClip);
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        const double idx[3] = { (corner & 1) ? dims[0] - 1.0 : 0.0,
+          (corner & 2) ? dims[1] - 1.0 : 0.0, (corner & 4) ? dims[2] - 1.0 : 0.0 };
+        double c[4];
+        Apply(indexToClip, idx, c);
+        if (!(c[3] > 1e-12))
+        {
+          behind = true;
+          break;
+        }
+        xmin = std::min(xmin, c[0] / c[3]);
+        xmax = std::max(xmax, c[0] / c[3]);
+        ymin = std::min(ymin, c[1] / c[3]);
+        ymax = std::max(ymax, c[1] / c[3]);
+      }
+      double area = double(vpWidth) * vpHeight;
+      if (!behind)
+      {
+        const double w = std::max(0.0, std::min(xmax, 1.0) - std::max(xmin, -1.0));
+        const double h = std::max(0.0, std::min(ymax, 1.0) - std::max(ymin, -1.0));
+        area = 0.25 * w * h * vpWidth * vpHeight;
+      }
+      const double nodes = double(dims[0]) * dims[1] * dims[2];
+      const double target = std::max(1.0, area / (this->ScreenSpacing * this->ScreenSpacing));
+      stride = std::max(1, static_cast<int>(std::ceil(std::cbrt(nodes / target) - 1e-9)));
+      stride = std::min(stride, std::max({ dims[0], dims[1], dims[2] }));
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      stridedDims[a] = (dims[a] + stride - 1) / stride;
+    }
+    rootCount = vtkIdType(stridedDims[0]) * stridedDims[1] * stridedDims[2];
+  }
+  else
+  {
+    vtkDataSet* seeds = SeedInput(this);
+    const vtkIdType n = seeds ? seeds->GetNumberOfPoints() : 0;
+    if (n > 0 &&
+      (seeds != impl.SeedObject || seeds->GetMTime() != impl.SeedTime ||
+        !std::equal(centre, centre + 3, impl.SeedCentre) || !impl.SeedBuffer->GetHandle()))
+    {
+      std::vector<float> positions(3 * static_cast<size_t>(n));
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        double p[3];
+        seeds->GetPoint(i, p);
+        for (int a = 0; a < 3; ++a)
+        {
+          positions[3 * i + a] = static_cast<float>(p[a] - centre[a]);
+        }
+      }
+      impl.SeedBuffer->Upload(positions, vtkOpenGLBufferObject::ArrayBuffer);
+      impl.SeedObject = seeds;
+      impl.SeedTime = seeds->GetMTime();
+      std::copy(centre, centre + 3, impl.SeedCentre);
+      impl.SeedCount = n;
+      impl.SeedUploadChanged = true;
+    }
+    rootCount = n > 0 ? impl.SeedCount : 0;
+  }
+  this->EffectiveStride = stride;
+  this->LastRootCount = rootCount;
+  if (rootCount < 1)
+  {
+    return;
+  }
+
+  // ---- colour lookup texture: only when the table, its range or the data range changed
+  const bool useLUT = this->ColorByMagnitude;
+  double colorRange[2] = { this->ScalarRange[0], this->ScalarRange[1] };
+  if (this->UseDataRange)
+  {
+    colorRange[0] = impl.SpeedRange[0];
+    colorRange[1] = impl.SpeedRange[1];
+  }
+  if (useLUT)
+  {
+    vtkScalarsToColors* lut = this->GetLookupTable();
+    lut->SetRange(colorRange);
+    lut->Build();
+    if (lut != impl.LUTObject || lut->GetMTime() != impl.LUTTime ||
+      colorRange[0] != impl.LUTRange[0] || colorRange[1] != impl.LUTRange[1] ||
+      !impl.LUTTexture->GetHandle())
+    {
+      std::vector<unsigned char> table(4 * Internals::LUTSize);
+      for (int i = 0; i < Internals::LUTSize; ++i)
+      {
+        const double value =
+          colorRange[0] + (colorRange[1] - colorRange[0]) * i / (Internals::LUTSize - 1.0);
+        const unsigned char* rgba = lut->MapValue(value);
+        std::copy(rgba, rgba + 4, &table[4 * i]);
+      }
+      impl.LUTTexture->SetContext(renWin);
+      impl.LUTTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+      impl.LUTTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+      impl.LUTTexture->SetMinificationFilter(vtkTextureObject::Linear);
+      impl.LUTTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+      impl.LUTTexture->Create2DFromRaw(
+        Internals::LUTSize, 1, 4, VTK_UNSIGNED_CHAR, table.data());
+      impl.LUTObject = lut;
+      impl.LUTTime = lut->GetMTime();
+      impl.LUTRange[0] = colorRange[0];
+      impl.LUTRange[1] = colorRange[1];
+    }
+  }
+
+  // ---- shader variant
+  int segments = 1;
+  std::string integrator = "STRAIGHT";
+  if (this->Integrator == RK2 || this->Integrator == RK4)
+  {
+    segments = this->StreamletSegments;
+    integrator = this->Integrator == RK2 ? "RK2" : "RK4";
+  }
+  const bool wide = this->LineWidth > 1.0;
+  const std::set<std::string> enabled = { seedMode ? "SEEDS" : "LATTICE", integrator,
+    wide ? "WIDE" : "THIN", useLUT ? "LUT" : "SOLID" };
+  std::ostringstream key;
+  key << (seedMode ? "S" : "L") << integrator << segments << (wide ? "W" : "T")
+      << (useLUT ? "C" : "P");
+  vtkShaderProgram*& cached = impl.Programs[key.str()];
+  vtkShaderProgram* program = nullptr;
+  if (!cached)
+  {
+    std::ostringstream defines;
+    defines << "#define PLUME_SEGMENTS " << segments << "\n"
+            << "#define PLUME_POINTS " << segments + 1 << "\n"
+            << "#define PLUME_VERTICES_WIDE " << 2 * (segments + 1) << "\n";
+    const std::string vs = SelectVariant(vtkPlumeGlyphVS, enabled, defines.str());
+    const std::string gs = SelectVariant(vtkPlumeGlyphGS, enabled, defines.str());
+    const std::string fs = SelectVariant(vtkPlumeGlyphFS, enabled, defines.str());
+    program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+    cached = program;
+  }
+  else
+  {
+    program = renWin->GetShaderCache()->ReadyShaderProgram(cached);
+  }
+  if (!program)
+  {
+    impl.Programs.erase(key.str());
+    vtkErrorMacro(<< "could not build the glyph shader program (" << key.str() << ")");
+    return;
+  }
+
+  // ---- uniforms
+  float m[16];
+  ToGL(mcdcRel, m);
+  program->SetUniformMatrix4x4("MCDCRel", m);
+  ToGL(indexToRel, m);
+  program->SetUniformMatrix4x4("IndexToRel", m);
+  ToGL(relToIndex, m);
+  program->SetUniformMatrix4x4("RelToIndex", m);
+  const float fdims[3] = { float(dims[0]), float(dims[1]), float(dims[2]) };
+  program->SetUniform3f("Dims", fdims);
+  program->SetUniformf("Scale", static_cast<float>(this->Scale));
+  if (segments > 1 || integrator != "STRAIGHT")
+  {
+    // streamlets stay inside a grid that is one node thick along an axis
+    const float axes[3] = { dims[0] > 1 ? 1.0f : 0.0f, dims[1] > 1 ? 1.0f : 0.0f,
+      dims[2] > 1 ? 1.0f : 0.0f };
+    program->SetUniform3f("StreamAxes", axes);
+  }
+  program->SetUniformf("MinimumSpeed", static_cast<float>(this->MinimumSpeed));
+  program->SetUniformf("RootAlpha", static_cast<float>(this->RootAlpha));
+  const double span = colorRange[1] - colorRange[0];
+  const float cr[2] = { static_cast<float>(colorRange[0]),
+    span > 0 && std::isfinite(1.0 / span) ? static_cast<float>(1.0 / span) : 0.0f };
+  program->SetUniform2f("ColorRange", cr);
+  vtkProperty* property = actor->GetProperty();
+  program->SetUniformf("Opacity", static_cast<float>(property->GetOpacity()));
+  if (wide)
+  {
+    const float vp[2] = { float(vpWidth), float(vpHeight) };
+    program->SetUniform2f("ViewportSize", vp);
+    program->SetUniformf("HalfWidth", static_cast<float>(0.5 * this->LineWidth));
+  }
+  if (!seedMode)
+  {
+    const int sd[2] = { stridedDims[0], stridedDims[1] };
+    program->SetUniform2i("StridedDims", sd);
+    program->SetUniformi("Stride", stride);
+  }
+  impl.VelocityTexture->Activate();
+  program->SetUniformi("Velocity", impl.VelocityTexture->GetTextureUnit());
+  if (useLUT)
+  {
+    impl.LUTTexture->Activate();
+    program->SetUniformi("ColorLUT", impl.LUTTexture->GetTextureUnit());
+    program->SetUniformf("LUTSize", static_cast<float>(Internals::LUTSize));
+  }
+  else
+  {
+    double color[3];
+    property->GetDiffuseColor(color);
+    program->SetUniform3f("SolidColor", color);
+  }
+
+  // ---- state: depth test + write, standard alpha blending (restored afterwards)
+  vtkOpenGLState* state = renWin->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+
+  if (seedMode)
+  {
+    impl.SeedVAO->Bind();
+    if (impl.SeedVAOProgram != program || impl.SeedUploadChanged)
+    {
+      impl.SeedVAO->ShaderProgramChanged();
+      impl.SeedVAO->Bind();
+      if (!impl.SeedVAO->AddAttributeArray(program, impl.SeedBuffer, "seedPosition", 0,
+            3 * sizeof(float), VTK_FLOAT, 3, false))
+      {
+        vtkErrorMacro(<< "could not bind the seed positions");
+      }
+      impl.SeedVAOProgram = program;
+      impl.SeedUploadChanged = false;
+    }
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(rootCount));
+    impl.SeedVAO->Release();
+  }
+  else
+  {
+    impl.EmptyVAO->Bind();
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(rootCount));
+    impl.EmptyVAO->Release();
+  }
+
+  impl.VelocityTexture->Deactivate();
+  if (useLUT)
+  {
+    impl.LUTTexture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeVelocityGlyphMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Impl->ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeVelocityGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "VectorArrayName: " << this->VectorArrayName << "\n";
+  os << indent << "ValidMaskArrayName: " << this->ValidMaskArrayName << "\n";
+  os << indent << "RootMode: " << this->RootMode << "\n";
+  os << indent << "LatticeStride: " << this->LatticeStride << "\n";
+  os << indent << "ScreenSpacing: " << this->ScreenSpacing << "\n";
+  os << indent << "EffectiveStride: " << this->EffectiveStride << "\n";
+  os << indent << "Scale: " << this->Scale << "\n";
+  os << indent << "Integrator: " << this->Integrator << "\n";
+  os << indent << "StreamletSegments: " << this->StreamletSegments << "\n";
+  os << indent << "MinimumSpeed: " << this->MinimumSpeed << "\n";
+  os << indent << "RootAlpha: " << this->RootAlpha << "\n";
+  os << indent << "LineWidth: " << this->LineWidth << "\n";
+  os << indent << "ColorByMagnitude: " << this->ColorByMagnitude << "\n";
+  os << indent << "UseDataRange: " << this->UseDataRange << "\n";
+  os << indent << "LastRootCount: " << this->LastRootCount << "\n";
+  os << indent << "UploadCount: " << this->UploadCount << "\n";
+}
