@@ -1,0 +1,220 @@
+#include "plumeParameters.h"
+
+#include "plumeSceneError.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace plume
+{
+
+Parameters::Parameters(const nlohmann::json& object, std::string where)
+  : Json(object)
+  , Location(std::move(where))
+{
+  if (!object.is_object())
+  {
+    throw SceneError(this->Location + ": expected a JSON object, got " + object.dump());
+  }
+}
+
+bool Parameters::Has(const std::string& key) const
+{
+  return this->Json.contains(key);
+}
+
+const nlohmann::json* Parameters::Get(const std::string& key)
+{
+  this->Used.insert(key);
+  auto it = this->Json.find(key);
+  return it == this->Json.end() ? nullptr : &*it;
+}
+
+void Parameters::Fail(const std::string& key, const std::string& expected, const nlohmann::json& got) const
+{
+  std::string shown = got.dump();
+  if (shown.size() > 80)
+  {
+    shown = shown.substr(0, 77) + "...";
+  }
+  throw SceneError(this->Location + ": parameter '" + key + "' must be " + expected + ", got " + shown);
+}
+
+double Parameters::Number(const std::string& key, double fallback, double min, double max)
+{
+  const nlohmann::json* value = this->Get(key);
+  if (!value)
+  {
+    return fallback;
+  }
+  if (!value->is_number())
+  {
+    this->Fail(key, "a number", *value);
+  }
+  const double x = value->get<double>();
+  if (!std::isfinite(x) || x < min || x > max)
+  {
+    std::ostringstream range;
+    range << "a finite number in [" << min << ", " << max << "]";
+    this->Fail(key, range.str(), *value);
+  }
+  return x;
+}
+
+int Parameters::Integer(const std::string& key, int fallback, int min, int max)
+{
+  const nlohmann::json* value = this->Get(key);
+  if (!value)
+  {
+    return fallback;
+  }
+  std::ostringstream range;
+  range << "an integer in [" << min << ", " << max << "]";
+  if (!value->is_number_integer())
+  {
+    this->Fail(key, range.str(), *value);
+  }
+  const long long x = value->get<long long>();
+  if (x < min || x > max)
+  {
+    this->Fail(key, range.str(), *value);
+  }
+  return static_cast<int>(x);
+}
+
+bool Parameters::Boolean(const std::string& key, bool fallback)
+{
+  const nlohmann::json* value = this->Get(key);
+  if (!value)
+  {
+    return fallback;
+  }
+  if (!value->is_boolean())
+  {
+    this->Fail(key, "true or false", *value);
+  }
+  return value->get<bool>();
+}
+
+std::string Parameters::String(const std::string& key, const std::string& fallback)
+{
+  const nlohmann::json* value = this->Get(key);
+  if (!value)
+  {
+    return fallback;
+  }
+  if (!value->is_string())
+  {
+    this->Fail(key, "a string", *value);
+  }
+  return value->get<std::string>();
+}
+
+std::string Parameters::Choice(
+  const std::string& key, const std::string& fallback, const std::vector<std::string>& choices)
+{
+  const std::string s = this->String(key, fallback);
+  for (const auto& c : choices)
+  {
+    if (c == s)
+    {
+      return s;
+    }
+  }
+  std::string list;
+  for (const auto& c : choices)
+  {
+    list += (list.empty() ? "" : ", ") + c;
+  }
+  this->Fail(key, "one of " + list, *this->Json.find(key));
+}
+
+template <size_t N>
+std::array<double, N> Parameters::Vector(const std::string& key, const std::array<double, N>& fallback)
+{
+  const nlohmann::json* value = this->Get(key);
+  if (!value)
+  {
+    return fallback;
+  }
+  const std::string expected = "a list of " + std::to_string(N) + " finite numbers";
+  if (!value->is_array() || value->size() != N)
+  {
+    this->Fail(key, expected, *value);
+  }
+  std::array<double, N> out;
+  for (size_t i = 0; i < N; ++i)
+  {
+    if (!(*value)[i].is_number() || !std::isfinite((*value)[i].template get<double>()))
+    {
+      this->Fail(key, expected, *value);
+    }
+    out[i] = (*value)[i].template get<double>();
+  }
+  return out;
+}
+
+template std::array<double, 2> Parameters::Vector<2>(const std::string&, const std::array<double, 2>&);
+template std::array<double, 3> Parameters::Vector<3>(const std::string&, const std::array<double, 3>&);
+template std::array<double, 6> Parameters::Vector<6>(const std::string&, const std::array<double, 6>&);
+
+std::vector<std::string> Parameters::Strings(const std::string& key)
+{
+  std::vector<std::string> out;
+  const nlohmann::json* value = this->Get(key);
+  if (!value)
+  {
+    return out;
+  }
+  if (value->is_string())
+  {
+    out.push_back(value->get<std::string>());
+    return out;
+  }
+  if (!value->is_array())
+  {
+    this->Fail(key, "a string or a list of strings", *value);
+  }
+  for (const auto& item : *value)
+  {
+    if (!item.is_string())
+    {
+      this->Fail(key, "a string or a list of strings", *value);
+    }
+    out.push_back(item.get<std::string>());
+  }
+  return out;
+}
+
+const nlohmann::json* Parameters::Object(const std::string& key)
+{
+  const nlohmann::json* value = this->Get(key);
+  if (value && !value->is_object())
+  {
+    this->Fail(key, "an object", *value);
+  }
+  return value;
+}
+
+const nlohmann::json* Parameters::Raw(const std::string& key)
+{
+  return this->Get(key);
+}
+
+void Parameters::RejectUnknown() const
+{
+  for (auto it = this->Json.begin(); it != this->Json.end(); ++it)
+  {
+    if (!this->Used.count(it.key()))
+    {
+      std::string known;
+      for (const auto& k : this->Used)
+      {
+        known += (known.empty() ? "" : ", ") + k;
+      }
+      throw SceneError(this->Location + ": unknown parameter '" + it.key() + "' (known: " + known + ")");
+    }
+  }
+}
+
+}

@@ -1,0 +1,340 @@
+// The representation types of a scene: each reads and checks all its
+// parameters first (so typos fail before slow work), then builds its props.
+#include "plumeColorMaps.h"
+#include "plumeParameters.h"
+#include "plumeScene.h"
+#include "plumeSceneError.h"
+
+#include "vtkPlumeVelocityGlyphMapper.h"
+
+#include "vtkActor.h"
+#include "vtkContourFilter.h"
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkDataSet.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkImageData.h"
+#include "vtkOutlineFilter.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
+#include "vtkSphereSource.h"
+
+#include <cmath>
+
+namespace plume
+{
+namespace
+{
+
+std::string DescribeArrays(vtkDataSet* data)
+{
+  std::string list;
+  vtkPointData* pd = data->GetPointData();
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* a = pd->GetArray(i);
+    if (a && a->GetName())
+    {
+      list += (list.empty() ? "" : ", ") + std::string(a->GetName()) + " (" +
+        std::to_string(a->GetNumberOfComponents()) + " components)";
+    }
+  }
+  return list.empty() ? "none" : list;
+}
+
+/** A named point array (or the active one of the given kind), checked for its component count. */
+vtkDataArray* RequirePointArray(
+  vtkDataSet* data, const std::string& name, int components, const std::string& where, const std::string& dataset)
+{
+  vtkDataArray* array = nullptr;
+  if (name.empty())
+  {
+    array = components == 3 ? data->GetPointData()->GetVectors() : data->GetPointData()->GetScalars();
+    if (!array)
+    {
+      throw SceneError(where + ": dataset '" + dataset + "' has no active " +
+        (components == 3 ? "vectors" : "scalars") + "; name one (point arrays: " + DescribeArrays(data) + ")");
+    }
+  }
+  else
+  {
+    array = data->GetPointData()->GetArray(name.c_str());
+    if (!array)
+    {
+      throw SceneError(where + ": dataset '" + dataset + "' has no point array '" + name +
+        "' (point arrays: " + DescribeArrays(data) + ")");
+    }
+  }
+  if (components > 0 && array->GetNumberOfComponents() != components)
+  {
+    throw SceneError(where + ": point array '" + std::string(array->GetName() ? array->GetName() : name) +
+      "' of dataset '" + dataset + "' has " + std::to_string(array->GetNumberOfComponents()) +
+      " components, expected " + std::to_string(components));
+  }
+  return array;
+}
+
+vtkDataSet* RequireDataSet(vtkDataObject* data, const std::string& where, const std::string& name)
+{
+  auto* ds = vtkDataSet::SafeDownCast(data);
+  if (!ds)
+  {
+    throw SceneError(where + ": dataset '" + name + "' is a " + data->GetClassName() +
+      "; set \"merge_blocks\": true (the default) to render it");
+  }
+  return ds;
+}
+
+/** Colouring parameters shared by representations: solid colour or a colour map over a range. */
+struct Coloring
+{
+  std::array<double, 3> Color;
+  std::string Map;
+  bool HasRange = false;
+  std::array<double, 2> Range = { 0, 1 };
+
+  void Read(Parameters& p, const std::array<double, 3>& defaultColor)
+  {
+    this->Color = p.Vector<3>("color", defaultColor);
+    this->Map = p.Choice("colormap", "viridis", ColorMapNames());
+    this->HasRange = p.Has("range");
+    this->Range = p.Vector<2>("range", { 0, 1 });
+    if (this->HasRange && !(this->Range[1] >= this->Range[0]))
+    {
+      throw SceneError(p.Where() + ": 'range' must be [min, max] with min <= max");
+    }
+  }
+  vtkSmartPointer<vtkScalarsToColors> Table(vtkDataArray* array, int component) const
+  {
+    double r[2] = { this->Range[0], this->Range[1] };
+    if (!this->HasRange)
+    {
+      array->GetRange(r, component);
+    }
+    return MakeColorMap(this->Map, r[0], r[1]);
+  }
+};
+
+void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
+{
+  const std::string dataset = p.String("dataset", "");
+  const std::string vectors = p.String("vectors", "");
+  const std::string mask = p.String("mask", "vtkValidPointMask");
+  const std::string roots = p.Choice("roots", "screen", { "screen", "lattice", "seeds" });
+  const int stride = p.Integer("stride", 1, 1, 1 << 20);
+  const double spacing = p.Number("screen_spacing", 12.0, 1.0, 1e6);
+  const nlohmann::json* seedPlane = p.Object("seed_plane");
+  const std::string seedDataset = p.String("seed_dataset", "");
+  const double scale = p.Number("scale", 1.0);
+  const std::string integrator = p.Choice("integrator", "straight", { "straight", "rk2", "rk4" });
+  const int segments = p.Integer("segments", 8, 1, 32);
+  const double minSpeed = p.Number("min_speed", 0.0, 0.0);
+  const double rootAlpha = p.Number("root_alpha", 0.0, 0.0, 1.0);
+  const double lineWidth = p.Number("line_width", 1.0, 0.5, 64.0);
+  const std::string colorBy = p.Choice("color_by", "magnitude", { "magnitude", "solid" });
+  Coloring coloring;
+  coloring.Read(p, { 1, 1, 1 });
+  p.RejectUnknown();
+  if (dataset.empty())
+  {
+    throw SceneError(p.Where() + ": 'dataset' is required");
+  }
+  if (roots == "seeds" && !seedPlane && seedDataset.empty())
+  {
+    throw SceneError(p.Where() + ": roots \"seeds\" needs 'seed_plane' or 'seed_dataset'");
+  }
+
+  vtkImageData* image = datasets.GetImage(dataset, p.Where());
+  vtkDataArray* array = RequirePointArray(image, vectors, 3, p.Where(), dataset);
+
+  vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
+  mapper->SetInputData(image);
+  mapper->SetVectorArrayName(array->GetName() ? array->GetName() : "");
+  mapper->SetValidMaskArrayName(mask.c_str());
+  mapper->SetRootMode(roots == "screen" ? vtkPlumeVelocityGlyphMapper::ROOTS_SCREEN_ADAPTIVE
+      : roots == "lattice"             ? vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE
+                                       : vtkPlumeVelocityGlyphMapper::ROOTS_SEEDS);
+  mapper->SetLatticeStride(stride);
+  mapper->SetScreenSpacing(spacing);
+  mapper->SetScale(scale);
+  mapper->SetIntegrator(integrator == "rk2" ? vtkPlumeVelocityGlyphMapper::RK2
+      : integrator == "rk4"                 ? vtkPlumeVelocityGlyphMapper::RK4
+                                            : vtkPlumeVelocityGlyphMapper::STRAIGHT);
+  mapper->SetStreamletSegments(segments);
+  mapper->SetMinimumSpeed(minSpeed);
+  mapper->SetRootAlpha(rootAlpha);
+  mapper->SetLineWidth(lineWidth);
+  if (roots == "seeds")
+  {
+    if (seedPlane)
+    {
+      Parameters sp(*seedPlane, p.Where() + ".seed_plane");
+      vtkNew<vtkPlaneSource> plane;
+      plane->SetOrigin(sp.Vector<3>("origin", { 0, 0, 0 }).data());
+      plane->SetPoint1(sp.Vector<3>("point1", { 1, 0, 0 }).data());
+      plane->SetPoint2(sp.Vector<3>("point2", { 0, 1, 0 }).data());
+      const auto res = sp.Vector<2>("resolution", { 20, 20 });
+      sp.RejectUnknown();
+      plane->SetResolution(std::max(1, int(res[0])), std::max(1, int(res[1])));
+      plane->Update();
+      mapper->SetSeedData(plane->GetOutput());
+    }
+    else
+    {
+      mapper->SetSeedData(RequireDataSet(datasets.Get(seedDataset, p.Where()), p.Where(), seedDataset));
+    }
+  }
+  mapper->SetColorByMagnitude(colorBy == "magnitude");
+  if (colorBy == "magnitude")
+  {
+    auto table = coloring.Table(array, -1);
+    mapper->SetLookupTable(table);
+    mapper->SetUseDataRange(false);
+    mapper->SetScalarRange(table->GetRange());
+  }
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(coloring.Color[0], coloring.Color[1], coloring.Color[2]);
+  renderer->AddActor(actor);
+}
+
+void AddPolyActor(vtkAlgorithmOutput* port, vtkDataSet* sample, const std::string& arrayName, const Coloring& coloring,
+  double opacity, const std::string& where, const std::string& dataset, vtkRenderer* renderer, bool wireframe = false)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(port);
+  if (!arrayName.empty())
+  {
+    vtkDataArray* array = RequirePointArray(sample, arrayName, 0, where, dataset);
+    const int component = array->GetNumberOfComponents() == 1 ? 0 : -1;
+    auto table = coloring.Table(array, component);
+    mapper->SetLookupTable(table);
+    mapper->SetScalarModeToUsePointFieldData();
+    mapper->SelectColorArray(arrayName.c_str());
+    mapper->SetScalarRange(table->GetRange());
+    mapper->ScalarVisibilityOn();
+  }
+  else
+  {
+    mapper->ScalarVisibilityOff();
+  }
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(coloring.Color[0], coloring.Color[1], coloring.Color[2]);
+  actor->GetProperty()->SetOpacity(opacity);
+  if (wireframe)
+  {
+    actor->GetProperty()->SetRepresentationToWireframe();
+  }
+  renderer->AddActor(actor);
+}
+
+void BuildSurface(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
+{
+  const std::string dataset = p.String("dataset", "");
+  const std::string colorArray = p.String("color_array", "");
+  const double opacity = p.Number("opacity", 1.0, 0.0, 1.0);
+  const bool wireframe = p.Boolean("wireframe", false);
+  Coloring coloring;
+  coloring.Read(p, { 0.8, 0.8, 0.8 });
+  p.RejectUnknown();
+  vtkDataSet* data = RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset);
+  vtkNew<vtkDataSetSurfaceFilter> surface;
+  surface->SetInputData(data);
+  AddPolyActor(surface->GetOutputPort(), data, colorArray, coloring, opacity, p.Where(), dataset, renderer, wireframe);
+}
+
+void BuildContour(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
+{
+  const std::string dataset = p.String("dataset", "");
+  const std::string arrayName = p.String("array", "");
+  const nlohmann::json* values = p.Raw("values");
+  const std::string colorArray = p.String("color_array", "");
+  const double opacity = p.Number("opacity", 1.0, 0.0, 1.0);
+  Coloring coloring;
+  coloring.Read(p, { 0.9, 0.85, 0.7 });
+  p.RejectUnknown();
+  if (!values || !values->is_array() || values->empty())
+  {
+    throw SceneError(p.Where() + ": 'values' must be a non-empty list of iso values");
+  }
+  vtkDataSet* data = RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset);
+  vtkDataArray* array = RequirePointArray(data, arrayName, 1, p.Where(), dataset);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputData(data);
+  contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, array->GetName());
+  int i = 0;
+  for (const auto& v : *values)
+  {
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+    {
+      throw SceneError(p.Where() + ": 'values' must hold finite numbers, got " + v.dump());
+    }
+    contour->SetValue(i++, v.get<double>());
+  }
+  contour->SetComputeScalars(!colorArray.empty());
+  AddPolyActor(contour->GetOutputPort(), data, colorArray, coloring, opacity, p.Where(), dataset, renderer);
+}
+
+void BuildOutline(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
+{
+  const std::string dataset = p.String("dataset", "");
+  const double lineWidth = p.Number("line_width", 1.0, 0.5, 64.0);
+  Coloring coloring;
+  coloring.Read(p, { 1, 1, 1 });
+  p.RejectUnknown();
+  vtkDataSet* data = RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset);
+  vtkNew<vtkOutlineFilter> outline;
+  outline->SetInputData(data);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(outline->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(coloring.Color[0], coloring.Color[1], coloring.Color[2]);
+  actor->GetProperty()->SetLineWidth(static_cast<float>(lineWidth));
+  actor->GetProperty()->LightingOff();
+  renderer->AddActor(actor);
+}
+
+void BuildSphere(Parameters& p, SceneDatasets&, vtkRenderer* renderer)
+{
+  const auto center = p.Vector<3>("center", { 0, 0, 0 });
+  const double radius = p.Number("radius", 1.0, 0.0);
+  const int resolution = p.Integer("resolution", 48, 3, 1024);
+  const double opacity = p.Number("opacity", 1.0, 0.0, 1.0);
+  Coloring coloring;
+  coloring.Read(p, { 0.85, 0.3, 0.2 });
+  p.RejectUnknown();
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(center.data());
+  sphere->SetRadius(radius);
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution / 2 + 2);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(coloring.Color[0], coloring.Color[1], coloring.Color[2]);
+  actor->GetProperty()->SetOpacity(opacity);
+  renderer->AddActor(actor);
+}
+
+}
+
+const std::map<std::string, RepresentationBuilder>& Representations()
+{
+  static const std::map<std::string, RepresentationBuilder> builders = {
+    { "glyphs", BuildGlyphs },
+    { "surface", BuildSurface },
+    { "contour", BuildContour },
+    { "outline", BuildOutline },
+    { "sphere", BuildSphere },
+  };
+  return builders;
+}
+
+}

@@ -1,0 +1,401 @@
+#include "plumeScene.h"
+
+#include "plumeParameters.h"
+#include "plumeProgress.h"
+#include "plumeSceneError.h"
+
+#include "vtkPlumeDatasetReader.h"
+#include "vtkPlumeResampleToImage.h"
+#include "vtkPlumeVortexSource.h"
+
+#include "vtkCamera.h"
+#include "vtkDataObject.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkRenderer.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace plume
+{
+
+nlohmann::json Scene::ReadFile(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    throw SceneError("cannot open scene file '" + path + "'");
+  }
+  try
+  {
+    return nlohmann::json::parse(in);
+  }
+  catch (const nlohmann::json::exception& e)
+  {
+    // e.what() carries the position, or the offending number (e.g. 1e999 overflows).
+    throw SceneError("scene file '" + path + "' is not valid JSON: " + e.what());
+  }
+}
+
+SceneDatasets::SceneDatasets(const nlohmann::json* datasets, std::string sceneDirectory, bool progress)
+  : SceneDirectory(std::move(sceneDirectory))
+  , Progress(progress)
+{
+  if (!datasets)
+  {
+    return;
+  }
+  if (!datasets->is_object())
+  {
+    throw SceneError("scene: 'datasets' must be an object mapping names to datasets, got " + datasets->dump());
+  }
+  for (auto it = datasets->begin(); it != datasets->end(); ++it)
+  {
+    this->Entries[it.key()].Spec = it.value();
+  }
+}
+
+std::string SceneDatasets::Resolve(const std::string& path) const
+{
+  if (vtksys::SystemTools::FileIsFullPath(path))
+  {
+    return path;
+  }
+  const std::string local = this->SceneDirectory + "/" + path;
+  if (vtksys::SystemTools::FileExists(local))
+  {
+    return local;
+  }
+  const char* env = std::getenv("PLUME_DATA_DIR");
+  const std::string data = (env && *env) ? std::string(env) : std::string(PLUME_DATA_DIR);
+  const std::string shared = data + "/" + path;
+  if (vtksys::SystemTools::FileExists(shared))
+  {
+    return shared;
+  }
+  return local; // the reader reports it missing, naming the path
+}
+
+vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& where)
+{
+  auto it = this->Entries.find(name);
+  if (it == this->Entries.end())
+  {
+    std::string known;
+    for (const auto& e : this->Entries)
+    {
+      known += (known.empty() ? "" : ", ") + e.first;
+    }
+    throw SceneError(where + ": unknown dataset '" + name + "' (datasets: " + (known.empty() ? "none" : known) + ")");
+  }
+  Entry& entry = it->second;
+  if (entry.Data)
+  {
+    return entry.Data;
+  }
+  Parameters p(entry.Spec, "datasets." + name);
+  const std::string source = p.Choice("source", "file", { "file", "vortex" });
+  if (source == "vortex")
+  {
+    vtkNew<vtkPlumeVortexSource> vortex;
+    const auto dims = p.Vector<3>("dimensions", { 32, 32, 32 });
+    for (double d : dims)
+    {
+      if (d < 1 || d > 1024 || d != std::floor(d))
+      {
+        throw SceneError("datasets." + name + ": 'dimensions' must be integers in [1, 1024], got " +
+          std::to_string(d));
+      }
+    }
+    vortex->SetDimensions(int(dims[0]), int(dims[1]), int(dims[2]));
+    const auto bounds = p.Vector<6>("bounds", { -1, 1, -1, 1, -1, 1 });
+    vortex->SetBounds(bounds.data());
+    vortex->SetCirculation(p.Number("circulation", 2.0));
+    vortex->SetCoreRadius(p.Number("core_radius", 0.4, 1e-12));
+    vortex->SetAxialVelocity(p.Number("axial_velocity", 0.3));
+    const auto drift = p.Vector<3>("drift", { 0.1, 0, 0 });
+    vortex->SetDrift(drift.data());
+    const auto center = p.Vector<3>("center", { 0, 0, 0 });
+    vortex->SetCenter(center.data());
+    p.RejectUnknown();
+    vortex->Update();
+    entry.Data = vortex->GetOutputDataObject(0);
+    return entry.Data;
+  }
+
+  vtkNew<vtkPlumeDatasetReader> reader;
+  const std::string path = p.String("path", "");
+  if (path.empty())
+  {
+    throw SceneError("datasets." + name + ": 'path' is required (a file relative to the scene or to the data folder)");
+  }
+  reader->SetFileName(this->Resolve(path).c_str());
+  if (p.Has("q_path"))
+  {
+    reader->SetQFileName(this->Resolve(p.String("q_path", "")).c_str());
+  }
+  reader->SetReaderName(p.String("reader", "").c_str());
+  reader->SetTimeStep(p.Integer("time_step", 0, 0, 1 << 30));
+  reader->SetMergeBlocks(p.Boolean("merge_blocks", true));
+  for (const auto& block : p.Strings("blocks"))
+  {
+    reader->AddBlockName(block.c_str());
+  }
+  // Checked now so typos fail before any slow reading.
+  p.Integer("image_dimension", 64, 2, 1024);
+  p.RejectUnknown();
+  if (this->Progress)
+  {
+    AttachProgress(reader, "reading " + name);
+  }
+  reader->Update();
+  if (!reader->GetLastError().empty())
+  {
+    throw SceneError("datasets." + name + ": " + reader->GetLastError());
+  }
+  entry.Data = reader->GetOutputDataObject(0);
+  if (!entry.Data)
+  {
+    throw SceneError("datasets." + name + ": the reader produced no data from '" + path + "'");
+  }
+  return entry.Data;
+}
+
+vtkImageData* SceneDatasets::GetImage(const std::string& name, const std::string& where)
+{
+  vtkDataObject* data = this->Get(name, where);
+  Entry& entry = this->Entries[name];
+  if (entry.Image)
+  {
+    return entry.Image;
+  }
+  if (auto* image = vtkImageData::SafeDownCast(data))
+  {
+    entry.Image = image;
+    return image;
+  }
+  int dimension = 64;
+  if (entry.Spec.contains("image_dimension"))
+  {
+    dimension = entry.Spec["image_dimension"].get<int>();
+  }
+  vtkNew<vtkPlumeResampleToImage> resample;
+  resample->SetInputData(data);
+  resample->SetMaximumDimension(dimension);
+  if (this->Progress)
+  {
+    AttachProgress(resample, "resampling " + name);
+  }
+  resample->Update();
+  entry.Image = resample->GetOutput();
+  return entry.Image;
+}
+
+namespace
+{
+void BuildCamera(const nlohmann::json* spec, vtkRenderer* renderer)
+{
+  renderer->ResetCamera();
+  if (!spec)
+  {
+    return;
+  }
+  Parameters p(*spec, "camera");
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const bool hasPosition = p.Has("position");
+  if (hasPosition || p.Has("focal_point"))
+  {
+    double fp[3], pos[3];
+    camera->GetFocalPoint(fp);
+    camera->GetPosition(pos);
+    const auto focal = p.Vector<3>("focal_point", { fp[0], fp[1], fp[2] });
+    const auto position = p.Vector<3>("position", { pos[0], pos[1], pos[2] });
+    const double d[3] = { position[0] - focal[0], position[1] - focal[1], position[2] - focal[2] };
+    if (!(vtkMath::Norm(d) > 0))
+    {
+      throw SceneError("camera: 'position' equals 'focal_point' (" + std::to_string(focal[0]) + ", " +
+        std::to_string(focal[1]) + ", " + std::to_string(focal[2]) + "): no view direction");
+    }
+    camera->SetFocalPoint(focal.data());
+    camera->SetPosition(position.data());
+  }
+  const auto up = p.Vector<3>("view_up", { 0, 1, 0 });
+  if (!hasPosition)
+  {
+    // Without a position, look along -z (VTK's default) unless the requested
+    // up is (nearly) z; then look along +y, so "view_up": [0, 0, 1] just works.
+    const double n = vtkMath::Norm(up.data());
+    if (n > 0 && std::fabs(up[2]) > 0.9 * n)
+    {
+      double fp[3], pos[3];
+      camera->GetFocalPoint(fp);
+      camera->GetPosition(pos);
+      const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(fp, pos));
+      camera->SetPosition(fp[0], fp[1] - distance, fp[2]);
+    }
+  }
+  {
+    double dop[3];
+    camera->GetDirectionOfProjection(dop);
+    double cross[3];
+    vtkMath::Cross(dop, up.data(), cross);
+    if (!(vtkMath::Norm(cross) > 1e-9 * vtkMath::Norm(up.data())))
+    {
+      throw SceneError("camera: 'view_up' [" + std::to_string(up[0]) + ", " + std::to_string(up[1]) + ", " +
+        std::to_string(up[2]) + "] is zero or parallel to the view direction");
+    }
+    camera->SetViewUp(up.data());
+  }
+  camera->SetViewAngle(p.Number("view_angle", 30.0, 1e-3, 179.0));
+  camera->SetParallelProjection(p.Boolean("parallel_projection", false));
+  if (p.Has("parallel_scale"))
+  {
+    camera->SetParallelScale(p.Number("parallel_scale", 1.0, 1e-300));
+  }
+  if (!hasPosition)
+  {
+    renderer->ResetCamera();
+  }
+  camera->Azimuth(p.Number("azimuth", 0.0));
+  camera->Elevation(p.Number("elevation", 0.0));
+  camera->Roll(p.Number("roll", 0.0));
+  camera->OrthogonalizeViewUp();
+  camera->Zoom(p.Number("zoom", 1.0, 1e-6, 1e6));
+  p.RejectUnknown();
+  renderer->ResetCameraClippingRange();
+}
+
+void BuildLights(const nlohmann::json* spec, vtkRenderer* renderer)
+{
+  if (!spec)
+  {
+    return; // VTK's automatic headlight
+  }
+  if (!spec->is_array())
+  {
+    throw SceneError("scene: 'lights' must be a list of lights, got " + spec->dump());
+  }
+  renderer->AutomaticLightCreationOff();
+  renderer->RemoveAllLights();
+  int index = 0;
+  for (const auto& item : *spec)
+  {
+    Parameters p(item, "lights[" + std::to_string(index++) + "]");
+    vtkNew<vtkLight> light;
+    const std::string type = p.Choice("type", "scene", { "headlight", "camera", "scene" });
+    if (type == "headlight")
+    {
+      light->SetLightTypeToHeadlight();
+    }
+    else if (type == "camera")
+    {
+      light->SetLightTypeToCameraLight();
+    }
+    else
+    {
+      light->SetLightTypeToSceneLight();
+    }
+    const auto position = p.Vector<3>("position", { 0, 0, 1 });
+    const auto focal = p.Vector<3>("focal_point", { 0, 0, 0 });
+    light->SetPosition(position.data());
+    light->SetFocalPoint(focal.data());
+    const auto color = p.Vector<3>("color", { 1, 1, 1 });
+    light->SetColor(color.data());
+    light->SetIntensity(p.Number("intensity", 1.0, 0.0));
+    light->SetPositional(p.Boolean("positional", false));
+    light->SetConeAngle(p.Number("cone_angle", 30.0, 0.0, 180.0));
+    p.RejectUnknown();
+    renderer->AddLight(light);
+  }
+}
+}
+
+void Scene::Build(
+  const nlohmann::json& scene, const std::string& sceneDirectory, vtkRenderer* renderer, SceneOptions& options)
+{
+  Parameters top(scene, "scene");
+  SceneDatasets datasets(top.Object("datasets"), sceneDirectory, options.Progress);
+
+  const auto size = top.Vector<2>("size", { 800, 600 });
+  for (double s : size)
+  {
+    if (s < 1 || s > 16384 || s != std::floor(s))
+    {
+      throw SceneError("scene: 'size' entries must be integers in [1, 16384], got " + std::to_string(s));
+    }
+  }
+  if (options.Width <= 0 || options.Height <= 0)
+  {
+    options.Width = static_cast<int>(size[0]);
+    options.Height = static_cast<int>(size[1]);
+  }
+
+  const auto background = top.Vector<3>("background", { 0.1, 0.1, 0.12 });
+  renderer->SetBackground(background.data());
+  if (top.Has("background2"))
+  {
+    const auto background2 = top.Vector<3>("background2", { 0, 0, 0 });
+    renderer->SetBackground2(background2.data());
+    renderer->GradientBackgroundOn();
+  }
+
+  const nlohmann::json* camera = top.Object("camera");
+  const nlohmann::json* lights = top.Raw("lights");
+  const nlohmann::json* reps = top.Raw("representations");
+  top.RejectUnknown(); // before any slow loading
+  if (!reps || !reps->is_array() || reps->empty())
+  {
+    throw SceneError("scene: 'representations' must be a non-empty list, got " + (reps ? reps->dump() : "nothing"));
+  }
+  const auto& builders = Representations();
+  // Glyph lines fade out towards their roots with ordinary blending in the
+  // opaque pass, so opaque geometry must be drawn before them: glyph
+  // representations are added last, whatever their place in the list.
+  std::vector<std::pair<int, const nlohmann::json*>> ordered;
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    int i = 0;
+    for (const auto& item : *reps)
+    {
+      const bool late = item.is_object() && item.value("type", nlohmann::json()) == "glyphs";
+      if (late == (pass == 1))
+      {
+        ordered.emplace_back(i, &item);
+      }
+      ++i;
+    }
+  }
+  for (const auto& entry : ordered)
+  {
+    const nlohmann::json& item = *entry.second;
+    const std::string where = "representations[" + std::to_string(entry.first) + "]";
+    if (!item.is_object() || !item.contains("type") || !item["type"].is_string())
+    {
+      throw SceneError(where + ": needs a string 'type', got " + item.dump());
+    }
+    const std::string type = item["type"].get<std::string>();
+    auto builder = builders.find(type);
+    if (builder == builders.end())
+    {
+      std::string known;
+      for (const auto& b : builders)
+      {
+        known += (known.empty() ? "" : ", ") + b.first;
+      }
+      throw SceneError(where + ": unknown representation type '" + type + "' (known: " + known + ")");
+    }
+    Parameters p(item, where + " (" + type + ")");
+    p.String("type", type);
+    builder->second(p, datasets, renderer);
+  }
+  BuildCamera(camera, renderer);
+  BuildLights(lights, renderer);
+}
+
+}

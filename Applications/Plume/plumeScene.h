@@ -1,0 +1,71 @@
+// A scene file (JSON) turned into a VTK renderer. The format is documented in
+// Documentation/SceneFormat.md; every key is checked, unknown keys and bad
+// values are errors that name the offending value (SceneError).
+#ifndef plumeScene_h
+#define plumeScene_h
+
+#include "vtkSmartPointer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <map>
+#include <string>
+
+class vtkDataObject;
+class vtkImageData;
+class vtkProp;
+class vtkRenderer;
+
+namespace plume
+{
+class Parameters;
+
+/** Datasets of a scene, loaded once each, by name. */
+class SceneDatasets
+{
+public:
+  SceneDatasets(const nlohmann::json* datasets, std::string sceneDirectory, bool progress);
+  /** The dataset as read (composites merged unless the scene says otherwise). */
+  vtkDataObject* Get(const std::string& name, const std::string& where);
+  /** The dataset on an image grid (resampled if it is not one already). */
+  vtkImageData* GetImage(const std::string& name, const std::string& where);
+  /** Resolve a path against the scene's folder, then the shared data folder. */
+  std::string Resolve(const std::string& path) const;
+
+private:
+  struct Entry
+  {
+    nlohmann::json Spec;
+    vtkSmartPointer<vtkDataObject> Data;
+    vtkSmartPointer<vtkImageData> Image;
+  };
+  std::map<std::string, Entry> Entries;
+  std::string SceneDirectory;
+  bool Progress;
+};
+
+/** Builds one representation (`"type": ...`) into props added to the renderer. */
+using RepresentationBuilder = std::function<void(Parameters&, SceneDatasets&, vtkRenderer*)>;
+/** All representation types the command line knows, by type name. */
+const std::map<std::string, RepresentationBuilder>& Representations();
+
+struct SceneOptions
+{
+  int Width = 0;  // 0: from the scene's "size", else 800
+  int Height = 0;
+  bool Progress = false;
+};
+
+class Scene
+{
+public:
+  /** Parse and check a scene file; throws SceneError. */
+  static nlohmann::json ReadFile(const std::string& path);
+  /** Build the renderer's content from a parsed scene; throws SceneError. */
+  static void Build(const nlohmann::json& scene, const std::string& sceneDirectory, vtkRenderer* renderer,
+    SceneOptions& options);
+};
+}
+
+#endif
