@@ -149,31 +149,13 @@ json DescribeDataSet(vtkDataSet* ds)
   return d;
 }
 
-const char* ChildName(vtkDataObject* parent, unsigned int i)
-{
-  vtkInformation* md = nullptr;
-  if (auto* mb = vtkMultiBlockDataSet::SafeDownCast(parent))
-  {
-    md = mb->HasMetaData(i) ? mb->GetMetaData(i) : nullptr;
-  }
-  else if (auto* pdc = vtkPartitionedDataSetCollection::SafeDownCast(parent))
-  {
-    md = pdc->HasMetaData(i) ? pdc->GetMetaData(i) : nullptr;
-  }
-  else if (auto* pd = vtkPartitionedDataSet::SafeDownCast(parent))
-  {
-    md = pd->HasMetaData(i) ? pd->GetMetaData(i) : nullptr;
-  }
-  return md && md->Has(vtkCompositeDataSet::NAME()) ? md->Get(vtkCompositeDataSet::NAME())
-                                                     : nullptr;
-}
 
 // Leaves of a composite, depth first, with "/"-joined names (index when unnamed).
 void CollectBlocks(vtkDataObject* node, const std::string& path, json& blocks)
 {
   std::vector<std::pair<vtkDataObject*, std::string>> children;
   auto add = [&](vtkDataObject* child, unsigned int i) {
-    const char* name = ChildName(node, i);
+    const char* name = vtkPlumeDatasetReader::GetChildBlockName(node, i);
     const std::string component = name && *name ? std::string(name) : std::to_string(i);
     children.emplace_back(child, path.empty() ? component : path + "/" + component);
   };

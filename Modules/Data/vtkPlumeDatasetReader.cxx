@@ -90,24 +90,7 @@ struct Leaf
 
 const char* ChildName(vtkDataObject* parent, unsigned int i)
 {
-  vtkInformation* md = nullptr;
-  if (auto* mb = vtkMultiBlockDataSet::SafeDownCast(parent))
-  {
-    md = mb->HasMetaData(i) ? mb->GetMetaData(i) : nullptr;
-  }
-  else if (auto* pdc = vtkPartitionedDataSetCollection::SafeDownCast(parent))
-  {
-    md = pdc->HasMetaData(i) ? pdc->GetMetaData(i) : nullptr;
-  }
-  else if (auto* pd = vtkPartitionedDataSet::SafeDownCast(parent))
-  {
-    md = pd->HasMetaData(i) ? pd->GetMetaData(i) : nullptr;
-  }
-  if (md && md->Has(vtkCompositeDataSet::NAME()))
-  {
-    return md->Get(vtkCompositeDataSet::NAME());
-  }
-  return nullptr;
+  return vtkPlumeDatasetReader::GetChildBlockName(parent, i);
 }
 
 void CollectLeaves(vtkDataObject* node, const std::string& path,
@@ -1203,4 +1186,27 @@ void vtkPlumeDatasetReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MergeBlocks: " << this->MergeBlocks << "\n";
   os << indent << "BlockNames: " << Join(this->BlockNames) << "\n";
   os << indent << "LastError: " << this->LastError << "\n";
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPlumeDatasetReader::GetChildBlockName(vtkDataObject* parent, unsigned int i)
+{
+  vtkInformation* md = nullptr;
+  if (auto* mb = vtkMultiBlockDataSet::SafeDownCast(parent))
+  {
+    md = mb->HasMetaData(i) ? mb->GetMetaData(i) : nullptr;
+  }
+  else if (auto* pdc = vtkPartitionedDataSetCollection::SafeDownCast(parent))
+  {
+    md = pdc->HasMetaData(i) ? pdc->GetMetaData(i) : nullptr;
+  }
+  else if (auto* pd = vtkPartitionedDataSet::SafeDownCast(parent))
+  {
+    md = pd->HasMetaData(i) ? pd->GetMetaData(i) : nullptr;
+  }
+  if (md && md->Has(vtkCompositeDataSet::NAME()))
+  {
+    return md->Get(vtkCompositeDataSet::NAME());
+  }
+  return nullptr;
 }

@@ -169,6 +169,8 @@ public:
   static std::string ReaderNameForFile(const std::string& fileName);
   /** The guessed PLOT3D Q file for a grid file (see QFileName). */
   static std::string GuessQFileName(const std::string& xyzFileName);
+  /** Name of child `index` of a composite (its NAME() metadata), or nullptr if unnamed. */
+  static const char* GetChildBlockName(vtkDataObject* parent, unsigned int index);
 
   vtkMTimeType GetMTime() override;
 

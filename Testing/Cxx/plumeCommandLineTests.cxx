@@ -1,0 +1,125 @@
+// Unit tests (GoogleTest) for the command line's CPU-side pieces: strict
+// scene parameters, window depth → distance for EXR, colour maps.
+#include "plumeColorMaps.h"
+#include "plumeImageOutput.h"
+#include "plumeParameters.h"
+#include "plumeSceneError.h"
+
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkScalarsToColors.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using nlohmann::json;
+
+TEST(Parameters, ReadsTypedValuesWithDefaults)
+{
+  const json j = json::parse(R"({"scale": 2.5, "segments": 4, "on": true, "name": "x",
+                                 "color": [0.1, 0.2, 0.3], "mode": "rk4"})");
+  plume::Parameters p(j, "rep");
+  EXPECT_DOUBLE_EQ(p.Number("scale", 1.0), 2.5);
+  EXPECT_EQ(p.Integer("segments", 8, 1, 32), 4);
+  EXPECT_TRUE(p.Boolean("on", false));
+  EXPECT_EQ(p.String("name", ""), "x");
+  EXPECT_EQ(p.Choice("mode", "straight", { "straight", "rk2", "rk4" }), "rk4");
+  const auto c = p.Vector<3>("color", { 1, 1, 1 });
+  EXPECT_DOUBLE_EQ(c[1], 0.2);
+  EXPECT_DOUBLE_EQ(p.Number("absent", 7.0), 7.0);
+  EXPECT_NO_THROW(p.RejectUnknown());
+}
+
+TEST(Parameters, RejectsUnknownKeysNamingThem)
+{
+  const json j = json::parse(R"({"scale": 1, "scal": 2})");
+  plume::Parameters p(j, "representations[0] (glyphs)");
+  p.Number("scale", 1.0);
+  try
+  {
+    p.RejectUnknown();
+    FAIL() << "unknown key accepted";
+  }
+  catch (const plume::SceneError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("unknown parameter 'scal'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("representations[0] (glyphs)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Parameters, RejectsWrongTypesAndRanges)
+{
+  const json j = json::parse(R"({"a": "big", "b": 40, "c": 1.5, "d": [1, "x", 3], "e": "rk9", "f": [1, 2]})");
+  plume::Parameters p(j, "rep");
+  EXPECT_THROW(p.Number("a", 1.0), plume::SceneError);
+  EXPECT_THROW(p.Integer("b", 8, 1, 32), plume::SceneError);
+  EXPECT_THROW(p.Integer("c", 8, 1, 32), plume::SceneError);
+  EXPECT_THROW((p.Vector<3>("d", { 0, 0, 0 })), plume::SceneError);
+  EXPECT_THROW(p.Choice("e", "straight", { "straight", "rk2", "rk4" }), plume::SceneError);
+  EXPECT_THROW((p.Vector<3>("f", { 0, 0, 0 })), plume::SceneError);
+  EXPECT_THROW(plume::Parameters(json::array(), "x"), plume::SceneError);
+}
+
+namespace
+{
+/** Window depth of a point at distance `d` in front of the camera, through VTK's own projection. */
+double WindowDepth(vtkCamera* camera, double d)
+{
+  vtkNew<vtkMatrix4x4> m;
+  m->DeepCopy(camera->GetCompositeProjectionTransformMatrix(1.0, -1, 1));
+  double fp[3], pos[3], dir[3];
+  camera->GetFocalPoint(fp);
+  camera->GetPosition(pos);
+  camera->GetDirectionOfProjection(dir);
+  double p[4] = { pos[0] + d * dir[0], pos[1] + d * dir[1], pos[2] + d * dir[2], 1.0 };
+  double clip[4];
+  m->MultiplyPoint(p, clip);
+  return 0.5 * (clip[2] / clip[3]) + 0.5;
+}
+}
+
+TEST(LinearDepth, InvertsThePerspectiveProjection)
+{
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(1, 2, 10);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetClippingRange(0.5, 40);
+  for (double d : { 0.5, 1.0, 3.3, 10.0, 25.0, 40.0 })
+  {
+    EXPECT_NEAR(plume::LinearDepth(WindowDepth(camera, d), camera), d, 1e-6 * d) << d;
+  }
+  EXPECT_TRUE(std::isinf(plume::LinearDepth(1.0, camera)));
+}
+
+TEST(LinearDepth, InvertsTheParallelProjection)
+{
+  vtkNew<vtkCamera> camera;
+  camera->ParallelProjectionOn();
+  camera->SetPosition(0, 0, 10);
+  camera->SetClippingRange(2, 30);
+  for (double d : { 2.0, 7.5, 29.0 })
+  {
+    EXPECT_NEAR(plume::LinearDepth(WindowDepth(camera, d), camera), d, 1e-9 * d) << d;
+  }
+}
+
+TEST(ColorMaps, SpanTheRequestedRangeWithTheirEndColours)
+{
+  for (const auto& name : plume::ColorMapNames())
+  {
+    auto map = plume::MakeColorMap(name, -2, 6);
+    ASSERT_NE(map, nullptr) << name;
+    const double* range = map->GetRange();
+    EXPECT_DOUBLE_EQ(range[0], -2) << name;
+    EXPECT_DOUBLE_EQ(range[1], 6) << name;
+  }
+  double low[3], high[3];
+  plume::MakeColorMap("grayscale", 0, 1)->GetColor(0.0, low);
+  plume::MakeColorMap("grayscale", 0, 1)->GetColor(1.0, high);
+  EXPECT_NEAR(low[0], 0, 1e-9);
+  EXPECT_NEAR(high[0], 1, 1e-9);
+  EXPECT_EQ(plume::MakeColorMap("nope", 0, 1), nullptr);
+}
