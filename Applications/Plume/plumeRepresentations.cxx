@@ -1,6 +1,7 @@
 // The representation types of a scene: each reads and checks all its
 // parameters first (so typos fail before slow work), then builds its props.
 #include "plumeColorMaps.h"
+#include "plumeRepresentationHelpers.h"
 #include "plumeParameters.h"
 #include "plumeScene.h"
 #include "plumeSceneError.h"
@@ -29,95 +30,6 @@ namespace plume
 {
 namespace
 {
-
-std::string DescribeArrays(vtkDataSet* data)
-{
-  std::string list;
-  vtkPointData* pd = data->GetPointData();
-  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
-  {
-    vtkDataArray* a = pd->GetArray(i);
-    if (a && a->GetName())
-    {
-      list += (list.empty() ? "" : ", ") + std::string(a->GetName()) + " (" +
-        std::to_string(a->GetNumberOfComponents()) + " components)";
-    }
-  }
-  return list.empty() ? "none" : list;
-}
-
-/** A named point array (or the active one of the given kind), checked for its component count. */
-vtkDataArray* RequirePointArray(
-  vtkDataSet* data, const std::string& name, int components, const std::string& where, const std::string& dataset)
-{
-  vtkDataArray* array = nullptr;
-  if (name.empty())
-  {
-    array = components == 3 ? data->GetPointData()->GetVectors() : data->GetPointData()->GetScalars();
-    if (!array)
-    {
-      throw SceneError(where + ": dataset '" + dataset + "' has no active " +
-        (components == 3 ? "vectors" : "scalars") + "; name one (point arrays: " + DescribeArrays(data) + ")");
-    }
-  }
-  else
-  {
-    array = data->GetPointData()->GetArray(name.c_str());
-    if (!array)
-    {
-      throw SceneError(where + ": dataset '" + dataset + "' has no point array '" + name +
-        "' (point arrays: " + DescribeArrays(data) + ")");
-    }
-  }
-  if (components > 0 && array->GetNumberOfComponents() != components)
-  {
-    throw SceneError(where + ": point array '" + std::string(array->GetName() ? array->GetName() : name) +
-      "' of dataset '" + dataset + "' has " + std::to_string(array->GetNumberOfComponents()) +
-      " components, expected " + std::to_string(components));
-  }
-  return array;
-}
-
-vtkDataSet* RequireDataSet(vtkDataObject* data, const std::string& where, const std::string& name)
-{
-  auto* ds = vtkDataSet::SafeDownCast(data);
-  if (!ds)
-  {
-    throw SceneError(where + ": dataset '" + name + "' is a " + data->GetClassName() +
-      "; set \"merge_blocks\": true (the default) to render it");
-  }
-  return ds;
-}
-
-/** Colouring parameters shared by representations: solid colour or a colour map over a range. */
-struct Coloring
-{
-  std::array<double, 3> Color;
-  std::string Map;
-  bool HasRange = false;
-  std::array<double, 2> Range = { 0, 1 };
-
-  void Read(Parameters& p, const std::array<double, 3>& defaultColor)
-  {
-    this->Color = p.Vector<3>("color", defaultColor);
-    this->Map = p.Choice("colormap", "viridis", ColorMapNames());
-    this->HasRange = p.Has("range");
-    this->Range = p.Vector<2>("range", { 0, 1 });
-    if (this->HasRange && !(this->Range[1] >= this->Range[0]))
-    {
-      throw SceneError(p.Where() + ": 'range' must be [min, max] with min <= max");
-    }
-  }
-  vtkSmartPointer<vtkScalarsToColors> Table(vtkDataArray* array, int component) const
-  {
-    double r[2] = { this->Range[0], this->Range[1] };
-    if (!this->HasRange)
-    {
-      array->GetRange(r, component);
-    }
-    return MakeColorMap(this->Map, r[0], r[1]);
-  }
-};
 
 void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
 {
@@ -325,16 +237,13 @@ void BuildSphere(Parameters& p, SceneDatasets&, vtkRenderer* renderer)
 
 }
 
-const std::map<std::string, RepresentationBuilder>& Representations()
+void RegisterCoreRepresentations(std::map<std::string, RepresentationBuilder>& builders)
 {
-  static const std::map<std::string, RepresentationBuilder> builders = {
-    { "glyphs", BuildGlyphs },
-    { "surface", BuildSurface },
-    { "contour", BuildContour },
-    { "outline", BuildOutline },
-    { "sphere", BuildSphere },
-  };
-  return builders;
+  builders["glyphs"] = BuildGlyphs;
+  builders["surface"] = BuildSurface;
+  builders["contour"] = BuildContour;
+  builders["outline"] = BuildOutline;
+  builders["sphere"] = BuildSphere;
 }
 
 }

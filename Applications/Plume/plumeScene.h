@@ -50,6 +50,9 @@ using RepresentationBuilder = std::function<void(Parameters&, SceneDatasets&, vt
 /** All representation types the command line knows, by type name. */
 const std::map<std::string, RepresentationBuilder>& Representations();
 
+// Each file of builders adds its types (plumeRepresentationRegistry.cxx calls these).
+void RegisterCoreRepresentations(std::map<std::string, RepresentationBuilder>& builders);
+
 struct SceneOptions
 {
   int Width = 0;  // 0: from the scene's "size", else 800

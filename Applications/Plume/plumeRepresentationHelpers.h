@@ -1,0 +1,48 @@
+// Pieces shared by the representation builders of the command line: array
+// look-up with messages that name the dataset and the array, and colouring.
+#ifndef plumeRepresentationHelpers_h
+#define plumeRepresentationHelpers_h
+
+#include "vtkSmartPointer.h"
+
+#include <array>
+#include <string>
+
+class vtkDataArray;
+class vtkDataObject;
+class vtkDataSet;
+class vtkScalarsToColors;
+
+namespace plume
+{
+class Parameters;
+
+/** "name (N components), ..." for the point arrays of a dataset. */
+std::string DescribeArrays(vtkDataSet* data);
+
+/**
+ * A point array by name (or the active vectors/scalars when `name` is empty),
+ * checked for `components` (0: any). Throws SceneError naming what is wrong.
+ */
+vtkDataArray* RequirePointArray(
+  vtkDataSet* data, const std::string& name, int components, const std::string& where, const std::string& dataset);
+
+/** The dataset as a vtkDataSet; throws SceneError if it is still a composite. */
+vtkDataSet* RequireDataSet(vtkDataObject* data, const std::string& where, const std::string& name);
+
+/** Colouring parameters shared by representations: solid colour or a colour map over a range. */
+struct Coloring
+{
+  std::array<double, 3> Color = { 1, 1, 1 };
+  std::string Map;
+  bool HasRange = false;
+  std::array<double, 2> Range = { 0, 1 };
+
+  /** Reads color, colormap and range. */
+  void Read(Parameters& p, const std::array<double, 3>& defaultColor);
+  /** The colour map over `range`, or over the array's range (component -1: magnitude). */
+  vtkSmartPointer<vtkScalarsToColors> Table(vtkDataArray* array, int component) const;
+};
+}
+
+#endif
