@@ -1,0 +1,74 @@
+/**
+ * @class   vtkPlumeOpaqueDepthTexture
+ * @brief   copies the depth of the opaque scene (the current draw framebuffer) into a texture
+ *
+ * Volumetric renderers that must stop at opaque VTK actors (raycast volumes,
+ * smoke sheets) call Capture() at the start of their Render(), before they
+ * draw anything: it copies the depth buffer of the renderer's viewport from
+ * the framebuffer VTK is drawing into (its offscreen render framebuffer or
+ * the default one) into a GL_DEPTH_COMPONENT32F 2D texture of the viewport's
+ * size (nearest filtering). The texture is reallocated only when the
+ * viewport size changes.
+ *
+ * In GLSL, read it with the fragment's position relative to the viewport:
+ * @code
+ *   uniform sampler2D OpaqueDepth;   // bind GetTextureObject()'s unit
+ *   uniform vec2 ViewportOrigin;     // GetViewportOrigin()
+ *   float d = texelFetch(OpaqueDepth, ivec2(gl_FragCoord.xy - ViewportOrigin), 0).r; // window depth 0..1
+ * @endcode
+ * and turn d into a ray parameter by unprojecting (ndc.xy, 2d - 1).
+ *
+ * Multisampled framebuffers cannot be copied from; then Capture() returns
+ * false, GetLastError() says so and callers should behave as if nothing
+ * opaque were in the scene (Plume's windows have no MSAA).
+ */
+#ifndef vtkPlumeOpaqueDepthTexture_h
+#define vtkPlumeOpaqueDepthTexture_h
+
+#include "PlumeRenderingModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For members
+
+#include <string> // For std::string
+
+class vtkRenderer;
+class vtkTextureObject;
+class vtkWindow;
+
+class PLUMERENDERING_EXPORT vtkPlumeOpaqueDepthTexture : public vtkObject
+{
+public:
+  static vtkPlumeOpaqueDepthTexture* New();
+  vtkTypeMacro(vtkPlumeOpaqueDepthTexture, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Copy the depth of `renderer`'s viewport. Returns false on failure (see class doc). */
+  bool Capture(vtkRenderer* renderer);
+
+  /** The depth texture (valid after a successful Capture). */
+  vtkTextureObject* GetTextureObject();
+
+  /** Lower-left corner (pixels, in the framebuffer) and size of the captured viewport. */
+  const int* GetViewportOrigin() const { return this->Origin; }
+  const int* GetViewportSize() const { return this->Size; }
+
+  /** Description of the last failure, "" after a successful Capture. */
+  const std::string& GetLastError() const { return this->LastError; }
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkPlumeOpaqueDepthTexture();
+  ~vtkPlumeOpaqueDepthTexture() override;
+
+  vtkSmartPointer<vtkTextureObject> Texture;
+  int Origin[2] = { 0, 0 };
+  int Size[2] = { 0, 0 };
+  std::string LastError;
+
+private:
+  vtkPlumeOpaqueDepthTexture(const vtkPlumeOpaqueDepthTexture&) = delete;
+  void operator=(const vtkPlumeOpaqueDepthTexture&) = delete;
+};
+
+#endif

@@ -1,0 +1,231 @@
+#include "vtkPlumeScalarTexture3D.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkTextureObject.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkPlumeScalarTexture3D);
+
+namespace
+{
+// value of tuple i as the renderers see it (component or magnitude), in double
+template <typename T>
+void Extract(const T* src, vtkIdType n, int comps, int component, std::vector<double>& out)
+{
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const T* t = src + i * comps;
+    if (component >= 0)
+    {
+      out[i] = static_cast<double>(t[component]);
+    }
+    else if (comps == 1)
+    {
+      out[i] = static_cast<double>(t[0]);
+    }
+    else
+    {
+      double s = 0;
+      for (int c = 0; c < comps; ++c)
+      {
+        s += static_cast<double>(t[c]) * static_cast<double>(t[c]);
+      }
+      out[i] = std::sqrt(s);
+    }
+  }
+}
+}
+
+vtkPlumeScalarTexture3D::vtkPlumeScalarTexture3D()
+  : Texture(vtkSmartPointer<vtkTextureObject>::New())
+{
+}
+
+vtkPlumeScalarTexture3D::~vtkPlumeScalarTexture3D() = default;
+
+vtkTextureObject* vtkPlumeScalarTexture3D::GetTextureObject()
+{
+  return this->Texture;
+}
+
+void vtkPlumeScalarTexture3D::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Texture->ReleaseGraphicsResources(window);
+  this->UploadedImage = nullptr;
+  this->UploadedArray = nullptr;
+  this->UploadedComponent = -2;
+  this->UploadedTime = 0;
+}
+
+bool vtkPlumeScalarTexture3D::Update(
+  vtkOpenGLRenderWindow* window, vtkImageData* image, vtkDataArray* array, int component)
+{
+  this->LastError.clear();
+  if (!window || !image || !array)
+  {
+    this->LastError = "no window, image or array";
+    return false;
+  }
+  const int comps = array->GetNumberOfComponents();
+  if (component >= comps)
+  {
+    std::ostringstream msg;
+    msg << "component " << component << " requested but array '"
+        << (array->GetName() ? array->GetName() : "") << "' has " << comps << " component(s)";
+    this->LastError = msg.str();
+    return false;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  const vtkIdType n = static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2];
+  if (n <= 0 || array->GetNumberOfTuples() != n)
+  {
+    std::ostringstream msg;
+    msg << "array '" << (array->GetName() ? array->GetName() : "") << "' has "
+        << array->GetNumberOfTuples() << " tuples but the image has " << n << " points";
+    this->LastError = msg.str();
+    return false;
+  }
+
+  const vtkMTimeType time = std::max(image->GetMTime(), array->GetMTime());
+  if (this->Texture->GetContext() == window && this->Texture->GetHandle() &&
+    this->UploadedImage == image && this->UploadedArray == array &&
+    this->UploadedComponent == component && this->UploadedTime == time)
+  {
+    return true;
+  }
+
+  GLint maxSize = 0;
+  window->MakeCurrent();
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
+  if (dims[0] > maxSize || dims[1] > maxSize || dims[2] > maxSize)
+  {
+    std::ostringstream msg;
+    msg << "grid " << dims[0] << "x" << dims[1] << "x" << dims[2]
+        << " exceeds GL_MAX_3D_TEXTURE_SIZE = " << maxSize
+        << " along at least one axis; resample the data to a coarser image";
+    this->LastError = msg.str();
+    return false;
+  }
+
+  std::vector<double> values(static_cast<size_t>(n));
+  switch (array->GetDataType())
+  {
+    vtkTemplateMacro(Extract(
+      static_cast<const VTK_TT*>(array->GetVoidPointer(0)), n, comps, component, values));
+    default:
+    {
+      std::vector<double> tuple(comps);
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        array->GetTuple(i, tuple.data());
+        double s = 0;
+        for (int c = 0; c < comps; ++c)
+        {
+          s += tuple[c] * tuple[c];
+        }
+        values[i] = component >= 0 ? tuple[component] : (comps == 1 ? tuple[0] : std::sqrt(s));
+      }
+    }
+  }
+
+  // finite range in double
+  double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
+  long long nonFinite = 0;
+  for (double v : values)
+  {
+    if (std::isfinite(v))
+    {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    else
+    {
+      ++nonFinite;
+    }
+  }
+  if (lo > hi)
+  {
+    lo = hi = 0.0;
+  }
+  const double span = hi - lo;
+  const double inv = (span > 0 && std::isfinite(1.0 / span)) ? 1.0 / span : 0.0;
+  std::vector<float> u(static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = values[i];
+    double t;
+    if (std::isnan(v))
+    {
+      t = 0.0;
+    }
+    else if (std::isinf(v))
+    {
+      t = v > 0 ? 1.0 : 0.0;
+    }
+    else
+    {
+      t = (v - lo) * inv;
+    }
+    // (v - lo) * inv can overflow for spans near DBL_MAX; clamp keeps it finite
+    u[i] = static_cast<float>(std::min(1.0, std::max(0.0, std::isfinite(t) ? t : 0.0)));
+  }
+  if (span > 0 && inv == 0.0)
+  {
+    // span so large that 1/span underflows: scale in two steps
+    const double half = 0.5 * hi - 0.5 * lo;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double v = values[i];
+      if (std::isfinite(v))
+      {
+        u[i] = static_cast<float>(std::min(1.0, std::max(0.0, 0.5 * ((0.5 * v - 0.5 * lo) / half))));
+      }
+    }
+  }
+
+  this->Texture->SetContext(window);
+  this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  this->Texture->SetWrapR(vtkTextureObject::ClampToEdge);
+  this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
+  this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  if (!this->Texture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_FLOAT, u.data()))
+  {
+    std::ostringstream msg;
+    msg << "could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
+        << " R32F 3D texture";
+    this->LastError = msg.str();
+    this->UploadedImage = nullptr;
+    return false;
+  }
+  this->ScalarRange[0] = lo;
+  this->ScalarRange[1] = hi;
+  std::copy(dims, dims + 3, this->Dimensions);
+  this->NonFiniteCount = nonFinite;
+  this->UploadedImage = image;
+  this->UploadedArray = array;
+  this->UploadedComponent = component;
+  this->UploadedTime = time;
+  ++this->UploadCount;
+  return true;
+}
+
+void vtkPlumeScalarTexture3D::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ScalarRange: " << this->ScalarRange[0] << " " << this->ScalarRange[1] << "\n";
+  os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
+     << this->Dimensions[2] << "\n";
+  os << indent << "NonFiniteCount: " << this->NonFiniteCount << "\n";
+  os << indent << "UploadCount: " << this->UploadCount << "\n";
+}

@@ -1,0 +1,107 @@
+/**
+ * @class   vtkPlumeScalarTexture3D
+ * @brief   one scalar field of a vtkImageData as a normalised 3D float texture (shared by Plume's renderers)
+ *
+ * Uploads one point-data array of a vtkImageData (one component, a chosen
+ * component, or the magnitude of a vector) as a single-channel GL_R32F 3D
+ * texture with linear filtering and clamp-to-edge wrapping, so that texel
+ * (i, j, k) holds the value at grid node (i, j, k) and the texture coordinate
+ * of index-space point p is (p + 0.5) / dims.
+ *
+ * Values are stored normalised, u = (v - range[0]) / (range[1] - range[0]),
+ * where range is the finite range of the array (GetScalarRange(); computed in
+ * double, so huge or far-from-zero values keep their float precision). A
+ * constant field stores u = 0 everywhere.
+ *
+ * Sanitising (non-finite values never reach the GPU):
+ *  - NaN  -> range[0] (u = 0: "empty" for transfer functions that start at 0)
+ *  - +Inf -> range[1] (u = 1)
+ *  - -Inf -> range[0] (u = 0)
+ * An array with no finite value at all gives range (0, 0) and u = 0.
+ *
+ * Re-upload happens only when the image, the array, the component choice or
+ * their MTimes change, or after ReleaseGraphicsResources; GetUploadCount()
+ * lets tests check that. Grids larger than GL_MAX_3D_TEXTURE_SIZE along an
+ * axis are refused with an error naming the size (never silently cropped).
+ *
+ * Typical use inside a mapper's Render():
+ * @code
+ *   if (!this->Texture->Update(renWin, image, array, -1)) return; // -1: magnitude / single component
+ *   this->Texture->GetTextureObject()->Activate();
+ *   program->SetUniformi("Volume", this->Texture->GetTextureObject()->GetTextureUnit());
+ * @endcode
+ */
+#ifndef vtkPlumeScalarTexture3D_h
+#define vtkPlumeScalarTexture3D_h
+
+#include "PlumeRenderingModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For members
+
+#include <string> // For std::string
+
+class vtkDataArray;
+class vtkImageData;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class PLUMERENDERING_EXPORT vtkPlumeScalarTexture3D : public vtkObject
+{
+public:
+  static vtkPlumeScalarTexture3D* New();
+  vtkTypeMacro(vtkPlumeScalarTexture3D, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Make the texture hold `array` (a point array of `image`) in the context of
+   * `window`. `component`: -1 (default) = the only component, or the magnitude
+   * when the array has several; k >= 0 = component k. Uploads only if needed.
+   * Returns false (and sets GetLastError()) on bad input or a GL failure.
+   */
+  bool Update(vtkOpenGLRenderWindow* window, vtkImageData* image, vtkDataArray* array, int component = -1);
+
+  /** The GL texture (valid after a successful Update). */
+  vtkTextureObject* GetTextureObject();
+
+  /** Finite range of the uploaded values in data units: u = 0 at [0], u = 1 at [1]. */
+  const double* GetScalarRange() const { return this->ScalarRange; }
+
+  /** Grid dimensions of the uploaded texture. */
+  const int* GetDimensions() const { return this->Dimensions; }
+
+  /** Number of values that were NaN or infinite in the last upload. */
+  vtkGetMacro(NonFiniteCount, long long);
+
+  /** Number of uploads so far (tests check that re-renders do not upload). */
+  vtkGetMacro(UploadCount, int);
+
+  /** Description of the last failure, "" after a successful Update. */
+  const std::string& GetLastError() const { return this->LastError; }
+
+  /** Release the GL texture (the next Update uploads again). */
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkPlumeScalarTexture3D();
+  ~vtkPlumeScalarTexture3D() override;
+
+  vtkSmartPointer<vtkTextureObject> Texture;
+  double ScalarRange[2] = { 0, 0 };
+  int Dimensions[3] = { 0, 0, 0 };
+  long long NonFiniteCount = 0;
+  int UploadCount = 0;
+  std::string LastError;
+
+  // what the texture was built from
+  vtkImageData* UploadedImage = nullptr;
+  vtkDataArray* UploadedArray = nullptr;
+  int UploadedComponent = -2;
+  vtkMTimeType UploadedTime = 0;
+
+private:
+  vtkPlumeScalarTexture3D(const vtkPlumeScalarTexture3D&) = delete;
+  void operator=(const vtkPlumeScalarTexture3D&) = delete;
+};
+
+#endif

@@ -1,0 +1,56 @@
+// The mapper's float image against vtkPlumeVolumeReference (independent CPU
+// raycaster, double precision) on a 64³ analytic smoke field, per mode.
+// RMS and max error (RGB, 0..1) are asserted; the read-back is 8-bit, so the
+// floor is ~1/510 per channel.
+#include "plumeVolumeTestUtil.h"
+
+#include "vtkLight.h"
+
+int TestVolumeAccuracy(int, char*[])
+{
+  using namespace plumevolumetest;
+  int failures = 0;
+  auto field = SmokeField(64);
+
+  {
+    Scene s = MakeScene(field, 200, 160);
+    s.Mapper->JitterOff();
+    failures += Check("composite, no jitter, step 0.5", CompareWithReference(s, vtkPlumeVolumeReference::COMPOSITE), 0.005, 0.04);
+    s.Mapper->JitterOn();
+    failures += Check("composite, jitter, step 0.5", CompareWithReference(s, vtkPlumeVolumeReference::COMPOSITE), 0.005, 0.04);
+    s.Mapper->SetSampleDistance(0.25);
+    failures += Check("composite, jitter, step 0.25", CompareWithReference(s, vtkPlumeVolumeReference::COMPOSITE), 0.004, 0.03);
+  }
+  {
+    Scene s = MakeScene(field, 200, 160);
+    s.Mapper->SetBlendModeToMaximumIntensity();
+    failures += Check("maximum intensity", CompareWithReference(s, vtkPlumeVolumeReference::MAXIMUM_INTENSITY), 0.005, 0.05);
+  }
+  {
+    Scene s = MakeScene(field, 200, 160);
+    s.Mapper->SetBlendModeToIsoSurface();
+    s.Mapper->SetIsoValue(0.55);
+    s.Volume->GetProperty()->SetAmbient(0.2);
+    s.Volume->GetProperty()->SetDiffuse(0.7);
+    s.Volume->GetProperty()->SetSpecular(0.3);
+    s.Volume->GetProperty()->SetSpecularPower(20);
+    // silhouettes may differ by a pixel where a thin crossing lies between two samples
+    failures += Check("isosurface", CompareWithReference(s, vtkPlumeVolumeReference::ISOSURFACE), 0.02, 1.0);
+  }
+  {
+    Scene s = MakeScene(SmokeField(32), 96, 80);
+    s.Mapper->SmokeOn();
+    s.Mapper->SetShadowSampleDistance(0.5);
+    s.Volume->GetProperty()->SetAmbient(0.25);
+    s.Volume->GetProperty()->SetDiffuse(0.9);
+    vtkNew<vtkLight> light; // a side light, so self-shadowing shows
+    light->SetLightTypeToSceneLight();
+    light->SetPosition(1.5, 1.0, 0.2);
+    light->SetFocalPoint(0.5, 0.5, 0.5);
+    light->SetPositional(false);
+    s.Renderer->AddLight(light);
+    s.Renderer->AutomaticLightCreationOff();
+    failures += Check("smoke, self-shadowed", CompareWithReference(s, vtkPlumeVolumeReference::SMOKE, 0.25), 0.008, 0.06);
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

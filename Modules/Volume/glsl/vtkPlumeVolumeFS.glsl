@@ -1,0 +1,295 @@
+//VTK::System::Dec
+
+// vtkPlumeVolumeMapper fragment shader: one ray per pixel, in the volume's
+// index space (voxel (i,j,k) at (i,j,k)). Outputs premultiplied colour.
+//
+// Switches (#define, set by the mapper so only what is used is compiled):
+//   PLUME_COMPOSITE | PLUME_MIP | PLUME_ISO | PLUME_SMOKE   the mode
+//   PLUME_JITTER       jittered first segment
+//   PLUME_DEPTH        stop at the opaque scene's depth
+//   PLUME_LIGHTS n     number of lights (ISO, SMOKE)
+
+//PLUME::Defines
+
+uniform sampler3D Volume;           // normalised scalar u in [0, 1]
+uniform sampler2D TransferFunction; // 1 row: rgb = colour, a = scalar opacity, over u
+uniform float TFSize;
+uniform vec3 Dims;
+uniform mat4 ClipToIndex;
+uniform vec2 ViewportOrigin;
+uniform vec2 ViewportSize;
+uniform vec3 BoxMin;
+uniform vec3 BoxMax;
+uniform mat3 IndexToWorld;          // linear part of index -> world
+uniform float StepIndex;            // sample distance, voxels
+uniform int MaxSteps;
+uniform float InvUnitDistance;      // 1 / scalar opacity unit distance (world)
+uniform float OpacityThreshold;
+#ifdef PLUME_DEPTH
+uniform sampler2D OpaqueDepth;
+#endif
+#ifdef PLUME_JITTER
+uniform int JitterSeed;
+#endif
+#ifdef PLUME_ISO
+uniform float IsoValue;             // normalised
+uniform mat3 NormalToWorld;         // inverse transpose of IndexToWorld
+uniform float Ambient;
+uniform float Diffuse;
+uniform float Specular;
+uniform float SpecularPower;
+#endif
+#ifdef PLUME_SMOKE
+uniform float Ambient;
+uniform float Diffuse;
+uniform float ShadowStepIndex;      // shadow-ray step, voxels
+uniform vec3 LightIndexDir[PLUME_LIGHTS];     // unit direction towards the light, index space
+uniform float LightWorldPerIndex[PLUME_LIGHTS]; // world length of one index unit along it
+#endif
+#if defined(PLUME_ISO) || defined(PLUME_SMOKE)
+uniform vec3 LightDirection[PLUME_LIGHTS]; // unit, world, towards the light
+uniform vec3 LightColor[PLUME_LIGHTS];     // colour x intensity
+#endif
+
+//VTK::Output::Dec
+
+float sampleU(vec3 p)
+{
+  return texture(Volume, (p + 0.5) / Dims).r;
+}
+
+vec4 transfer(float u)
+{
+  return texture(TransferFunction, vec2((u * (TFSize - 1.0) + 0.5) / TFSize, 0.5));
+}
+
+// extinction per world unit for scalar opacity a (per unit distance)
+float extinction(float a)
+{
+  return -log(1.0 - min(a, 0.999999)) * InvUnitDistance;
+}
+
+// [t0, t1] of the ray p + t d inside the box, clipped to [lo, hi]
+vec2 clipToBox(vec3 p, vec3 d, float lo, float hi)
+{
+  vec2 t = vec2(lo, hi);
+  for (int i = 0; i < 3; ++i)
+  {
+    if (abs(d[i]) < 1e-30)
+    {
+      if (p[i] < BoxMin[i] || p[i] > BoxMax[i])
+      {
+        return vec2(1.0, 0.0);
+      }
+    }
+    else
+    {
+      float ta = (BoxMin[i] - p[i]) / d[i];
+      float tb = (BoxMax[i] - p[i]) / d[i];
+      t.x = max(t.x, min(ta, tb));
+      t.y = min(t.y, max(ta, tb));
+    }
+  }
+  return t;
+}
+
+#ifdef PLUME_JITTER
+float jitter()
+{
+  uvec2 q = uvec2(gl_FragCoord.xy);
+  uint h = q.x * 1973u + q.y * 9277u + uint(JitterSeed) * 26699u;
+  h = (h ^ 61u) ^ (h >> 16);
+  h *= 9u;
+  h ^= h >> 4;
+  h *= 0x27d4eb2du;
+  h ^= h >> 15;
+  return 1.0 - float(h & 0xffffffu) / 16777216.0; // (0, 1]
+}
+#endif
+
+#ifdef PLUME_SMOKE
+// transmittance from p (index space) towards light l, through the box
+float lightTransmittance(vec3 p, int l)
+{
+  vec3 e = LightIndexDir[l];
+  vec2 t = clipToBox(p, e, 0.0, 1e30);
+  if (!(t.y > 0.0))
+  {
+    return 1.0;
+  }
+  int n = int(ceil(t.y / ShadowStepIndex));
+  n = clamp(n, 1, 256);
+  float h = t.y / float(n);
+  float tau = 0.0;
+  for (int k = 0; k < n; ++k)
+  {
+    tau += extinction(transfer(sampleU(p + (float(k) + 0.5) * h * e)).a);
+    if (tau * h * LightWorldPerIndex[l] > 10.0)
+    {
+      return 0.0;
+    }
+  }
+  return exp(-tau * h * LightWorldPerIndex[l]);
+}
+#endif
+
+void main()
+{
+  vec2 ndc = 2.0 * (gl_FragCoord.xy - ViewportOrigin) / ViewportSize - 1.0;
+  vec4 a = ClipToIndex * vec4(ndc, -1.0, 1.0);
+  vec4 b = ClipToIndex * vec4(ndc, 1.0, 1.0);
+  vec3 p0 = a.xyz / a.w;   // ray at the near plane
+  vec3 d = b.xyz / b.w - p0; // to the far plane: t in [0, 1]
+  float tEnd = 1.0;
+#ifdef PLUME_DEPTH
+  float z = texelFetch(OpaqueDepth, ivec2(gl_FragCoord.xy - ViewportOrigin), 0).r;
+  if (z < 1.0)
+  {
+    vec4 q = ClipToIndex * vec4(ndc, 2.0 * z - 1.0, 1.0);
+    tEnd = dot(q.xyz / q.w - p0, d) / dot(d, d);
+  }
+#endif
+  vec2 t = clipToBox(p0, d, 0.0, tEnd);
+  if (!(t.y > t.x))
+  {
+    discard;
+  }
+  float dt = StepIndex / length(d);
+  if ((t.y - t.x) / dt > float(MaxSteps))
+  {
+    dt = (t.y - t.x) / float(MaxSteps);
+  }
+  float worldPerT = length(IndexToWorld * d);
+#ifdef PLUME_JITTER
+  float first = jitter() * dt;
+#else
+  float first = dt;
+#endif
+
+#if defined(PLUME_ISO) || defined(PLUME_SMOKE)
+  vec3 viewDir = -normalize(IndexToWorld * d); // world, towards the eye
+#endif
+
+  vec4 dst = vec4(0.0);
+#ifdef PLUME_MIP
+  float uMax = -1.0;
+#endif
+#ifdef PLUME_ISO
+  float tPrev = t.x;
+  float fPrev = sampleU(p0 + t.x * d) - IsoValue;
+  bool hit = false;
+  float tHit = 0.0;
+#endif
+
+  float s0 = t.x;
+  float s1 = min(t.x + first, t.y);
+  for (int i = 0; i <= MaxSteps + 1 && s0 < t.y; ++i)
+  {
+    float tm = 0.5 * (s0 + s1);
+    vec3 p = p0 + tm * d;
+    float u = sampleU(p);
+#ifdef PLUME_COMPOSITE
+    vec4 c = transfer(u);
+    float alpha = 1.0 - exp(-extinction(c.a) * (s1 - s0) * worldPerT);
+    dst.rgb += (1.0 - dst.a) * alpha * c.rgb;
+    dst.a += (1.0 - dst.a) * alpha;
+    if (dst.a >= OpacityThreshold)
+    {
+      break;
+    }
+#endif
+#ifdef PLUME_SMOKE
+    vec4 c = transfer(u);
+    float sigma = extinction(c.a);
+    if (sigma > 0.0)
+    {
+      float alpha = 1.0 - exp(-sigma * (s1 - s0) * worldPerT);
+      vec3 light = vec3(Ambient);
+      for (int l = 0; l < PLUME_LIGHTS; ++l)
+      {
+        light += Diffuse * LightColor[l] * lightTransmittance(p, l);
+      }
+      dst.rgb += (1.0 - dst.a) * alpha * c.rgb * light;
+      dst.a += (1.0 - dst.a) * alpha;
+      if (dst.a >= OpacityThreshold)
+      {
+        break;
+      }
+    }
+#endif
+#ifdef PLUME_MIP
+    uMax = max(uMax, u);
+#endif
+#ifdef PLUME_ISO
+    float f = u - IsoValue;
+    if ((fPrev < 0.0) != (f < 0.0))
+    {
+      // bisection between the previous sample and this one
+      float ta = tPrev, tb = tm;
+      for (int k = 0; k < 8; ++k)
+      {
+        float tc = 0.5 * (ta + tb);
+        float fc = sampleU(p0 + tc * d) - IsoValue;
+        if ((fc < 0.0) == (fPrev < 0.0))
+        {
+          ta = tc;
+        }
+        else
+        {
+          tb = tc;
+        }
+      }
+      hit = true;
+      tHit = 0.5 * (ta + tb);
+      break;
+    }
+    tPrev = tm;
+    fPrev = f;
+#endif
+    s0 = s1;
+    s1 = min(s0 + dt, t.y);
+  }
+
+#ifdef PLUME_MIP
+  if (uMax < 0.0)
+  {
+    discard;
+  }
+  vec4 c = transfer(uMax);
+  dst = vec4(c.rgb * c.a, c.a);
+#endif
+#ifdef PLUME_ISO
+  if (!hit)
+  {
+    discard;
+  }
+  vec3 ph = p0 + tHit * d;
+  vec3 g = vec3(sampleU(ph + vec3(1, 0, 0)) - sampleU(ph - vec3(1, 0, 0)),
+    sampleU(ph + vec3(0, 1, 0)) - sampleU(ph - vec3(0, 1, 0)),
+    sampleU(ph + vec3(0, 0, 1)) - sampleU(ph - vec3(0, 0, 1)));
+  vec3 n = NormalToWorld * g;
+  float len = length(n);
+  n = len > 1e-20 ? n / len : viewDir;
+  if (dot(n, viewDir) < 0.0)
+  {
+    n = -n;
+  }
+  vec3 base = transfer(IsoValue).rgb;
+  vec3 color = Ambient * base;
+  for (int l = 0; l < PLUME_LIGHTS; ++l)
+  {
+    vec3 L = LightDirection[l];
+    color += Diffuse * max(dot(n, L), 0.0) * base * LightColor[l];
+    vec3 H = L + viewDir;
+    float hl = length(H);
+    float nh = hl > 1e-6 ? max(dot(n, H / hl), 0.0) : 0.0;
+    color += Specular * (nh > 0.0 ? pow(nh, SpecularPower) : 0.0) * LightColor[l];
+  }
+  dst = vec4(color, 1.0);
+#endif
+  if (dst.a <= 0.0)
+  {
+    discard;
+  }
+  gl_FragData[0] = dst;
+}

@@ -1,0 +1,605 @@
+#include "vtkPlumeVolumeMapper.h"
+
+#include "vtkPlumeOpaqueDepthTexture.h"
+#include "vtkPlumeScalarTexture3D.h"
+#include "vtkPlumeVolumeFS.h"
+#include "vtkPlumeVolumeVS.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkPlumeVolumeMapper);
+
+namespace
+{
+constexpr int TableSize = 1024;
+constexpr int MaxLights = 4;
+
+// GL wants column-major floats (VTK matrices are row-major)
+void ToGL(const double m[16], float out[16])
+{
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      out[4 * c + r] = static_cast<float>(m[4 * r + c]);
+    }
+  }
+}
+
+void ToGL3(const double m[9], float out[9])
+{
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out[3 * c + r] = static_cast<float>(m[3 * r + c]);
+    }
+  }
+}
+
+std::string Replace(std::string s, const std::string& tag, const std::string& with)
+{
+  const size_t at = s.find(tag);
+  if (at != std::string::npos)
+  {
+    s.replace(at, tag.size(), with);
+  }
+  return s;
+}
+}
+
+//------------------------------------------------------------------------------
+class vtkPlumeVolumeMapper::Internals
+{
+public:
+  vtkNew<vtkPlumeScalarTexture3D> Scalars;
+  vtkNew<vtkPlumeOpaqueDepthTexture> Depth;
+  vtkNew<vtkTextureObject> Table;
+  vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
+  std::map<std::string, vtkShaderProgram*> Programs;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  int Frame = 0;
+
+  // what the transfer-function table was built from
+  vtkVolumeProperty* TableProperty = nullptr;
+  vtkMTimeType TableTime = 0;
+  double TableRange[2] = { 0, 0 };
+
+  void ReleaseGraphicsResources(vtkWindow* window)
+  {
+    this->Scalars->ReleaseGraphicsResources(window);
+    this->Depth->ReleaseGraphicsResources(window);
+    this->Table->ReleaseGraphicsResources(window);
+    this->EmptyVAO->ReleaseGraphicsResources();
+    this->Programs.clear(); // owned by the window's shader cache
+    this->TableProperty = nullptr;
+    this->Window = nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkPlumeVolumeMapper::vtkPlumeVolumeMapper()
+  : IsoValue(std::numeric_limits<double>::quiet_NaN())
+  , Impl(new Internals)
+{
+}
+
+vtkPlumeVolumeMapper::~vtkPlumeVolumeMapper() = default;
+
+int vtkPlumeVolumeMapper::GetUploadCount()
+{
+  return this->Impl->Scalars->GetUploadCount();
+}
+
+//------------------------------------------------------------------------------
+double* vtkPlumeVolumeMapper::GetBounds()
+{
+  vtkImageData* image = vtkImageData::SafeDownCast(this->GetInput());
+  if (!image)
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return this->Bounds;
+  }
+  if (this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->GetInputAlgorithm()->Update();
+    image = vtkImageData::SafeDownCast(this->GetInput());
+  }
+  int extent[6];
+  image->GetExtent(extent);
+  double lo[3], hi[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    lo[a] = extent[2 * a];
+    hi[a] = extent[2 * a + 1];
+    if (hi[a] <= lo[a])
+    {
+      lo[a] -= 0.5;
+      hi[a] = lo[a] + 1.0;
+    }
+  }
+  // corners of the index box through the image's index -> physical map
+  vtkMath::UninitializeBounds(this->Bounds);
+  bool first = true;
+  for (int c = 0; c < 8; ++c)
+  {
+    const double ijk[3] = { (c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1],
+      (c & 4) ? hi[2] : lo[2] };
+    double xyz[3];
+    image->TransformContinuousIndexToPhysicalPoint(ijk, xyz);
+    for (int a = 0; a < 3; ++a)
+    {
+      if (first || xyz[a] < this->Bounds[2 * a])
+      {
+        this->Bounds[2 * a] = xyz[a];
+      }
+      if (first || xyz[a] > this->Bounds[2 * a + 1])
+      {
+        this->Bounds[2 * a + 1] = xyz[a];
+      }
+    }
+    first = false;
+  }
+  return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& impl = *this->Impl;
+  if (ren->GetSelector())
+  {
+    return; // hardware selection is not supported
+  }
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!renWin)
+  {
+    vtkErrorMacro(<< "an OpenGL render window is required");
+    return;
+  }
+  if (this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  vtkImageData* image = vtkImageData::SafeDownCast(this->GetInput());
+  if (!image)
+  {
+    vtkErrorMacro(<< "no input image");
+    return;
+  }
+  int cellFlag = 0;
+  vtkDataArray* scalars = this->GetScalars(
+    image, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (!scalars)
+  {
+    vtkErrorMacro(<< "the input image has no scalars to render"
+                  << (this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME && this->ArrayName
+                         ? std::string(" (no point array named '") + this->ArrayName + "')"
+                         : std::string()));
+    return;
+  }
+  if (cellFlag)
+  {
+    vtkErrorMacro(<< "cell scalars are not supported; use point data (e.g. vtkCellDataToPointData)");
+    return;
+  }
+  if (impl.Window && impl.Window != renWin)
+  {
+    impl.ReleaseGraphicsResources(impl.Window);
+  }
+  impl.Window = renWin;
+
+  // ---- 3D texture (only when the data changed)
+  if (!impl.Scalars->Update(renWin, image, scalars, this->ScalarComponent))
+  {
+    vtkErrorMacro(<< impl.Scalars->GetLastError());
+    return;
+  }
+  const double* range = impl.Scalars->GetScalarRange();
+
+  // ---- transfer-function table (only when the property or range changed)
+  vtkVolumeProperty* property = vol->GetProperty();
+  vtkColorTransferFunction* color = property->GetRGBTransferFunction(0);
+  vtkPiecewiseFunction* gray =
+    property->GetColorChannels(0) == 1 ? property->GetGrayTransferFunction(0) : nullptr;
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  const vtkMTimeType tfTime = std::max({ property->GetMTime(), color->GetMTime(),
+    opacity->GetMTime(), gray ? gray->GetMTime() : vtkMTimeType(0) });
+  if (impl.TableProperty != property || impl.TableTime != tfTime ||
+    impl.TableRange[0] != range[0] || impl.TableRange[1] != range[1] || !impl.Table->GetHandle())
+  {
+    std::vector<float> table(4 * TableSize);
+    for (int i = 0; i < TableSize; ++i)
+    {
+      const double s = range[0] + (range[1] - range[0]) * i / (TableSize - 1.0);
+      double rgb[3];
+      if (gray)
+      {
+        rgb[0] = rgb[1] = rgb[2] = gray->GetValue(s);
+      }
+      else
+      {
+        color->GetColor(s, rgb);
+      }
+      const double a = opacity->GetValue(s);
+      for (int c = 0; c < 3; ++c)
+      {
+        table[4 * i + c] = static_cast<float>(std::isfinite(rgb[c]) ? rgb[c] : 0.0);
+      }
+      table[4 * i + 3] = static_cast<float>(std::isfinite(a) ? std::min(1.0, std::max(0.0, a)) : 0.0);
+    }
+    impl.Table->SetContext(renWin);
+    impl.Table->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.Table->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.Table->SetMinificationFilter(vtkTextureObject::Linear);
+    impl.Table->SetMagnificationFilter(vtkTextureObject::Linear);
+    if (!impl.Table->Create2DFromRaw(TableSize, 1, 4, VTK_FLOAT, table.data()))
+    {
+      vtkErrorMacro(<< "could not create the transfer-function texture");
+      return;
+    }
+    impl.TableProperty = property;
+    impl.TableTime = tfTime;
+    impl.TableRange[0] = range[0];
+    impl.TableRange[1] = range[1];
+    ++this->TableCount;
+  }
+
+  // ---- opaque depth
+  bool useDepth = false;
+  if (this->UseOpaqueDepth)
+  {
+    useDepth = impl.Depth->Capture(ren);
+    if (!useDepth)
+    {
+      vtkWarningMacro(<< "rays will not stop at opaque geometry: " << impl.Depth->GetLastError());
+    }
+  }
+
+  // ---- matrices, in double: index -> data -> world -> clip
+  int dims[3], extent[6];
+  image->GetDimensions(dims);
+  image->GetExtent(extent);
+  double spacing[3], origin[3];
+  image->GetSpacing(spacing);
+  image->GetOrigin(origin);
+  const double* dir = image->GetDirectionMatrix()->GetData();
+  double indexToData[16] = { 0 };
+  for (int r = 0; r < 3; ++r)
+  {
+    indexToData[4 * r + 3] = origin[r];
+    for (int c = 0; c < 3; ++c)
+    {
+      indexToData[4 * r + c] = dir[3 * r + c] * spacing[c];
+      // index i of the texture is extent index extent[2c] + i
+      indexToData[4 * r + 3] += dir[3 * r + c] * spacing[c] * extent[2 * c];
+    }
+  }
+  indexToData[15] = 1.0;
+  double indexToWorld[16];
+  vtkMatrix4x4::Multiply4x4(vol->GetMatrix()->GetData(), indexToData, indexToWorld);
+  double aspect[2];
+  const double tiledAspect = ren->GetTiledAspectRatio();
+  aspect[0] = tiledAspect;
+  aspect[1] = 1.0;
+  vtkCamera* camera = ren->GetActiveCamera();
+  double worldToClip[16];
+  {
+    vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(aspect[0], -1, 1);
+    std::copy(m->GetData(), m->GetData() + 16, worldToClip);
+  }
+  double indexToClip[16], clipToIndex[16];
+  vtkMatrix4x4::Multiply4x4(worldToClip, indexToWorld, indexToClip);
+  vtkMatrix4x4::Invert(indexToClip, clipToIndex);
+  for (double v : clipToIndex)
+  {
+    if (!std::isfinite(v))
+    {
+      vtkErrorMacro(<< "degenerate volume or camera transform (not invertible)");
+      return;
+    }
+  }
+  double linear[9], normal[9];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      linear[3 * r + c] = indexToWorld[4 * r + c];
+    }
+  }
+  const double det = vtkMatrix3x3::Determinant(linear);
+  {
+    double inv[9];
+    vtkMatrix3x3::Invert(linear, inv);
+    vtkMatrix3x3::Transpose(inv, normal);
+  }
+  float boxMin[3], boxMax[3], fdims[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    boxMin[a] = dims[a] > 1 ? 0.0f : -0.5f;
+    boxMax[a] = dims[a] > 1 ? static_cast<float>(dims[a] - 1) : 0.5f;
+    fdims[a] = static_cast<float>(dims[a]);
+  }
+
+  // ---- lights (world directions towards the light)
+  std::vector<std::array<double, 3>> lightDirs, lightColors;
+  {
+    vtkLightCollection* lights = ren->GetLights();
+    vtkCollectionSimpleIterator it;
+    lights->InitTraversal(it);
+    while (vtkLight* light = lights->GetNextLight(it))
+    {
+      if (!light->GetSwitch() || static_cast<int>(lightDirs.size()) >= MaxLights)
+      {
+        continue;
+      }
+      double p[3], f[3];
+      light->GetTransformedPosition(p);
+      light->GetTransformedFocalPoint(f);
+      std::array<double, 3> l = { p[0] - f[0], p[1] - f[1], p[2] - f[2] };
+      const double n = vtkMath::Norm(l.data());
+      if (!(n > 0) || !std::isfinite(n))
+      {
+        continue;
+      }
+      for (double& v : l)
+      {
+        v /= n;
+      }
+      double rgb[3];
+      light->GetDiffuseColor(rgb);
+      const double k = light->GetIntensity();
+      lightDirs.push_back(l);
+      lightColors.push_back({ rgb[0] * k, rgb[1] * k, rgb[2] * k });
+    }
+  }
+  const int blend = this->BlendMode;
+  std::string mode = "PLUME_COMPOSITE";
+  if (blend == MAXIMUM_INTENSITY_BLEND)
+  {
+    mode = "PLUME_MIP";
+  }
+  else if (blend == ISOSURFACE_BLEND)
+  {
+    mode = "PLUME_ISO";
+  }
+  else if (this->Smoke)
+  {
+    mode = "PLUME_SMOKE";
+  }
+  const bool lit = mode == "PLUME_ISO" || mode == "PLUME_SMOKE";
+  if (lit && lightDirs.empty())
+  {
+    // no light switched on: light from the camera so lit modes are not black
+    double p[3], f[3];
+    camera->GetPosition(p);
+    camera->GetFocalPoint(f);
+    std::array<double, 3> l = { p[0] - f[0], p[1] - f[1], p[2] - f[2] };
+    vtkMath::Normalize(l.data());
+    lightDirs.push_back(l);
+    lightColors.push_back({ 1, 1, 1 });
+  }
+  const int nLights = lit ? static_cast<int>(lightDirs.size()) : 0;
+
+  // ---- program (only the features in use are compiled)
+  std::ostringstream defines;
+  defines << "#define " << mode << "\n";
+  if (this->Jitter)
+  {
+    defines << "#define PLUME_JITTER\n";
+  }
+  if (useDepth)
+  {
+    defines << "#define PLUME_DEPTH\n";
+  }
+  if (lit)
+  {
+    defines << "#define PLUME_LIGHTS " << nLights << "\n";
+  }
+  const std::string key = defines.str();
+  vtkShaderProgram*& cached = impl.Programs[key];
+  vtkShaderProgram* program = nullptr;
+  if (!cached)
+  {
+    const std::string vs = vtkPlumeVolumeVS;
+    const std::string fs = Replace(vtkPlumeVolumeFS, "//PLUME::Defines", key);
+    program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+    cached = program;
+  }
+  else
+  {
+    program = renWin->GetShaderCache()->ReadyShaderProgram(cached);
+  }
+  if (!program)
+  {
+    impl.Programs.erase(key);
+    vtkErrorMacro(<< "could not build the volume shader program");
+    return;
+  }
+
+  // ---- uniforms
+  float m[16];
+  ToGL(indexToClip, m);
+  program->SetUniformMatrix4x4("IndexToClip", m);
+  ToGL(clipToIndex, m);
+  program->SetUniformMatrix4x4("ClipToIndex", m);
+  program->SetUniform3f("BoxMin", boxMin);
+  program->SetUniform3f("BoxMax", boxMax);
+  program->SetUniform3f("Dims", fdims);
+  float m3[9];
+  ToGL3(linear, m3);
+  program->SetUniformMatrix3x3("IndexToWorld", m3);
+  int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
+  ren->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &vpX, &vpY);
+  const float vpOrigin[2] = { float(vpX), float(vpY) };
+  const float vpSize[2] = { float(vpWidth), float(vpHeight) };
+  program->SetUniform2f("ViewportOrigin", vpOrigin);
+  program->SetUniform2f("ViewportSize", vpSize);
+  program->SetUniformf("StepIndex", static_cast<float>(this->SampleDistance));
+  // enough steps to cross the box diagonal at the requested distance, capped
+  const double diagonal = std::sqrt(double(dims[0]) * dims[0] + double(dims[1]) * dims[1] +
+                            double(dims[2]) * dims[2]) + 2.0;
+  const int maxSteps = static_cast<int>(std::min(16384.0, std::ceil(diagonal / this->SampleDistance) + 2));
+  program->SetUniformi("MaxSteps", maxSteps);
+  const double unit = property->GetScalarOpacityUnitDistance(0);
+  program->SetUniformf("InvUnitDistance", static_cast<float>(unit > 0 ? 1.0 / unit : 1.0));
+  program->SetUniformf("OpacityThreshold", static_cast<float>(this->OpacityThreshold));
+  program->SetUniformf("TFSize", static_cast<float>(TableSize));
+  if (this->Jitter)
+  {
+    program->SetUniformi("JitterSeed", this->AnimatedJitter ? this->JitterSeed + impl.Frame : this->JitterSeed);
+  }
+  const double span = range[1] - range[0];
+  if (mode == "PLUME_ISO")
+  {
+    double iso = this->IsoValue;
+    vtkContourValues* values = property->GetIsoSurfaceValues();
+    if (!std::isfinite(iso) && values && values->GetNumberOfContours() > 0)
+    {
+      iso = values->GetValue(0);
+    }
+    if (!std::isfinite(iso))
+    {
+      iso = range[0] + 0.5 * span;
+    }
+    const double u = span > 0 ? (iso - range[0]) / span : (iso > range[0] ? 2.0 : -1.0);
+    program->SetUniformf("IsoValue", static_cast<float>(std::min(2.0, std::max(-1.0, u))));
+    ToGL3(normal, m3);
+    program->SetUniformMatrix3x3("NormalToWorld", m3);
+    program->SetUniformf("Specular", static_cast<float>(property->GetSpecular(0)));
+    program->SetUniformf("SpecularPower", static_cast<float>(property->GetSpecularPower(0)));
+  }
+  if (lit)
+  {
+    program->SetUniformf("Ambient", static_cast<float>(property->GetAmbient(0)));
+    program->SetUniformf("Diffuse", static_cast<float>(property->GetDiffuse(0)));
+    std::vector<float> dirs, cols;
+    for (int l = 0; l < nLights; ++l)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        dirs.push_back(static_cast<float>(lightDirs[l][c]));
+        cols.push_back(static_cast<float>(lightColors[l][c]));
+      }
+    }
+    program->SetUniform3fv("LightDirection", nLights, reinterpret_cast<float(*)[3]>(dirs.data()));
+    program->SetUniform3fv("LightColor", nLights, reinterpret_cast<float(*)[3]>(cols.data()));
+  }
+  if (mode == "PLUME_SMOKE")
+  {
+    program->SetUniformf("ShadowStepIndex", static_cast<float>(this->ShadowSampleDistance));
+    std::vector<float> idxDirs, perIndex;
+    double inv[9];
+    vtkMatrix3x3::Invert(linear, inv);
+    for (int l = 0; l < nLights; ++l)
+    {
+      double e[3];
+      vtkMatrix3x3::MultiplyPoint(inv, lightDirs[l].data(), e);
+      vtkMath::Normalize(e);
+      double w[3];
+      vtkMatrix3x3::MultiplyPoint(linear, e, w);
+      for (int c = 0; c < 3; ++c)
+      {
+        idxDirs.push_back(static_cast<float>(e[c]));
+      }
+      perIndex.push_back(static_cast<float>(vtkMath::Norm(w)));
+    }
+    program->SetUniform3fv("LightIndexDir", nLights, reinterpret_cast<float(*)[3]>(idxDirs.data()));
+    program->SetUniform1fv("LightWorldPerIndex", nLights, perIndex.data());
+  }
+  impl.Scalars->GetTextureObject()->Activate();
+  program->SetUniformi("Volume", impl.Scalars->GetTextureObject()->GetTextureUnit());
+  impl.Table->Activate();
+  program->SetUniformi("TransferFunction", impl.Table->GetTextureUnit());
+  if (useDepth)
+  {
+    impl.Depth->GetTextureObject()->Activate();
+    program->SetUniformi("OpaqueDepth", impl.Depth->GetTextureObject()->GetTextureUnit());
+  }
+
+  // ---- state: back faces only (front faces if the transform mirrors), no depth test/write,
+  // premultiplied blending, depth clamp so the far plane never clips the box
+  vtkOpenGLState* state = renWin->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(det < 0 ? GL_BACK : GL_FRONT);
+  const bool depthClampWasOn = glIsEnabled(GL_DEPTH_CLAMP) == GL_TRUE;
+  glEnable(GL_DEPTH_CLAMP);
+
+  impl.EmptyVAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 36);
+  impl.EmptyVAO->Release();
+
+  if (!depthClampWasOn)
+  {
+    glDisable(GL_DEPTH_CLAMP);
+  }
+  state->vtkglCullFace(GL_BACK);
+  impl.Scalars->GetTextureObject()->Deactivate();
+  impl.Table->Deactivate();
+  if (useDepth)
+  {
+    impl.Depth->GetTextureObject()->Deactivate();
+  }
+  ++impl.Frame;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Impl->ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ScalarComponent: " << this->ScalarComponent << "\n";
+  os << indent << "SampleDistance: " << this->SampleDistance << "\n";
+  os << indent << "Jitter: " << this->Jitter << " (animated " << this->AnimatedJitter
+     << ", seed " << this->JitterSeed << ")\n";
+  os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
+  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "Smoke: " << this->Smoke << "\n";
+  os << indent << "ShadowSampleDistance: " << this->ShadowSampleDistance << "\n";
+  os << indent << "UseOpaqueDepth: " << this->UseOpaqueDepth << "\n";
+}

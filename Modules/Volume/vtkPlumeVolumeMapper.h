@@ -1,0 +1,178 @@
+/**
+ * @class   vtkPlumeVolumeMapper
+ * @brief   single-pass GPU raycasting of a vtkImageData scalar field (3D texture)
+ *
+ * A vtkVolumeMapper: put it on a vtkVolume in place of vtkGPUVolumeRayCastMapper.
+ * Input: a vtkImageData with point scalars (the active scalars, or the array
+ * chosen with SelectScalarArray / SetScalarModeToUsePointFieldData; one
+ * component, the component chosen with SetScalarComponent, or the magnitude
+ * of a vector). Origin, spacing, extent and the image direction matrix, and
+ * the vtkVolume's transform, are honoured.
+ *
+ * How it draws (seed 004): the back faces of the volume's box are rasterised
+ * (depth clamp on, so the far plane never clips them); the fragment shader
+ * builds the pixel's ray by unprojecting the near and far planes into the
+ * volume's index space, intersects it with the box and marches it. Rays start
+ * at the near plane when the camera is inside the volume. Before drawing, the
+ * depth of the opaque scene is copied into a texture (vtkPlumeOpaqueDepthTexture)
+ * and every ray stops at it, so the volume composites correctly in front of,
+ * around and behind opaque VTK actors. Where a ray gathers nothing, nothing is
+ * written. Output is premultiplied colour blended with (ONE, ONE_MINUS_SRC_ALPHA);
+ * depth is neither tested nor written.
+ *
+ * Sampling: samples sit at the midpoints of segments of SampleDistance voxels
+ * (index-space length) along the ray; the first segment is shortened by a
+ * per-pixel jitter (on by default), so the segments cover exactly the part of
+ * the ray inside the volume and in front of opaque geometry. The scalar is
+ * sampled trilinearly (clamped to the grid).
+ *
+ * Transfer functions (vtkVolumeProperty, component 0): colour c(s) from the
+ * RGB transfer function, scalar opacity α(s) per ScalarOpacityUnitDistance u
+ * (world units). They are tabulated with 1024 entries over the data range and
+ * re-tabulated only when the property or the data range changes. The
+ * extinction coefficient is σ(s) = -ln(1 - min(α(s), 1 - 1e-6)) / u, so the
+ * opacity of a segment of world length L is 1 - exp(-σ L): the correction for
+ * the actual step length.
+ *
+ * Modes (vtkVolumeMapper's BlendMode, plus Smoke):
+ *  - COMPOSITE_BLEND (default): emission–absorption, front to back,
+ *    colour c(s); converges to ∫ c σ T dt with T = exp(-∫σ).
+ *  - MAXIMUM_INTENSITY_BLEND: s_max along the ray, output (c α, α)(s_max).
+ *  - ISOSURFACE_BLEND: the first crossing of the iso value (IsoValue if set,
+ *    else the property's first IsoSurfaceValues entry, else mid-range) between two
+ *    samples, refined by 8 bisection steps; normal from central differences
+ *    (one voxel) of the trilinear field, Phong lighting with the property's
+ *    ambient/diffuse/specular/specular power and the renderer's lights; opaque.
+ *  - Smoke (SmokeOn, composite blend only): emission–absorption with single
+ *    scattering: radiance c(s)·(ka + kd Σ_l I_l T_l(x)), T_l the transmittance
+ *    from x towards light l through the volume (in-shader shadow ray with
+ *    ShadowSampleDistance-voxel midpoint steps), i.e. self-shadowing.
+ * Lights: the renderer's switched-on lights (up to 4), each treated as
+ * directional from its focal point towards its position; colour × intensity.
+ *
+ * Early ray termination when the accumulated opacity reaches OpacityThreshold.
+ * Only the features in use are compiled (mode, jitter, depth, light count are
+ * preprocessor switches).
+ *
+ * Numerical safety: NaN scalars count as the minimum of the finite range,
+ * ±Inf as its ends (vtkPlumeScalarTexture3D); a grid one node thick along an
+ * axis is a slab one spacing thick (index -0.5..0.5) along it; zero gradients
+ * give the view direction as normal. Errors (no input, no or cell scalars,
+ * grids larger than GL_MAX_3D_TEXTURE_SIZE) are reported with vtkErrorMacro
+ * and nothing is drawn.
+ */
+#ifndef vtkPlumeVolumeMapper_h
+#define vtkPlumeVolumeMapper_h
+
+#include "PlumeVolumeModule.h" // For export macro
+#include "vtkVolumeMapper.h"
+
+#include <memory> // For std::unique_ptr
+
+class vtkImageData;
+
+class PLUMEVOLUME_EXPORT vtkPlumeVolumeMapper : public vtkVolumeMapper
+{
+public:
+  static vtkPlumeVolumeMapper* New();
+  vtkTypeMacro(vtkPlumeVolumeMapper, vtkVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Component of a multi-component array to render; -1 (default) = the only one or the magnitude. */
+  vtkSetClampMacro(ScalarComponent, int, -1, VTK_INT_MAX);
+  vtkGetMacro(ScalarComponent, int);
+  ///@}
+
+  ///@{
+  /** Distance between samples in voxels (index-space length). Default 0.5. Clamped to 1e-3..100. */
+  vtkSetClampMacro(SampleDistance, double, 1e-3, 100.0);
+  vtkGetMacro(SampleDistance, double);
+  ///@}
+
+  ///@{
+  /** Per-pixel jitter of the first sample (against wood-grain). Default on. */
+  vtkSetMacro(Jitter, bool);
+  vtkGetMacro(Jitter, bool);
+  vtkBooleanMacro(Jitter, bool);
+  ///@}
+
+  ///@{
+  /** Change the jitter pattern every frame (else a fixed pattern given by JitterSeed). Default off. */
+  vtkSetMacro(AnimatedJitter, bool);
+  vtkGetMacro(AnimatedJitter, bool);
+  vtkBooleanMacro(AnimatedJitter, bool);
+  vtkSetMacro(JitterSeed, int);
+  vtkGetMacro(JitterSeed, int);
+  ///@}
+
+  ///@{
+  /** Stop a ray once its opacity reaches this. Default 0.995. Clamped to 0.5..1 (1 = never). */
+  vtkSetClampMacro(OpacityThreshold, double, 0.5, 1.0);
+  vtkGetMacro(OpacityThreshold, double);
+  ///@}
+
+  ///@{
+  /** Iso value (data units) for ISOSURFACE_BLEND. Default NaN = the property's first iso value (VTK's default 0), or mid-range if it has none. */
+  vtkSetMacro(IsoValue, double);
+  vtkGetMacro(IsoValue, double);
+  ///@}
+
+  ///@{
+  /** Smoke: emission–absorption with single-scattered, self-shadowed light. Default off. */
+  vtkSetMacro(Smoke, bool);
+  vtkGetMacro(Smoke, bool);
+  vtkBooleanMacro(Smoke, bool);
+  ///@}
+
+  ///@{
+  /** Step of the smoke's shadow rays, in voxels. Default 1. Clamped to 0.05..100. */
+  vtkSetClampMacro(ShadowSampleDistance, double, 0.05, 100.0);
+  vtkGetMacro(ShadowSampleDistance, double);
+  ///@}
+
+  ///@{
+  /** Stop rays at the depth of the opaque scene. Default on. */
+  vtkSetMacro(UseOpaqueDepth, bool);
+  vtkGetMacro(UseOpaqueDepth, bool);
+  vtkBooleanMacro(UseOpaqueDepth, bool);
+  ///@}
+
+  /** Number of 3D-texture uploads so far (tests check re-renders do not upload). */
+  int GetUploadCount();
+
+  /** Number of transfer-function tabulations so far. */
+  vtkGetMacro(TableCount, int);
+
+  void Render(vtkRenderer* ren, vtkVolume* vol) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  /** Bounds of the volume in its own coordinates (a 1-node axis is one spacing thick). */
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->vtkVolumeMapper::GetBounds(bounds); }
+
+protected:
+  vtkPlumeVolumeMapper();
+  ~vtkPlumeVolumeMapper() override;
+
+  int ScalarComponent = -1;
+  double SampleDistance = 0.5;
+  bool Jitter = true;
+  bool AnimatedJitter = false;
+  int JitterSeed = 0;
+  double OpacityThreshold = 0.995;
+  double IsoValue;
+  bool Smoke = false;
+  double ShadowSampleDistance = 1.0;
+  bool UseOpaqueDepth = true;
+  int TableCount = 0;
+
+private:
+  vtkPlumeVolumeMapper(const vtkPlumeVolumeMapper&) = delete;
+  void operator=(const vtkPlumeVolumeMapper&) = delete;
+
+  class Internals; // GL state lives here
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif
