@@ -2,6 +2,7 @@
 
 #include "vtkPlumeGlyphFS.h"
 #include "vtkPlumeGlyphGS.h"
+#include "vtkPlumeGlyphLineVS.h"
 #include "vtkPlumeGlyphVS.h"
 
 #include "vtkActor.h"
@@ -86,6 +87,36 @@ std::string SelectVariant(
   return out;
 }
 
+// Draw `count` roots, `perRoot` vertices each, in draws of at most `chunk` roots
+// (gl_VertexID keeps counting across draws: it includes `first`). With
+// `inFlight` > 0, a fence after each draw and a wait for the draw `inFlight`
+// draws back bound how much work the driver has queued: llvmpipe bins a whole
+// draw before its threads rasterize it, and queues binned scenes while the
+// rasterizer is behind, so without the wait a 2M-line draw holds hundreds of MB.
+void DrawRoots(GLenum mode, int perRoot, vtkIdType count, vtkIdType chunk, int inFlight)
+{
+  std::vector<GLsync> fences;
+  for (vtkIdType first = 0; first < count; first += chunk)
+  {
+    const vtkIdType n = std::min(chunk, count - first);
+    glDrawArrays(mode, static_cast<GLint>(first * perRoot), static_cast<GLsizei>(n * perRoot));
+    if (inFlight > 0 && first + n < count)
+    {
+      fences.push_back(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0));
+      if (fences.size() > static_cast<size_t>(inFlight))
+      {
+        glClientWaitSync(fences.front(), GL_SYNC_FLUSH_COMMANDS_BIT, GL_TIMEOUT_IGNORED);
+        glDeleteSync(fences.front());
+        fences.erase(fences.begin());
+      }
+    }
+  }
+  for (GLsync fence : fences)
+  {
+    glDeleteSync(fence);
+  }
+}
+
 // row-major 4x4 helpers (double)
 void Multiply(const double a[16], const double b[16], double c[16])
 {
@@ -127,27 +158,28 @@ void Apply(const double m[16], const double p[3], double out[4])
   }
 }
 
+// Velocity of points [begin, end) as RGBA floats (v, valid) into rgba[0..4*(end-begin)).
 template <typename T>
-void CopyVectors(const T* src, vtkIdType n, std::vector<float>& rgba)
+void CopyVectors(const T* src, vtkIdType begin, vtkIdType end, float* rgba)
 {
-  for (vtkIdType i = 0; i < n; ++i)
+  for (vtkIdType i = begin; i < end; ++i, rgba += 4)
   {
     for (int c = 0; c < 3; ++c)
     {
-      rgba[4 * i + c] = static_cast<float>(src[3 * i + c]);
+      rgba[c] = static_cast<float>(src[3 * i + c]);
     }
-    rgba[4 * i + 3] = 1.0f;
+    rgba[3] = 1.0f;
   }
 }
 
 template <typename T>
-void ApplyMask(const T* src, vtkIdType n, int comps, std::vector<float>& rgba)
+void ApplyMask(const T* src, vtkIdType begin, vtkIdType end, int comps, float* rgba)
 {
-  for (vtkIdType i = 0; i < n; ++i)
+  for (vtkIdType i = begin; i < end; ++i, rgba += 4)
   {
     if (src[i * comps] == T(0))
     {
-      rgba[4 * i + 3] = 0.0f;
+      rgba[3] = 0.0f;
     }
   }
 }
@@ -172,28 +204,27 @@ public:
     bool operator!=(const Signature& o) const { return !(*this == o); }
   };
 
-  // Sanitised velocity: RGBA = (v, valid). Also gives the speed statistics.
-  void BuildVelocity(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask,
-    std::vector<float>* rgbaOut)
+  // Sanitised velocity of points [begin, end): RGBA = (v, valid), with
+  // non-finite or masked nodes set to (0, 0, 0, 0); widens range[0..1] by the
+  // speeds of the valid nodes.
+  static void ConvertVelocity(vtkDataArray* vectors, vtkDataArray* mask, vtkIdType begin,
+    vtkIdType end, float* rgba, double range[2])
   {
-    const vtkIdType n = image->GetNumberOfPoints();
-    std::vector<float> local;
-    std::vector<float>& rgba = rgbaOut ? *rgbaOut : local;
-    rgba.assign(4 * static_cast<size_t>(n), 0.0f);
     switch (vectors->GetDataType())
     {
       vtkTemplateMacro(
-        CopyVectors(static_cast<const VTK_TT*>(vectors->GetVoidPointer(0)), n, rgba));
+        CopyVectors(static_cast<const VTK_TT*>(vectors->GetVoidPointer(0)), begin, end, rgba));
       default:
-        for (vtkIdType i = 0; i < n; ++i)
+        for (vtkIdType i = begin; i < end; ++i)
         {
           double v[3];
           vectors->GetTuple(i, v);
+          float* t = rgba + 4 * (i - begin);
           for (int c = 0; c < 3; ++c)
           {
-            rgba[4 * i + c] = static_cast<float>(v[c]);
+            t[c] = static_cast<float>(v[c]);
           }
-          rgba[4 * i + 3] = 1.0f;
+          t[3] = 1.0f;
         }
     }
     if (mask)
@@ -201,36 +232,85 @@ public:
       const int comps = mask->GetNumberOfComponents();
       switch (mask->GetDataType())
       {
-        vtkTemplateMacro(
-          ApplyMask(static_cast<const VTK_TT*>(mask->GetVoidPointer(0)), n, comps, rgba));
+        vtkTemplateMacro(ApplyMask(
+          static_cast<const VTK_TT*>(mask->GetVoidPointer(0)), begin, end, comps, rgba));
         default:
-          for (vtkIdType i = 0; i < n; ++i)
+          for (vtkIdType i = begin; i < end; ++i)
           {
             if (mask->GetComponent(i, 0) == 0.0)
             {
-              rgba[4 * i + 3] = 0.0f;
+              rgba[4 * (i - begin) + 3] = 0.0f;
             }
           }
       }
     }
-    double lo = VTK_DOUBLE_MAX;
-    double hi = 0.0;
-    bool any = false;
-    for (vtkIdType i = 0; i < n; ++i)
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      float* t = &rgba[4 * i];
+      float* t = rgba + 4 * (i - begin);
       if (!std::isfinite(t[0]) || !std::isfinite(t[1]) || !std::isfinite(t[2]) || t[3] == 0.0f)
       {
         t[0] = t[1] = t[2] = t[3] = 0.0f;
         continue;
       }
       const double s = std::sqrt(double(t[0]) * t[0] + double(t[1]) * t[1] + double(t[2]) * t[2]);
-      lo = std::min(lo, s);
-      hi = std::max(hi, s);
-      any = true;
+      range[0] = std::min(range[0], s);
+      range[1] = std::max(range[1], s);
     }
-    this->SpeedRange[0] = any ? lo : 0.0;
-    this->SpeedRange[1] = any ? hi : 0.0;
+  }
+
+  // Points converted per slab: the sanitised copy never exists whole on the
+  // CPU (the process's peak memory is what the benchmarks compare).
+  static constexpr vtkIdType SlabPoints = 1 << 16;
+
+  // Speed statistics of the valid nodes (SpeedRange), one slab at a time.
+  void BuildStatistics(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask)
+  {
+    const vtkIdType n = image->GetNumberOfPoints();
+    std::vector<float> slab(4 * static_cast<size_t>(std::min(n, SlabPoints)));
+    double range[2] = { VTK_DOUBLE_MAX, -1.0 };
+    for (vtkIdType begin = 0; begin < n; begin += SlabPoints)
+    {
+      ConvertVelocity(vectors, mask, begin, std::min(n, begin + SlabPoints), slab.data(), range);
+    }
+    const bool any = range[1] >= 0.0;
+    this->SpeedRange[0] = any ? range[0] : 0.0;
+    this->SpeedRange[1] = any ? range[1] : 0.0;
+  }
+
+  // Velocity texture (internal format `internalFormat`) filled from whole
+  // z-slabs of the image converted on the fly; also updates SpeedRange.
+  bool UploadVelocity(vtkOpenGLRenderWindow* renWin, vtkDataArray* vectors, vtkDataArray* mask,
+    const int dims[3], unsigned int internalFormat)
+  {
+    vtkTextureObject* texture = this->VelocityTexture;
+    texture->SetContext(renWin);
+    texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    texture->SetWrapR(vtkTextureObject::ClampToEdge);
+    texture->SetMinificationFilter(vtkTextureObject::Linear);
+    texture->SetMagnificationFilter(vtkTextureObject::Linear);
+    texture->SetInternalFormat(internalFormat);
+    if (!texture->Create3DFromRaw(dims[0], dims[1], dims[2], 4, VTK_FLOAT, nullptr))
+    {
+      return false;
+    }
+    const vtkIdType slice = vtkIdType(dims[0]) * dims[1];
+    const int slabSlices = static_cast<int>(std::max<vtkIdType>(1, SlabPoints / slice));
+    std::vector<float> slab(4 * static_cast<size_t>(slice) * std::min(slabSlices, dims[2]));
+    double range[2] = { VTK_DOUBLE_MAX, -1.0 };
+    texture->Activate();
+    // rows are 16·dims[0] bytes: any GL_UNPACK_ALIGNMENT fits
+    for (int z = 0; z < dims[2]; z += slabSlices)
+    {
+      const int nz = std::min(slabSlices, dims[2] - z);
+      ConvertVelocity(vectors, mask, z * slice, (z + nz) * slice, slab.data(), range);
+      glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, z, dims[0], dims[1], nz, GL_RGBA, GL_FLOAT, slab.data());
+    }
+    texture->Deactivate();
+    const bool any = range[1] >= 0.0;
+    this->SpeedRange[0] = any ? range[0] : 0.0;
+    this->SpeedRange[1] = any ? range[1] : 0.0;
+    return true;
   }
 
   // GL objects
@@ -432,7 +512,7 @@ double* vtkPlumeVelocityGlyphMapper::GetBounds()
       std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 }) };
     if (sig != this->Impl->StatsSignature)
     {
-      this->Impl->BuildVelocity(image, vectors, mask, nullptr);
+      this->Impl->BuildStatistics(image, vectors, mask);
       this->Impl->StatsSignature = sig;
     }
     double pad = std::fabs(this->Scale) * this->Impl->SpeedRange[1];
@@ -525,17 +605,9 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 }) };
   if (sig != impl.Uploaded || !impl.VelocityTexture->GetHandle())
   {
-    std::vector<float> rgba;
-    impl.BuildVelocity(image, vectors, mask, &rgba);
+    const bool uploaded = impl.UploadVelocity(renWin, vectors, mask, dims, GL_RGBA32F);
     impl.StatsSignature = sig;
-    impl.VelocityTexture->SetContext(renWin);
-    impl.VelocityTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.VelocityTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.VelocityTexture->SetWrapR(vtkTextureObject::ClampToEdge);
-    impl.VelocityTexture->SetMinificationFilter(vtkTextureObject::Linear);
-    impl.VelocityTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-    if (!impl.VelocityTexture->Create3DFromRaw(
-          dims[0], dims[1], dims[2], 4, VTK_FLOAT, rgba.data()))
+    if (!uploaded)
     {
       vtkErrorMacro(<< "could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
                     << " RGBA32F velocity texture");
@@ -735,11 +807,13 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     integrator = this->Integrator == RK2 ? "RK2" : "RK4";
   }
   const bool wide = this->LineWidth > 1.0;
+  const bool lineVS = !seedMode && integrator == "STRAIGHT" && !wide &&
+    this->StraightLineShader == VERTEX_SHADER;
   const std::set<std::string> enabled = { seedMode ? "SEEDS" : "LATTICE", integrator,
     wide ? "WIDE" : "THIN", useLUT ? "LUT" : "SOLID" };
   std::ostringstream key;
-  key << (seedMode ? "S" : "L") << integrator << segments << (wide ? "W" : "T")
-      << (useLUT ? "C" : "P");
+  key << (lineVS ? "V" : "G") << (seedMode ? "S" : "L") << integrator << segments
+      << (wide ? "W" : "T") << (useLUT ? "C" : "P");
   vtkShaderProgram*& cached = impl.Programs[key.str()];
   vtkShaderProgram* program = nullptr;
   if (!cached)
@@ -748,8 +822,9 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     defines << "#define PLUME_SEGMENTS " << segments << "\n"
             << "#define PLUME_POINTS " << segments + 1 << "\n"
             << "#define PLUME_VERTICES_WIDE " << 2 * (segments + 1) << "\n";
-    const std::string vs = SelectVariant(vtkPlumeGlyphVS, enabled, defines.str());
-    const std::string gs = SelectVariant(vtkPlumeGlyphGS, enabled, defines.str());
+    const std::string vs =
+      SelectVariant(lineVS ? vtkPlumeGlyphLineVS : vtkPlumeGlyphVS, enabled, defines.str());
+    const std::string gs = lineVS ? std::string() : SelectVariant(vtkPlumeGlyphGS, enabled, defines.str());
     const std::string fs = SelectVariant(vtkPlumeGlyphFS, enabled, defines.str());
     program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
     cached = program;
@@ -829,6 +904,9 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
+  // chunked draws keep at most two draws queued in the driver (see DrawRoots)
+  const vtkIdType chunk = this->MaximumGlyphsPerDraw > 0 ? this->MaximumGlyphsPerDraw : VTK_ID_MAX;
+  const int inFlight = 2;
   if (seedMode)
   {
     impl.SeedVAO->Bind();
@@ -844,13 +922,13 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
       impl.SeedVAOProgram = program;
       impl.SeedUploadChanged = false;
     }
-    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(rootCount));
+    DrawRoots(GL_POINTS, 1, rootCount, chunk, inFlight);
     impl.SeedVAO->Release();
   }
   else
   {
     impl.EmptyVAO->Bind();
-    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(rootCount));
+    DrawRoots(lineVS ? GL_LINES : GL_POINTS, lineVS ? 2 : 1, rootCount, chunk, inFlight);
     impl.EmptyVAO->Release();
   }
 
@@ -885,6 +963,9 @@ void vtkPlumeVelocityGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LineWidth: " << this->LineWidth << "\n";
   os << indent << "ColorByMagnitude: " << this->ColorByMagnitude << "\n";
   os << indent << "UseDataRange: " << this->UseDataRange << "\n";
+  os << indent << "StraightLineShader: "
+     << (this->StraightLineShader == VERTEX_SHADER ? "VERTEX_SHADER" : "GEOMETRY_SHADER") << "\n";
+  os << indent << "MaximumGlyphsPerDraw: " << this->MaximumGlyphsPerDraw << "\n";
   os << indent << "LastRootCount: " << this->LastRootCount << "\n";
   os << indent << "UploadCount: " << this->UploadCount << "\n";
 }

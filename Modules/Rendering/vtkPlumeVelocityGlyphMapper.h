@@ -27,7 +27,28 @@
  * with |v| <= MinimumSpeed emit nothing.
  *
  * Colour: by |v| through LookupTable over ScalarRange (ColorByMagnitude on,
- * the default), or the actor property's diffuse colour.
+ * the default), or the actor property's diffuse colour. The colour is looked
+ * up once per glyph, not per fragment.
+ *
+ * Two shader paths draw straight 1-pixel glyphs on a lattice (STRAIGHT,
+ * LineWidth <= 1, not ROOTS_SEEDS), chosen by StraightLineShader:
+ *  - VERTEX_SHADER (default): glDrawArrays(GL_LINES) of 2 vertices per root
+ *    with no vertex buffer; each vertex shader invocation derives its root from
+ *    gl_VertexID / 2, fetches the node's velocity with texelFetch and places
+ *    the root or the tip; culled glyphs collapse to a point outside the clip
+ *    volume. No geometry shader, which llvmpipe runs per primitive on one thread.
+ *  - GEOMETRY_SHADER: one point per root expanded by the geometry shader.
+ * Both give the same image. Streamlets (RK2/RK4), wide lines and seeds always
+ * use the geometry shader.
+ *
+ * Memory: the velocity is converted and uploaded in slabs (no whole CPU copy).
+ * On llvmpipe most of the peak memory of a dense frame is the driver's binned
+ * line data, queued while its rasterizer threads catch up (about 470 MB for
+ * 2M glyphs, whichever shader path). MaximumGlyphsPerDraw > 0 splits the draw
+ * and waits (a fence) until the draw two chunks back has finished, which bounds
+ * that memory (2M glyphs in 256k chunks: ~400 MB peak instead of ~680 MB) but
+ * costs time, because binning and rasterizing then overlap less; hence off by
+ * default.
  *
  * Screen-adaptive stride: each frame the 8 corners of the volume are
  * projected to the viewport; A is the area in pixels of their screen-space
@@ -83,6 +104,11 @@ public:
     ROOTS_SCREEN_ADAPTIVE = 0,
     ROOTS_LATTICE = 1,
     ROOTS_SEEDS = 2
+  };
+  enum StraightLineShaders
+  {
+    VERTEX_SHADER = 0,  ///< GL_LINES from gl_VertexID, no geometry shader
+    GEOMETRY_SHADER = 1 ///< points expanded by the geometry shader
   };
   enum IntegratorTypes
   {
@@ -195,6 +221,26 @@ public:
   vtkBooleanMacro(UseDataRange, bool);
   ///@}
 
+  ///@{
+  /**
+   * Shader path for straight 1-pixel lattice glyphs: VERTEX_SHADER (default)
+   * or GEOMETRY_SHADER; both give the same image (see the class documentation).
+   * Other glyphs always use the geometry shader.
+   */
+  vtkSetClampMacro(StraightLineShader, int, VERTEX_SHADER, GEOMETRY_SHADER);
+  vtkGetMacro(StraightLineShader, int);
+  ///@}
+
+  ///@{
+  /**
+   * Largest number of roots per draw call; with more, the draws are throttled
+   * to two in flight (see the class documentation: less driver memory, more
+   * time). Default 0 = all roots in one draw. Does not change the image.
+   */
+  vtkSetClampMacro(MaximumGlyphsPerDraw, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumGlyphsPerDraw, vtkIdType);
+  ///@}
+
   /** Number of glyph roots submitted by the last render (before shader culling). */
   vtkGetMacro(LastRootCount, vtkIdType);
 
@@ -246,6 +292,8 @@ protected:
   double LineWidth = 1.0;
   bool ColorByMagnitude = true;
   bool UseDataRange = true;
+  int StraightLineShader = VERTEX_SHADER;
+  vtkIdType MaximumGlyphsPerDraw = 0;
   vtkIdType LastRootCount = 0;
   int UploadCount = 0;
 

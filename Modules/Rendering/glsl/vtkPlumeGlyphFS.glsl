@@ -3,35 +3,23 @@
 // vtkPlumeVelocityGlyphMapper fragment shader. Outputs non-premultiplied
 // colour; the mapper blends with (SRC_ALPHA, ONE_MINUS_SRC_ALPHA).
 //
-// Variant blocks: LUT (colour by |v| through a 1-row lookup texture) or SOLID.
+// The glyph colour is looked up once per glyph (in the geometry shader, or in
+// the vertex shader of the straight-line path), so a fragment does no texture
+// fetch: on llvmpipe the fragment shader runs once per 4x4 pixel block a line
+// touches, which makes per-fragment work the dominant cost of dense glyphs.
 
 //PLUME::Defines
 
 in float glyphAlpha;
-flat in float glyphColorCoord; // |v(root)| mapped to [0, 1] over the colour range
+flat in vec4 glyphColor; // LUT colour of |v(root)| or the solid colour
 
 uniform float Opacity;
-//PLUME::IF LUT
-uniform sampler2D ColorLUT;
-uniform float LUTSize;
-//PLUME::ENDIF
-//PLUME::IF SOLID
-uniform vec3 SolidColor;
-//PLUME::ENDIF
 
 //VTK::Output::Dec
 
 void main()
 {
-  vec4 color = vec4(1.0);
-//PLUME::IF LUT
-  // exact table entries at texel centres, linear in between
-  float s = (glyphColorCoord * (LUTSize - 1.0) + 0.5) / LUTSize;
-  color = texture(ColorLUT, vec2(s, 0.5));
-//PLUME::ENDIF
-//PLUME::IF SOLID
-  color = vec4(SolidColor, 1.0);
-//PLUME::ENDIF
+  vec4 color = glyphColor;
   float alpha = glyphAlpha * color.a * Opacity;
   if (alpha < 1.0 / 512.0)
   {

@@ -27,7 +27,7 @@ layout(triangle_strip, max_vertices = PLUME_VERTICES_WIDE) out;
 in vec3 rootIndex[];
 
 out float glyphAlpha;
-flat out float glyphColorCoord;
+flat out vec4 glyphColor;
 
 uniform sampler3D Velocity; // RGBA32F: xyz = velocity, a = valid mask (0 or 1)
 uniform mat4 MCDCRel;       // centre-relative model coordinates -> clip
@@ -38,6 +38,13 @@ uniform float Scale;        // glyph length per unit velocity
 uniform float MinimumSpeed; // roots with |v| <= MinimumSpeed emit nothing
 uniform float RootAlpha;    // alpha at the root (1 at the tip)
 uniform vec2 ColorRange;    // (minimum, 1 / (maximum - minimum)) of |v| for colouring
+//PLUME::IF LUT
+uniform sampler2D ColorLUT; // 1-row lookup table over ColorRange
+uniform float LUTSize;      // its number of entries
+//PLUME::ENDIF
+//PLUME::IF SOLID
+uniform vec3 SolidColor;
+//PLUME::ENDIF
 //PLUME::IF RK2 RK4
 uniform vec3 StreamAxes;    // 0 along axes where the grid is one node thick, else 1
 //PLUME::ENDIF
@@ -155,12 +162,20 @@ void main()
     return;
   }
 
-  glyphColorCoord = clamp((speed - ColorRange.x) * ColorRange.y, 0.0, 1.0);
+//PLUME::IF LUT
+  // exact table entries at texel centres, linear in between
+  float colorCoord = clamp((speed - ColorRange.x) * ColorRange.y, 0.0, 1.0);
+  vec4 color = textureLod(ColorLUT, vec2((colorCoord * (LUTSize - 1.0) + 0.5) / LUTSize, 0.5), 0.0);
+//PLUME::ENDIF
+//PLUME::IF SOLID
+  vec4 color = vec4(SolidColor, 1.0);
+//PLUME::ENDIF
 
 //PLUME::IF THIN
   for (int i = 0; i < n; ++i)
   {
     glyphAlpha = alpha[i];
+    glyphColor = color; // outputs are undefined after EmitVertex: set all of them each time
     gl_Position = clip[i];
     EmitVertex();
   }
@@ -218,9 +233,11 @@ void main()
     vec2 dir = len > 1e-6 ? d / len : vec2(1.0, 0.0);
     vec2 offset = vec2(-dir.y, dir.x) * HalfWidth * 2.0 / ViewportSize * kc[i].w;
     glyphAlpha = ka[i];
+    glyphColor = color;
     gl_Position = vec4(kc[i].xy + offset, kc[i].zw);
     EmitVertex();
     glyphAlpha = ka[i];
+    glyphColor = color;
     gl_Position = vec4(kc[i].xy - offset, kc[i].zw);
     EmitVertex();
   }
