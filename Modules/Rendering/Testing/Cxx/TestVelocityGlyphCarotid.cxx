@@ -22,18 +22,17 @@
 
 int TestVelocityGlyphCarotid(int argc, char* argv[])
 {
-  const char* env = std::getenv("PLUME_DATA_DIR");
-  const std::string dataDir = (env && *env) ? env : PLUME_DATA_DIR;
+  const std::string path = plume::test::DataPath("classic/carotid.vtk");
   vtkNew<vtkStructuredPointsReader> reader;
-  reader->SetFileName((dataDir + "/classic/carotid.vtk").c_str());
+  reader->SetFileName(path.c_str());
   reader->Update();
   if (!reader->GetOutput() || reader->GetOutput()->GetNumberOfPoints() == 0)
   {
-    std::cerr << "cannot read " << dataDir << "/classic/carotid.vtk\n";
+    std::cerr << "cannot read " << path << "\n";
     return EXIT_FAILURE;
   }
 
-  auto window = plumetest::MakeWindow(480, 260);
+  auto window = plume::test::MakeOffscreenWindow(480, 260);
   for (int side = 0; side < 2; ++side)
   {
     vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
@@ -82,7 +81,7 @@ int TestVelocityGlyphCarotid(int argc, char* argv[])
     window->AddRenderer(ren);
   }
   window->Render();
-  const std::string errors = plumetest::GLErrors(window);
+  const std::string errors = plume::test::GLErrors(window);
   if (!errors.empty())
   {
     std::cerr << errors << "\n";

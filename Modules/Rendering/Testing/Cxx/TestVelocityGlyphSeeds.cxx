@@ -29,7 +29,7 @@ int TestVelocityGlyphSeeds(int argc, char* argv[])
   plane->SetPoint2(-0.9, 0.7, -0.1);
   plane->SetResolution(13, 11);
 
-  auto window = plumetest::MakeWindow(400, 220);
+  auto window = plume::test::MakeOffscreenWindow(400, 220);
   for (int side = 0; side < 2; ++side)
   {
     vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
@@ -72,7 +72,7 @@ int TestVelocityGlyphSeeds(int argc, char* argv[])
     window->AddRenderer(ren);
   }
   window->Render();
-  const std::string errors = plumetest::GLErrors(window);
+  const std::string errors = plume::test::GLErrors(window);
   if (!errors.empty())
   {
     std::cerr << errors << "\n";

@@ -97,13 +97,13 @@ int TestVelocityGlyphStreamlet(int, char*[])
   cam->SetViewUp(0, 1, 0);
   cam->SetViewAngle(40);
   ren->ResetCameraClippingRange();
-  auto window = plumetest::MakeWindow(300, 300);
+  auto window = plume::test::MakeOffscreenWindow(300, 300);
   window->AddRenderer(ren);
 
-  const plumetest::FloatImage img = plumetest::ReadBack(window);
+  const plume::test::FloatImage img = plume::test::ReadBack(window);
   plumetest::DumpPNG(window, "TestVelocityGlyphStreamlet");
-  PLUME_CHECK(!plumetest::HasNonFinite(img));
-  PLUME_CHECK(plumetest::GLErrors(window).empty());
+  PLUME_CHECK(!plume::test::HasNonFinite(img));
+  PLUME_CHECK(plume::test::GLErrors(window).empty());
   const double bg[3] = { 0, 0, 0 };
   int checked = 0, bad = 0;
   double worst = 0, worstRadius = 0;

@@ -53,7 +53,7 @@ struct Scene
   // one X window for all cases (fewer X connections, quicker)
   static vtkRenderWindow* SharedWindow()
   {
-    static vtkSmartPointer<vtkRenderWindow> window = plumetest::MakeWindow(200, 200);
+    static vtkSmartPointer<vtkRenderWindow> window = plume::test::MakeOffscreenWindow(200, 200);
     return window;
   }
 
@@ -80,13 +80,13 @@ struct Scene
   }
 
   // renders, checks the generic conditions; returns the number of foreground pixels
-  size_t Check(const char* name, int& failures, plumetest::FloatImage* out = nullptr)
+  size_t Check(const char* name, int& failures, plume::test::FloatImage* out = nullptr)
   {
-    const plumetest::FloatImage img = plumetest::ReadBack(this->Window);
+    const plume::test::FloatImage img = plume::test::ReadBack(this->Window);
     plumetest::DumpPNG(this->Window, std::string("Stress_") + name);
-    const std::string gl = plumetest::GLErrors(this->Window);
-    const bool finite = !plumetest::HasNonFinite(img);
-    const size_t fg = plumetest::CountForeground(img, Background, 0.02);
+    const std::string gl = plume::test::GLErrors(this->Window);
+    const bool finite = !plume::test::HasNonFinite(img);
+    const size_t fg = plume::test::CountForeground(img, Background, 0.02);
     std::cout << name << ": " << fg << " foreground pixels, roots " << this->Mapper->GetLastRootCount()
               << (finite ? "" : ", NON-FINITE read-back") << (gl.empty() ? "" : ", " + gl) << "\n";
     if (!finite || !gl.empty())
@@ -153,7 +153,7 @@ int TestVelocityGlyphStress(int, char*[])
     cam->SetViewUp(0, 1, 0);
     cam->SetViewAngle(30);
     scene.Renderer->ResetCameraClippingRange();
-    plumetest::FloatImage img;
+    plume::test::FloatImage img;
     const size_t fg = scene.Check("nan_inf_mask", failures, &img);
     PLUME_CHECK(fg > 0);
     int wrong = 0;
@@ -248,7 +248,7 @@ int TestVelocityGlyphStress(int, char*[])
 
   // --- far from the origin: same picture as at the origin with the camera shifted
   {
-    plumetest::FloatImage images[2];
+    plume::test::FloatImage images[2];
     for (int far = 0; far < 2; ++far)
     {
       const double shift = far ? 1e6 : 0.0;
@@ -269,10 +269,10 @@ int TestVelocityGlyphStress(int, char*[])
       cam->SetClippingRange(0.5, 8.0);
       scene.Check(far ? "far_1e6" : "far_0", failures, &images[far]);
     }
-    double rms = 0, maxDiff = 0;
-    plumetest::Compare(images[0], images[1], rms, maxDiff);
+    const plume::test::ImageError error = plume::test::Compare(images[0], images[1]);
+    const double rms = error.RMS, maxDiff = error.Max;
     std::cout << "far vs origin: RMS " << rms << ", max " << maxDiff << "\n";
-    PLUME_CHECK(plumetest::CountForeground(images[0], Background, 0.02) > 500);
+    PLUME_CHECK(plume::test::CountForeground(images[0], Background, 0.02) > 500);
     PLUME_CHECK(rms < 0.01);
   }
 
@@ -332,7 +332,7 @@ int TestVelocityGlyphStress(int, char*[])
     cam->SetFocalPoint(0, 0, 0);
     cam->SetViewUp(0, 1, 0);
     scene.Renderer->ResetCameraClippingRange();
-    plumetest::FloatImage img;
+    plume::test::FloatImage img;
     scene.Check("depth", failures, &img);
     size_t leftWhite = 0, rightWhite = 0, rightBlue = 0;
     for (int y = 20; y < 180; ++y)

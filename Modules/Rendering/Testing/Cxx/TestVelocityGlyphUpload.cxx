@@ -37,7 +37,7 @@ int TestVelocityGlyphUpload(int, char*[])
   vtkNew<vtkRenderer> ren;
   ren->AddActor(actor);
   ren->SetBackground(bg[0], bg[1], bg[2]);
-  auto window = plumetest::MakeWindow(240, 200);
+  auto window = plume::test::MakeOffscreenWindow(240, 200);
   window->AddRenderer(ren);
   ren->ResetCamera();
 
@@ -85,13 +85,13 @@ int TestVelocityGlyphUpload(int, char*[])
   vtkNew<vtkTest::ErrorObserver> errors;
   mapper->AddObserver(vtkCommand::ErrorEvent, errors);
   mapper->SetVectorArrayName("no_such_array");
-  PLUME_CHECK(plumetest::CountForeground(plumetest::ReadBack(window), bg) == 0);
+  PLUME_CHECK(plume::test::CountForeground(plume::test::ReadBack(window), bg) == 0);
   PLUME_CHECK(errors->GetError());
   PLUME_CHECK(errors->GetErrorMessage().find("no_such_array") != std::string::npos);
   errors->Clear();
 
   mapper->SetVectorArrayName("speed"); // 1 component
-  PLUME_CHECK(plumetest::CountForeground(plumetest::ReadBack(window), bg) == 0);
+  PLUME_CHECK(plume::test::CountForeground(plume::test::ReadBack(window), bg) == 0);
   PLUME_CHECK(errors->GetErrorMessage().find("'speed' has 1 components") != std::string::npos);
   errors->Clear();
 
@@ -99,23 +99,23 @@ int TestVelocityGlyphUpload(int, char*[])
   vtkNew<vtkImageData> novectors;
   novectors->SetDimensions(4, 4, 4);
   mapper->SetInputData(novectors);
-  PLUME_CHECK(plumetest::CountForeground(plumetest::ReadBack(window), bg) == 0);
+  PLUME_CHECK(plume::test::CountForeground(plume::test::ReadBack(window), bg) == 0);
   PLUME_CHECK(errors->GetErrorMessage().find("no active vectors") != std::string::npos);
   errors->Clear();
-  PLUME_CHECK(plumetest::GLErrors(window).empty());
+  PLUME_CHECK(plume::test::GLErrors(window).empty());
 
   // back to valid data; the named array path works too
   mapper->SetInputData(image);
   mapper->SetVectorArrayName("velocity");
-  PLUME_CHECK(plumetest::CountForeground(plumetest::ReadBack(window), bg) > 100);
+  PLUME_CHECK(plume::test::CountForeground(plume::test::ReadBack(window), bg) > 100);
   PLUME_CHECK(!errors->GetError());
   const int before = mapper->GetUploadCount();
 
   // ReleaseGraphicsResources: everything freed, the next render uploads again
   mapper->ReleaseGraphicsResources(window);
-  PLUME_CHECK(plumetest::CountForeground(plumetest::ReadBack(window), bg) > 100);
+  PLUME_CHECK(plume::test::CountForeground(plume::test::ReadBack(window), bg) > 100);
   PLUME_CHECK(mapper->GetUploadCount() == before + 1);
-  PLUME_CHECK(plumetest::GLErrors(window).empty());
+  PLUME_CHECK(plume::test::GLErrors(window).empty());
 
   // removing the actor and finalizing the window must not leave dangling GL state
   ren->RemoveActor(actor);

@@ -22,7 +22,7 @@ int TestVelocityGlyphVortex(int argc, char* argv[])
   vortex->SetBounds(-1, 1, -1, 1, -0.5, 0.5);
   vortex->SetCenter(0.15, -0.1, 0);
 
-  auto window = plumetest::MakeWindow(400, 200);
+  auto window = plume::test::MakeOffscreenWindow(400, 200);
   for (int side = 0; side < 2; ++side)
   {
     vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
@@ -58,7 +58,7 @@ int TestVelocityGlyphVortex(int argc, char* argv[])
     window->AddRenderer(ren);
   }
   window->Render();
-  const std::string errors = plumetest::GLErrors(window);
+  const std::string errors = plume::test::GLErrors(window);
   if (!errors.empty())
   {
     std::cerr << errors << "\n";

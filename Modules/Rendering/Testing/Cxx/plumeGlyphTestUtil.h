@@ -1,155 +1,36 @@
-// Helpers for the Plume::Rendering tests: offscreen window, float read-back,
-// image metrics, GL error check, and projection in double precision.
-//
-// These mirror Testing/Support/plumeTestSupport.h (PlumeTestSupport) so these
-// tests do not depend on the dataset reader being built; switch to that target
-// once it is stable.
+// Glyph-specific helpers for the Plume::Rendering tests: projection of world
+// points in double precision, where a drawn glyph ends (MeasureTip), a PNG
+// dump for debugging, and PLUME_CHECK. Windows, float read-back, image metrics
+// and GL error checks come from PlumeTestSupport (Testing/Support).
 #ifndef plumeGlyphTestUtil_h
 #define plumeGlyphTestUtil_h
 
+#include "plumeTestSupport.h"
+
 #include "vtkCamera.h"
-#include "vtkFloatArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkPNGWriter.h"
-#include "vtkWindowToImageFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSmartPointer.h"
-#include "vtk_glew.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 namespace plumetest
 {
-inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
-{
-  auto window = vtkSmartPointer<vtkRenderWindow>::New();
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(width, height);
-  return window;
-}
+using plume::test::FloatImage;
 
-struct FloatImage
-{
-  int Width = 0;
-  int Height = 0;
-  std::vector<float> RGBA;
-  std::vector<float> Depth;
-  const float* Pixel(int x, int y) const
-  {
-    return &this->RGBA[4 * (static_cast<size_t>(y) * this->Width + x)];
-  }
-};
-
-inline FloatImage ReadBack(vtkRenderWindow* window, bool render = true)
-{
-  if (render)
-  {
-    window->Render();
-  }
-  FloatImage image;
-  const int* size = window->GetSize();
-  image.Width = size[0];
-  image.Height = size[1];
-  vtkNew<vtkFloatArray> rgba;
-  window->GetRGBAPixelData(0, 0, image.Width - 1, image.Height - 1, 0, rgba, 0);
-  image.RGBA.assign(
-    rgba->GetPointer(0), rgba->GetPointer(0) + 4 * static_cast<size_t>(image.Width) * image.Height);
-  image.Depth.resize(static_cast<size_t>(image.Width) * image.Height);
-  window->GetZbufferData(0, 0, image.Width - 1, image.Height - 1, image.Depth.data());
-  return image;
-}
-
-inline bool HasNonFinite(const FloatImage& image)
-{
-  for (float v : image.RGBA)
-  {
-    if (!std::isfinite(v))
-    {
-      return true;
-    }
-  }
-  for (float v : image.Depth)
-  {
-    if (!std::isfinite(v))
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
+/** True if the pixel's RGB differs from `bg` by more than `tol` in some channel. */
 inline bool IsForeground(const FloatImage& image, int x, int y, const double bg[3], double tol)
 {
   const float* p = image.Pixel(x, y);
   return std::fabs(p[0] - bg[0]) > tol || std::fabs(p[1] - bg[1]) > tol ||
     std::fabs(p[2] - bg[2]) > tol;
-}
-
-inline size_t CountForeground(const FloatImage& image, const double bg[3], double tol = 1.0 / 255)
-{
-  size_t count = 0;
-  for (int y = 0; y < image.Height; ++y)
-  {
-    for (int x = 0; x < image.Width; ++x)
-    {
-      count += IsForeground(image, x, y, bg, tol) ? 1 : 0;
-    }
-  }
-  return count;
-}
-
-/** RMS and max absolute difference of RGB. */
-inline void Compare(const FloatImage& a, const FloatImage& b, double& rms, double& maxDiff)
-{
-  rms = maxDiff = 0;
-  if (a.Width != b.Width || a.Height != b.Height)
-  {
-    rms = maxDiff = HUGE_VAL;
-    return;
-  }
-  double sum = 0;
-  const size_t n = static_cast<size_t>(a.Width) * a.Height;
-  for (size_t p = 0; p < n; ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double d = std::fabs(double(a.RGBA[4 * p + c]) - double(b.RGBA[4 * p + c]));
-      sum += d * d;
-      maxDiff = std::max(maxDiff, std::isnan(d) ? HUGE_VAL : d);
-    }
-  }
-  rms = std::sqrt(sum / (3.0 * n));
-}
-
-inline std::string GLErrors(vtkRenderWindow* window)
-{
-  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-  if (!gl)
-  {
-    return "not an OpenGL render window";
-  }
-  gl->MakeCurrent();
-  std::ostringstream out;
-  for (int i = 0; i < 16; ++i)
-  {
-    const GLenum e = glGetError();
-    if (e == GL_NO_ERROR)
-    {
-      break;
-    }
-    out << "GL error 0x" << std::hex << e << std::dec << " ";
-  }
-  return out.str();
 }
 
 /** Write the window to $PLUME_GLYPH_DUMP/<name>.png when that variable is set (debugging aid). */
