@@ -10,6 +10,7 @@ const std::map<std::string, RepresentationBuilder>& Representations()
   static const std::map<std::string, RepresentationBuilder> builders = [] {
     std::map<std::string, RepresentationBuilder> b;
     RegisterCoreRepresentations(b); // glyphs, surface, contour, outline, sphere
+    RegisterVolumeRepresentations(b); // volume
     return b;
   }();
   return builders;

@@ -52,6 +52,7 @@ const std::map<std::string, RepresentationBuilder>& Representations();
 
 // Each file of builders adds its types (plumeRepresentationRegistry.cxx calls these).
 void RegisterCoreRepresentations(std::map<std::string, RepresentationBuilder>& builders);
+void RegisterVolumeRepresentations(std::map<std::string, RepresentationBuilder>& builders);
 
 struct SceneOptions
 {

@@ -24,6 +24,12 @@ vtkTextureObject* vtkPlumeOpaqueDepthTexture::GetTextureObject()
 
 void vtkPlumeOpaqueDepthTexture::ReleaseGraphicsResources(vtkWindow* window)
 {
+  if (this->ResolveFramebuffer && this->Texture->GetContext())
+  {
+    this->Texture->GetContext()->MakeCurrent();
+    glDeleteFramebuffers(1, &this->ResolveFramebuffer);
+  }
+  this->ResolveFramebuffer = 0;
   this->Texture->ReleaseGraphicsResources(window);
   this->Size[0] = this->Size[1] = 0;
 }
@@ -51,33 +57,57 @@ bool vtkPlumeOpaqueDepthTexture::Capture(vtkRenderer* renderer)
   // read from the framebuffer VTK is drawing into
   state->PushReadFramebufferBinding();
   state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
-  GLint samples = 0;
+  GLint samples = 0, componentType = 0, depthBits = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
-  bool ok = samples == 0;
-  if (!ok)
+  const GLenum attachment = drawBinding ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &componentType);
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+  // same depth format as the source, so that a (multisample-resolving) blit is allowed
+  const int format = componentType == GL_FLOAT ? vtkTextureObject::Float32
+    : depthBits == 16                          ? vtkTextureObject::Fixed16
+    : depthBits == 32                          ? vtkTextureObject::Fixed32
+                                               : vtkTextureObject::Fixed24;
+  bool ok = true;
+  if (this->Texture->GetContext() != window || !this->Texture->GetHandle() ||
+    this->Size[0] != width || this->Size[1] != height || this->Format != format)
   {
-    this->LastError = "the framebuffer is multisampled; its depth cannot be copied";
-  }
-  else
-  {
-    if (this->Texture->GetContext() != window || !this->Texture->GetHandle() ||
-      this->Size[0] != width || this->Size[1] != height)
+    this->Texture->SetContext(window);
+    this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    ok = this->Texture->AllocateDepth(width, height, format);
+    this->Format = format;
+    if (!ok)
     {
-      this->Texture->SetContext(window);
-      this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
-      this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
-      this->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
-      this->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-      ok = this->Texture->AllocateDepth(width, height, vtkTextureObject::Float32);
-      if (!ok)
-      {
-        this->LastError = "could not allocate the depth texture";
-      }
+      this->LastError = "could not allocate the depth texture";
     }
-    if (ok)
+  }
+  if (ok && samples == 0)
+  {
+    this->Texture->CopyFromFrameBuffer(x, y, 0, 0, width, height);
+    this->Texture->Deactivate();
+  }
+  else if (ok)
+  {
+    // multisampled: resolve by blitting the depth into a framebuffer around the texture
+    if (!this->ResolveFramebuffer)
     {
-      this->Texture->CopyFromFrameBuffer(x, y, 0, 0, width, height);
-      this->Texture->Deactivate();
+      glGenFramebuffers(1, &this->ResolveFramebuffer);
+    }
+    state->PushDrawFramebufferBinding();
+    state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->ResolveFramebuffer);
+    glFramebufferTexture2D(
+      GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, this->Texture->GetHandle(), 0);
+    glDrawBuffer(GL_NONE);
+    glBlitFramebuffer(x, y, x + width, y + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    state->PopDrawFramebufferBinding();
+    if (glGetError() != GL_NO_ERROR)
+    {
+      ok = false;
+      this->LastError = "could not resolve the multisampled depth buffer";
     }
   }
   state->PopReadFramebufferBinding();

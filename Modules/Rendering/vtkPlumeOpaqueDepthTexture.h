@@ -6,7 +6,7 @@
  * smoke sheets) call Capture() at the start of their Render(), before they
  * draw anything: it copies the depth buffer of the renderer's viewport from
  * the framebuffer VTK is drawing into (its offscreen render framebuffer or
- * the default one) into a GL_DEPTH_COMPONENT32F 2D texture of the viewport's
+ * the default one) into a 2D depth texture of the viewport's
  * size (nearest filtering). The texture is reallocated only when the
  * viewport size changes.
  *
@@ -18,9 +18,11 @@
  * @endcode
  * and turn d into a ray parameter by unprojecting (ndc.xy, 2d - 1).
  *
- * Multisampled framebuffers cannot be copied from; then Capture() returns
- * false, GetLastError() says so and callers should behave as if nothing
- * opaque were in the scene (Plume's windows have no MSAA).
+ * The texture has the depth format of the source (24-bit fixed, 32-bit float, ...).
+ * A multisampled framebuffer (VTK's default windows have 8 samples) is
+ * resolved by a depth blit (one sample per pixel); if even that fails,
+ * Capture() returns false, GetLastError() says why and callers should behave
+ * as if nothing opaque were in the scene.
  */
 #ifndef vtkPlumeOpaqueDepthTexture_h
 #define vtkPlumeOpaqueDepthTexture_h
@@ -64,6 +66,8 @@ protected:
   vtkSmartPointer<vtkTextureObject> Texture;
   int Origin[2] = { 0, 0 };
   int Size[2] = { 0, 0 };
+  int Format = -1;
+  unsigned int ResolveFramebuffer = 0; // GL name, for multisampled sources
   std::string LastError;
 
 private:

@@ -1,7 +1,7 @@
 // Geometry cases against vtkPlumeVolumeReference: a rotated, translated and
 // anisotropically spaced volume (with a non-zero extent start and a direction
 // matrix), the camera inside the volume, an opaque sphere inside the smoke
-// (rays must stop at its depth), a volume crossing the near plane, and data far
+// (rays must stop at its depth; also in a multisampled window), a volume crossing the near plane, and data far
 // from the origin (1e6).
 #include "plumeVolumeTestUtil.h"
 
@@ -63,6 +63,18 @@ int TestVolumeGeometry(int, char*[])
     s.Renderer->AddActor(actor);
     s.Renderer->ResetCamera();
     failures += Check("opaque sphere inside the smoke", CompareWithReference(s, vtkPlumeVolumeReference::COMPOSITE), 0.005, 0.05);
+    // the same in a multisampled window (VTK's default): the depth is resolved by a blit
+    {
+      Scene m = MakeScene(SmokeField(48), 200, 160);
+      m.Window->SetMultiSamples(8);
+      vtkNew<vtkActor> msActor;
+      msActor->SetMapper(pm);
+      msActor->GetProperty()->SetColor(0.9, 0.3, 0.3);
+      m.Renderer->AddActor(msActor);
+      m.Renderer->ResetCamera();
+      // antialiased sphere edges mix sphere and smoke: allow a larger max there
+      failures += Check("opaque sphere, 8x MSAA window", CompareWithReference(m, vtkPlumeVolumeReference::COMPOSITE), 0.006, 0.3);
+    }
     // the same with the depth ignored must be measurably wrong (the test can fail)
     s.Mapper->UseOpaqueDepthOff();
     const Result wrong = CompareWithReference(s, vtkPlumeVolumeReference::COMPOSITE);

@@ -1,0 +1,146 @@
+// The `volume` representation: a vtkPlumeVolumeMapper on a vtkVolume, with
+// the transfer functions and modes of Documentation/SceneFormat.md.
+#include "plumeParameters.h"
+#include "plumeRepresentationHelpers.h"
+#include "plumeScene.h"
+#include "plumeSceneError.h"
+
+#include "vtkPlumeVolumeMapper.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <cmath>
+
+namespace plume
+{
+namespace
+{
+void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
+{
+  const std::string dataset = p.String("dataset", "");
+  const std::string arrayName = p.String("array", "");
+  const int component = p.Integer("component", -1, -1, 1 << 20);
+  const std::string mode = p.Choice("mode", "composite", { "composite", "mip", "isosurface", "smoke" });
+  Coloring coloring;
+  coloring.Read(p, { 1, 1, 1 });
+  const bool solid = p.Boolean("solid_color", false);
+  const nlohmann::json* opacityPoints = p.Raw("opacity");
+  const double unitDistance = p.Number("opacity_unit_distance", 0.0, 0.0);
+  const double sampleDistance = p.Number("sample_distance", 0.5, 1e-3, 100.0);
+  const bool jitter = p.Boolean("jitter", true);
+  const double threshold = p.Number("opacity_threshold", 0.995, 0.5, 1.0);
+  const bool hasIso = p.Has("iso_value");
+  const double iso = p.Number("iso_value", 0.0);
+  const double ambient = p.Number("ambient", mode == "smoke" ? 0.3 : 0.15, 0.0, 10.0);
+  const double diffuse = p.Number("diffuse", mode == "smoke" ? 1.0 : 0.75, 0.0, 10.0);
+  const double specular = p.Number("specular", 0.3, 0.0, 10.0);
+  const double specularPower = p.Number("specular_power", 20.0, 1.0, 1000.0);
+  const double shadowDistance = p.Number("shadow_sample_distance", 1.0, 0.05, 100.0);
+  const bool opaqueDepth = p.Boolean("opaque_depth", true);
+  p.RejectUnknown();
+  if (dataset.empty())
+  {
+    throw SceneError(p.Where() + ": 'dataset' is required");
+  }
+
+  vtkImageData* image = datasets.GetImage(dataset, p.Where());
+  vtkDataArray* array = RequirePointArray(image, arrayName, 0, p.Where(), dataset);
+  if (component >= array->GetNumberOfComponents())
+  {
+    throw SceneError(p.Where() + ": 'component' " + std::to_string(component) + " but array '" +
+      (array->GetName() ? array->GetName() : "") + "' has " +
+      std::to_string(array->GetNumberOfComponents()) + " component(s)");
+  }
+  const int rangeComponent = component >= 0 ? component : (array->GetNumberOfComponents() == 1 ? 0 : -1);
+  auto table = coloring.Table(array, rangeComponent);
+  const double* range = table->GetRange();
+
+  vtkNew<vtkVolume> volume;
+  vtkVolumeProperty* property = volume->GetProperty();
+  vtkNew<vtkColorTransferFunction> color;
+  for (int i = 0; i < 64; ++i)
+  {
+    const double v = range[0] + (range[1] - range[0]) * i / 63.0;
+    double rgb[3] = { coloring.Color[0], coloring.Color[1], coloring.Color[2] };
+    if (!solid)
+    {
+      table->GetColor(v, rgb);
+    }
+    color->AddRGBPoint(v, rgb[0], rgb[1], rgb[2]);
+  }
+  vtkNew<vtkPiecewiseFunction> opacity;
+  if (opacityPoints)
+  {
+    if (!opacityPoints->is_array() || opacityPoints->empty())
+    {
+      throw SceneError(p.Where() + ": 'opacity' must be a non-empty list of [value, opacity] pairs");
+    }
+    for (const auto& point : *opacityPoints)
+    {
+      if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number() ||
+        !std::isfinite(point[0].get<double>()) || !(point[1].get<double>() >= 0 && point[1].get<double>() <= 1))
+      {
+        throw SceneError(p.Where() + ": 'opacity' entries must be [finite value, opacity in 0..1], got " +
+          point.dump());
+      }
+      opacity->AddPoint(point[0].get<double>(), point[1].get<double>());
+    }
+  }
+  else
+  {
+    opacity->AddPoint(range[0], 0.0);
+    opacity->AddPoint(range[1], 1.0);
+  }
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  double spacing[3];
+  image->GetSpacing(spacing);
+  property->SetScalarOpacityUnitDistance(
+    unitDistance > 0 ? unitDistance : (std::fabs(spacing[0]) + std::fabs(spacing[1]) + std::fabs(spacing[2])) / 3);
+  property->SetInterpolationTypeToLinear();
+  property->SetAmbient(ambient);
+  property->SetDiffuse(diffuse);
+  property->SetSpecular(specular);
+  property->SetSpecularPower(specularPower);
+
+  vtkNew<vtkPlumeVolumeMapper> mapper;
+  mapper->SetInputData(image);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectScalarArray(array->GetName());
+  mapper->SetScalarComponent(component);
+  mapper->SetSampleDistance(sampleDistance);
+  mapper->SetJitter(jitter);
+  mapper->SetOpacityThreshold(threshold);
+  mapper->SetShadowSampleDistance(shadowDistance);
+  mapper->SetUseOpaqueDepth(opaqueDepth);
+  if (mode == "mip")
+  {
+    mapper->SetBlendModeToMaximumIntensity();
+  }
+  else if (mode == "isosurface")
+  {
+    mapper->SetBlendModeToIsoSurface();
+    mapper->SetIsoValue(hasIso ? iso : 0.5 * (range[0] + range[1]));
+  }
+  else if (mode == "smoke")
+  {
+    mapper->SmokeOn();
+  }
+  volume->SetMapper(mapper);
+  renderer->AddVolume(volume);
+}
+}
+
+void RegisterVolumeRepresentations(std::map<std::string, RepresentationBuilder>& builders)
+{
+  builders["volume"] = BuildVolume;
+}
+}
