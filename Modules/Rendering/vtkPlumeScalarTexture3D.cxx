@@ -208,6 +208,44 @@ bool vtkPlumeScalarTexture3D::Update(
     this->UploadedImage = nullptr;
     return false;
   }
+  // min/max per block of BlockSize voxels (nodes I·B .. (I+1)·B)
+  this->BlockRanges.clear();
+  if (this->BlockSize > 0)
+  {
+    const int b = this->BlockSize;
+    for (int a = 0; a < 3; ++a)
+    {
+      this->BlockDimensions[a] = std::max(1, (dims[a] - 1 + b - 1) / b);
+    }
+    const size_t blocks =
+      static_cast<size_t>(this->BlockDimensions[0]) * this->BlockDimensions[1] * this->BlockDimensions[2];
+    this->BlockRanges.resize(2 * blocks);
+    for (int bk = 0; bk < this->BlockDimensions[2]; ++bk)
+    {
+      for (int bj = 0; bj < this->BlockDimensions[1]; ++bj)
+      {
+        for (int bi = 0; bi < this->BlockDimensions[0]; ++bi)
+        {
+          float mn = 1.0f, mx = 0.0f;
+          for (int k = bk * b; k <= std::min((bk + 1) * b, dims[2] - 1); ++k)
+          {
+            for (int j = bj * b; j <= std::min((bj + 1) * b, dims[1] - 1); ++j)
+            {
+              const float* row = &u[static_cast<size_t>(dims[0]) * (j + static_cast<size_t>(dims[1]) * k)];
+              for (int i = bi * b; i <= std::min((bi + 1) * b, dims[0] - 1); ++i)
+              {
+                mn = std::min(mn, row[i]);
+                mx = std::max(mx, row[i]);
+              }
+            }
+          }
+          const size_t id = bi + static_cast<size_t>(this->BlockDimensions[0]) * (bj + static_cast<size_t>(this->BlockDimensions[1]) * bk);
+          this->BlockRanges[2 * id] = mn;
+          this->BlockRanges[2 * id + 1] = mx;
+        }
+      }
+    }
+  }
   this->ScalarRange[0] = lo;
   this->ScalarRange[1] = hi;
   std::copy(dims, dims + 3, this->Dimensions);

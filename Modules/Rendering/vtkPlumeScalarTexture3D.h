@@ -39,6 +39,7 @@
 #include "vtkSmartPointer.h" // For members
 
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkDataArray;
 class vtkImageData;
@@ -70,6 +71,23 @@ public:
   /** Grid dimensions of the uploaded texture. */
   const int* GetDimensions() const { return this->Dimensions; }
 
+  ///@{
+  /**
+   * Block size (in voxels) of the min/max summary computed at each upload, for
+   * empty-space skipping. Block (I, J, K) covers the nodes I·B .. (I+1)·B along
+   * x (likewise y, z; clamped to the grid), i.e. every node a trilinear sample
+   * inside the block can touch. 0 = no summary. Default 8; takes effect at the next upload.
+   */
+  vtkSetClampMacro(BlockSize, int, 0, 1024);
+  vtkGetMacro(BlockSize, int);
+  ///@}
+
+  /** Number of blocks along each axis (ceil((dims - 1) / B), at least 1). */
+  const int* GetBlockDimensions() const { return this->BlockDimensions; }
+
+  /** Per block, the min and max of the normalised values u (2 floats per block, x fastest). */
+  const std::vector<float>& GetBlockRanges() const { return this->BlockRanges; }
+
   /** Number of values that were NaN or infinite in the last upload. */
   vtkGetMacro(NonFiniteCount, long long);
 
@@ -91,6 +109,9 @@ protected:
   int Dimensions[3] = { 0, 0, 0 };
   long long NonFiniteCount = 0;
   int UploadCount = 0;
+  int BlockSize = 8;
+  int BlockDimensions[3] = { 0, 0, 0 };
+  std::vector<float> BlockRanges;
   std::string LastError;
 
   // what the texture was built from

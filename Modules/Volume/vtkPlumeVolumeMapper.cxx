@@ -86,6 +86,10 @@ public:
   vtkNew<vtkPlumeScalarTexture3D> Scalars;
   vtkNew<vtkPlumeOpaqueDepthTexture> Depth;
   vtkNew<vtkTextureObject> Table;
+  std::vector<float> TableAlpha;        // extinction column of the table
+  vtkNew<vtkTextureObject> Occupancy;   // 1 byte per 8^3 block: 0 = transparent
+  int OccupancyUpload = -1;
+  int OccupancyTable = -1;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
   std::map<std::string, vtkShaderProgram*> Programs;
   vtkOpenGLRenderWindow* Window = nullptr;
@@ -101,6 +105,8 @@ public:
     this->Scalars->ReleaseGraphicsResources(window);
     this->Depth->ReleaseGraphicsResources(window);
     this->Table->ReleaseGraphicsResources(window);
+    this->Occupancy->ReleaseGraphicsResources(window);
+    this->OccupancyUpload = this->OccupancyTable = -1;
     this->EmptyVAO->ReleaseGraphicsResources();
     this->Programs.clear(); // owned by the window's shader cache
     this->TableProperty = nullptr;
@@ -236,6 +242,8 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   const vtkMTimeType tfTime = std::max({ property->GetMTime(), color->GetMTime(),
     opacity->GetMTime(), gray ? gray->GetMTime() : vtkMTimeType(0) });
+  const double unit = property->GetScalarOpacityUnitDistance(0);
+  const double invUnit = unit > 0 ? 1.0 / unit : 1.0;
   if (impl.TableProperty != property || impl.TableTime != tfTime ||
     impl.TableRange[0] != range[0] || impl.TableRange[1] != range[1] || !impl.Table->GetHandle())
   {
@@ -257,7 +265,9 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       {
         table[4 * i + c] = static_cast<float>(std::isfinite(rgb[c]) ? rgb[c] : 0.0);
       }
-      table[4 * i + 3] = static_cast<float>(std::isfinite(a) ? std::min(1.0, std::max(0.0, a)) : 0.0);
+      // alpha channel: extinction per world unit (no log per sample in the shader)
+      const double alpha = std::isfinite(a) ? std::min(1.0 - 1e-6, std::max(0.0, a)) : 0.0;
+      table[4 * i + 3] = static_cast<float>(-std::log(1.0 - alpha) * invUnit);
     }
     impl.Table->SetContext(renWin);
     impl.Table->SetWrapS(vtkTextureObject::ClampToEdge);
@@ -269,11 +279,60 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       vtkErrorMacro(<< "could not create the transfer-function texture");
       return;
     }
+    impl.TableAlpha.resize(TableSize);
+    for (int i = 0; i < TableSize; ++i)
+    {
+      impl.TableAlpha[i] = table[4 * i + 3];
+    }
     impl.TableProperty = property;
     impl.TableTime = tfTime;
     impl.TableRange[0] = range[0];
     impl.TableRange[1] = range[1];
     ++this->TableCount;
+  }
+
+  // ---- empty-space skipping: blocks whose value range has zero opacity everywhere
+  const bool skipping = this->EmptySpaceSkipping && this->BlendMode == COMPOSITE_BLEND;
+  if (skipping && (impl.OccupancyUpload != impl.Scalars->GetUploadCount() ||
+                    impl.OccupancyTable != this->TableCount || !impl.Occupancy->GetHandle()))
+  {
+    // prefix count of table entries with non-zero extinction
+    std::vector<int> prefix(TableSize + 1, 0);
+    for (int i = 0; i < TableSize; ++i)
+    {
+      prefix[i + 1] = prefix[i] + (impl.TableAlpha[i] > 0.0f ? 1 : 0);
+    }
+    const int* bd = impl.Scalars->GetBlockDimensions();
+    const std::vector<float>& ranges = impl.Scalars->GetBlockRanges();
+    std::vector<unsigned char> occupied(ranges.size() / 2);
+    size_t empty = 0;
+    for (size_t b = 0; b < occupied.size(); ++b)
+    {
+      // table entries touched by linear interpolation of u in [min, max]
+      const int i0 = std::max(0, static_cast<int>(std::floor(ranges[2 * b] * (TableSize - 1))));
+      const int i1 = std::min(TableSize - 1, static_cast<int>(std::ceil(ranges[2 * b + 1] * (TableSize - 1))));
+      occupied[b] = prefix[i1 + 1] - prefix[i0] > 0 ? 255 : 0;
+      empty += occupied[b] ? 0 : 1;
+    }
+    impl.Occupancy->SetContext(renWin);
+    impl.Occupancy->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.Occupancy->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.Occupancy->SetWrapR(vtkTextureObject::ClampToEdge);
+    impl.Occupancy->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.Occupancy->SetMagnificationFilter(vtkTextureObject::Nearest);
+    if (occupied.empty() ||
+      !impl.Occupancy->Create3DFromRaw(bd[0], bd[1], bd[2], 1, VTK_UNSIGNED_CHAR, occupied.data()))
+    {
+      vtkErrorMacro(<< "could not create the empty-space texture");
+      return;
+    }
+    impl.OccupancyUpload = impl.Scalars->GetUploadCount();
+    impl.OccupancyTable = this->TableCount;
+    this->EmptyBlockFraction = occupied.empty() ? 0.0 : double(empty) / occupied.size();
+  }
+  if (!skipping)
+  {
+    this->EmptyBlockFraction = 0.0;
   }
 
   // ---- opaque depth
@@ -423,6 +482,10 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     defines << "#define PLUME_DEPTH\n";
   }
+  if (skipping)
+  {
+    defines << "#define PLUME_SKIP\n";
+  }
   if (lit)
   {
     defines << "#define PLUME_LIGHTS " << nLights << "\n";
@@ -472,8 +535,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                             double(dims[2]) * dims[2]) + 2.0;
   const int maxSteps = static_cast<int>(std::min(16384.0, std::ceil(diagonal / this->SampleDistance) + 2));
   program->SetUniformi("MaxSteps", maxSteps);
-  const double unit = property->GetScalarOpacityUnitDistance(0);
-  program->SetUniformf("InvUnitDistance", static_cast<float>(unit > 0 ? 1.0 / unit : 1.0));
+  program->SetUniformf("UnitDistance", static_cast<float>(1.0 / invUnit));
   program->SetUniformf("OpacityThreshold", static_cast<float>(this->OpacityThreshold));
   program->SetUniformf("TFSize", static_cast<float>(TableSize));
   if (this->Jitter)
@@ -547,6 +609,15 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl.Depth->GetTextureObject()->Activate();
     program->SetUniformi("OpaqueDepth", impl.Depth->GetTextureObject()->GetTextureUnit());
   }
+  if (skipping)
+  {
+    impl.Occupancy->Activate();
+    program->SetUniformi("Occupancy", impl.Occupancy->GetTextureUnit());
+    program->SetUniformf("BlockSize", static_cast<float>(impl.Scalars->GetBlockSize()));
+    const int* bd = impl.Scalars->GetBlockDimensions();
+    const float fbd[3] = { float(bd[0]), float(bd[1]), float(bd[2]) };
+    program->SetUniform3f("BlockDims", fbd);
+  }
 
   // ---- state: back faces only (front faces if the transform mirrors), no depth test/write,
   // premultiplied blending, depth clamp so the far plane never clips the box
@@ -580,6 +651,10 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     impl.Depth->GetTextureObject()->Deactivate();
   }
+  if (skipping)
+  {
+    impl.Occupancy->Deactivate();
+  }
   ++impl.Frame;
 }
 
@@ -602,4 +677,5 @@ void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Smoke: " << this->Smoke << "\n";
   os << indent << "ShadowSampleDistance: " << this->ShadowSampleDistance << "\n";
   os << indent << "UseOpaqueDepth: " << this->UseOpaqueDepth << "\n";
+  os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
 }

@@ -50,7 +50,8 @@
  * Lights: the renderer's switched-on lights (up to 4), each treated as
  * directional from its focal point towards its position; colour × intensity.
  *
- * Early ray termination when the accumulated opacity reaches OpacityThreshold.
+ * Early ray termination when the accumulated opacity reaches OpacityThreshold;
+ * empty-space skipping over 8³ blocks whose values are all transparent.
  * Only the features in use are compiled (mode, jitter, depth, light count are
  * preprocessor switches).
  *
@@ -138,6 +139,22 @@ public:
   vtkBooleanMacro(UseOpaqueDepth, bool);
   ///@}
 
+  ///@{
+  /**
+   * Empty-space skipping (composite and smoke): blocks of 8³ voxels whose value
+   * range maps to zero opacity are jumped over. The result is the same as
+   * without skipping (a skipped sample would have contributed exactly
+   * nothing); the block summary is rebuilt when the data or the transfer
+   * functions change. Default on.
+   */
+  vtkSetMacro(EmptySpaceSkipping, bool);
+  vtkGetMacro(EmptySpaceSkipping, bool);
+  vtkBooleanMacro(EmptySpaceSkipping, bool);
+  ///@}
+
+  /** Fraction of the 8³ blocks classified empty at the last render (0 when skipping is off). */
+  vtkGetMacro(EmptyBlockFraction, double);
+
   /** Number of 3D-texture uploads so far (tests check re-renders do not upload). */
   int GetUploadCount();
 
@@ -165,6 +182,8 @@ protected:
   bool Smoke = false;
   double ShadowSampleDistance = 1.0;
   bool UseOpaqueDepth = true;
+  bool EmptySpaceSkipping = true;
+  double EmptyBlockFraction = 0.0;
   int TableCount = 0;
 
 private:

@@ -48,7 +48,7 @@ int Grid(bool quick)
 
 std::vector<double> Steps(bool quick)
 {
-  return quick ? std::vector<double>{ 1.0 } : std::vector<double>{ 0.5, 1.0, 2.0 };
+  return quick ? std::vector<double>{ 1.0 } : std::vector<double>{ 0.5, 1.0, 2.0, 4.0 };
 }
 
 const char* Fields[] = { "smoke", "dense" };
@@ -172,12 +172,12 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   SetCamera(renderer);
 
   const double spacing = 1.0 / (n - 1);
+  vtkNew<vtkPlumeVolumeMapper> ours;
   if (kind == "ours")
   {
-    vtkNew<vtkPlumeVolumeMapper> mapper;
-    mapper->SetInputData(image);
-    mapper->SetSampleDistance(step);
-    volume->SetMapper(mapper);
+    ours->SetInputData(image);
+    ours->SetSampleDistance(step);
+    volume->SetMapper(ours);
   }
   else if (kind == "gpu")
   {
@@ -228,7 +228,8 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
       worst = std::max(worst, d);
     }
   }
-  nlohmann::json result = { { "render_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() } };
+  nlohmann::json result = { { "render_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() },
+    { "empty_block_fraction", kind == "ours" ? ours->GetEmptyBlockFraction() : 0.0 } };
   if (haveReference)
   {
     result["rms_error"] = std::sqrt(sum / (3.0 * size * size));
@@ -290,7 +291,8 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
                 s + " voxel, peer step " + ps + " voxel" },
             { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o },
             { "ours_step", ourStep }, { "peer_step", peerStep },
-            { "peak_rss_mb", ours->second["peak_rss_mb"] }, { "peer_peak_rss_mb", other->second["peak_rss_mb"] } };
+            { "peak_rss_mb", ours->second["peak_rss_mb"] }, { "peer_peak_rss_mb", other->second["peak_rss_mb"] },
+            { "empty_block_fraction", ours->second["empty_block_fraction"] } };
           if (ours->second.contains("rms_error") && other->second.contains("rms_error"))
           {
             line["error"] = ours->second["rms_error"];
@@ -300,6 +302,56 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
           }
           lines.push_back(line);
         }
+      }
+    }
+  }
+  // headline per field and peer: every peer configuration against our fastest
+  // configuration whose error is not larger than that peer configuration's
+  for (const char* field : Fields)
+  {
+    for (const std::string peer : { "gpu", "fixed" })
+    {
+      for (double peerStep : Steps(quick))
+      {
+        char ps[32];
+        std::snprintf(ps, sizeof(ps), "%g", peerStep);
+        const auto other = results.find(peer + ":" + field + ":" + ps);
+        if (other == results.end() || !other->second.contains("rms_error"))
+        {
+          continue;
+        }
+        const double peerError = other->second["rms_error"].get<double>();
+        const nlohmann::json* best = nullptr;
+        double bestStep = 0;
+        for (double ourStep : Steps(quick))
+        {
+          char s[32];
+          std::snprintf(s, sizeof(s), "%g", ourStep);
+          const auto ours = results.find(std::string("ours:") + field + ":" + s);
+          if (ours == results.end() || !ours->second.contains("rms_error") ||
+            ours->second["rms_error"].get<double>() > peerError)
+          {
+            continue;
+          }
+          if (!best || ours->second["render_s"].get<double>() < (*best)["render_s"].get<double>())
+          {
+            best = &ours->second;
+            bestStep = ourStep;
+          }
+        }
+        if (!best)
+        {
+          continue;
+        }
+        const double o = (*best)["render_s"].get<double>();
+        const double p = other->second["render_s"].get<double>();
+        lines.push_back({ { "bench", "volume" },
+          { "case", std::string(field) + " " + std::to_string(n) + "^3 -> " + std::to_string(size) +
+              "^2, unshaded, equal or lower error: our fastest vs peer step " + ps + " voxel" },
+          { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o },
+          { "ours_step", bestStep }, { "peer_step", peerStep }, { "error", (*best)["rms_error"] },
+          { "peer_error", peerError }, { "peak_rss_mb", (*best)["peak_rss_mb"] },
+          { "empty_block_fraction", (*best)["empty_block_fraction"] } });
       }
     }
   }

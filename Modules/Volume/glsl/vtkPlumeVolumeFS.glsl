@@ -7,12 +7,13 @@
 //   PLUME_COMPOSITE | PLUME_MIP | PLUME_ISO | PLUME_SMOKE   the mode
 //   PLUME_JITTER       jittered first segment
 //   PLUME_DEPTH        stop at the opaque scene's depth
+//   PLUME_SKIP         empty-space skipping over transparent blocks
 //   PLUME_LIGHTS n     number of lights (ISO, SMOKE)
 
 //PLUME::Defines
 
 uniform sampler3D Volume;           // normalised scalar u in [0, 1]
-uniform sampler2D TransferFunction; // 1 row: rgb = colour, a = scalar opacity, over u
+uniform sampler2D TransferFunction; // 1 row: rgb = colour, a = extinction per world unit, over u
 uniform float TFSize;
 uniform vec3 Dims;
 uniform mat4 ClipToIndex;
@@ -23,13 +24,18 @@ uniform vec3 BoxMax;
 uniform mat3 IndexToWorld;          // linear part of index -> world
 uniform float StepIndex;            // sample distance, voxels
 uniform int MaxSteps;
-uniform float InvUnitDistance;      // 1 / scalar opacity unit distance (world)
+uniform float UnitDistance;         // scalar opacity unit distance (world)
 uniform float OpacityThreshold;
 #ifdef PLUME_DEPTH
 uniform sampler2D OpaqueDepth;
 #endif
 #ifdef PLUME_JITTER
 uniform int JitterSeed;
+#endif
+#ifdef PLUME_SKIP
+uniform sampler3D Occupancy;        // per block: 0 = every value in it is transparent
+uniform float BlockSize;            // voxels per block
+uniform vec3 BlockDims;            // blocks per axis
 #endif
 #ifdef PLUME_ISO
 uniform float IsoValue;             // normalised
@@ -63,10 +69,10 @@ vec4 transfer(float u)
   return texture(TransferFunction, vec2((u * (TFSize - 1.0) + 0.5) / TFSize, 0.5));
 }
 
-// extinction per world unit for scalar opacity a (per unit distance)
-float extinction(float a)
+// extinction per world unit at u (tabulated as -ln(1 - min(alpha, 1 - 1e-6)) / UnitDistance)
+float extinction(float u)
 {
-  return -log(1.0 - min(a, 0.999999)) * InvUnitDistance;
+  return transfer(u).a;
 }
 
 // [t0, t1] of the ray p + t d inside the box, clipped to [lo, hi]
@@ -123,7 +129,7 @@ float lightTransmittance(vec3 p, int l)
   float tau = 0.0;
   for (int k = 0; k < n; ++k)
   {
-    tau += extinction(transfer(sampleU(p + (float(k) + 0.5) * h * e)).a);
+    tau += extinction(sampleU(p + (float(k) + 0.5) * h * e));
     if (tau * h * LightWorldPerIndex[l] > 10.0)
     {
       return 0.0;
@@ -181,16 +187,43 @@ void main()
   float tHit = 0.0;
 #endif
 
+  // segment 0 is [t.x, segBase]; segment m >= 1 is [segBase + (m-1) dt, segBase + m dt], clipped to t.y
+  float segBase = t.x + first;
   float s0 = t.x;
-  float s1 = min(t.x + first, t.y);
+  float s1 = min(segBase, t.y);
+#ifdef PLUME_SKIP
+  float m = 0.0;
+#endif
   for (int i = 0; i <= MaxSteps + 1 && s0 < t.y; ++i)
   {
     float tm = 0.5 * (s0 + s1);
     vec3 p = p0 + tm * d;
+#ifdef PLUME_SKIP
+    ivec3 cell = clamp(ivec3(floor(p / BlockSize)), ivec3(0), ivec3(BlockDims) - 1);
+    if (texelFetch(Occupancy, cell, 0).r == 0.0)
+    {
+      // every sample whose midpoint lies in this block contributes nothing:
+      // go to the first segment whose midpoint is past the block's exit
+      vec3 lo = vec3(cell) * BlockSize;
+      vec3 hi = lo + BlockSize;
+      float te = t.y;
+      for (int a = 0; a < 3; ++a)
+      {
+        if (abs(d[a]) > 1e-30)
+        {
+          te = min(te, max((lo[a] - p0[a]) / d[a], (hi[a] - p0[a]) / d[a]));
+        }
+      }
+      m = max(m + 1.0, ceil((te - segBase) / dt + 0.5));
+      s0 = segBase + (m - 1.0) * dt;
+      s1 = min(s0 + dt, t.y);
+      continue;
+    }
+#endif
     float u = sampleU(p);
 #ifdef PLUME_COMPOSITE
     vec4 c = transfer(u);
-    float alpha = 1.0 - exp(-extinction(c.a) * (s1 - s0) * worldPerT);
+    float alpha = 1.0 - exp(-c.a * (s1 - s0) * worldPerT);
     dst.rgb += (1.0 - dst.a) * alpha * c.rgb;
     dst.a += (1.0 - dst.a) * alpha;
     if (dst.a >= OpacityThreshold)
@@ -200,7 +233,7 @@ void main()
 #endif
 #ifdef PLUME_SMOKE
     vec4 c = transfer(u);
-    float sigma = extinction(c.a);
+    float sigma = c.a;
     if (sigma > 0.0)
     {
       float alpha = 1.0 - exp(-sigma * (s1 - s0) * worldPerT);
@@ -248,6 +281,9 @@ void main()
 #endif
     s0 = s1;
     s1 = min(s0 + dt, t.y);
+#ifdef PLUME_SKIP
+    m += 1.0;
+#endif
   }
 
 #ifdef PLUME_MIP
@@ -256,7 +292,8 @@ void main()
     discard;
   }
   vec4 c = transfer(uMax);
-  dst = vec4(c.rgb * c.a, c.a);
+  float alpha = 1.0 - exp(-c.a * UnitDistance); // the scalar opacity
+  dst = vec4(c.rgb * alpha, alpha);
 #endif
 #ifdef PLUME_ISO
   if (!hit)

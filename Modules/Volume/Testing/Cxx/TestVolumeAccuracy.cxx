@@ -22,6 +22,20 @@ int TestVolumeAccuracy(int, char*[])
     failures += Check("composite, jitter, step 0.25", CompareWithReference(s, vtkPlumeVolumeReference::COMPOSITE), 0.004, 0.03);
   }
   {
+    // empty-space skipping must skip (the smoke field is mostly transparent)
+    // and change nothing: same image with and without it
+    Scene s = MakeScene(field, 200, 160);
+    const plume::test::FloatImage with = plume::test::ReadBack(s.Window);
+    const double emptyFraction = s.Mapper->GetEmptyBlockFraction();
+    s.Mapper->EmptySpaceSkippingOff();
+    const plume::test::FloatImage without = plume::test::ReadBack(s.Window);
+    const plume::test::ImageError e = plume::test::Compare(with, without);
+    const bool ok = emptyFraction > 0.3 && e.RMS < 1e-4 && e.Max <= 1.5 / 255;
+    std::printf("%-40s empty blocks %.0f%%, skip vs no skip RMS %.6f max %.4f%s\n", "empty-space skipping",
+      100 * emptyFraction, e.RMS, e.Max, ok ? "" : "  FAIL");
+    failures += ok ? 0 : 1;
+  }
+  {
     Scene s = MakeScene(field, 200, 160);
     s.Mapper->SetBlendModeToMaximumIntensity();
     failures += Check("maximum intensity", CompareWithReference(s, vtkPlumeVolumeReference::MAXIMUM_INTENSITY), 0.005, 0.05);
