@@ -100,7 +100,12 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
     return entry.Data;
   }
   Parameters p(entry.Spec, "datasets." + name);
-  const std::string source = p.Choice("source", "file", { "file", "vortex" });
+  const std::string source = p.Choice("source", "file", { "file", "vortex", "splat" });
+  if (source == "splat")
+  {
+    entry.Data = BuildSplatDataset(p, *this, name);
+    return entry.Data;
+  }
   if (source == "vortex")
   {
     vtkNew<vtkPlumeVortexSource> vortex;

@@ -54,6 +54,9 @@ const std::map<std::string, RepresentationBuilder>& Representations();
 void RegisterCoreRepresentations(std::map<std::string, RepresentationBuilder>& builders);
 void RegisterVolumeRepresentations(std::map<std::string, RepresentationBuilder>& builders);
 
+/** The dataset `"source": "splat"` (plumeSplatSource.cxx). */
+vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
+
 struct SceneOptions
 {
   int Width = 0;  // 0: from the scene's "size", else 800

@@ -14,6 +14,7 @@ const std::map<std::string, Benchmark>& Registry()
   static const std::map<std::string, Benchmark> registry = [] {
     std::map<std::string, Benchmark> r;
     RegisterGlyphs(r);
+    RegisterSplat(r);
     RegisterVolume(r);
     return r;
   }();

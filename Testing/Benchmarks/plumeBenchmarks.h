@@ -44,6 +44,7 @@ const std::map<std::string, Benchmark>& Registry();
 
 /** Benchmarks register themselves here (called once from Registry()). */
 void RegisterGlyphs(std::map<std::string, Benchmark>& registry);
+void RegisterSplat(std::map<std::string, Benchmark>& registry);
 void RegisterVolume(std::map<std::string, Benchmark>& registry);
 
 /** Seconds on a monotonic clock. */

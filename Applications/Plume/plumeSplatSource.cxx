@@ -1,0 +1,174 @@
+// The scene dataset `"source": "splat"`: a field splatted from flow lines
+// given in the scene (a list of points, a circle) or taken from another
+// dataset's polylines (e.g. a .vtp of streamlines), by
+// vtkPlumeGaussianSplatter (seed 002's flowline extrusion). The result is an
+// image with the splatted array ("velocity", "density" or "distance") and,
+// for velocity, "speed" = |v|, ready for the glyphs, contour or volume
+// representations. Documented in Documentation/SceneFormat.md.
+#include "plumeParameters.h"
+#include "plumeScene.h"
+#include "plumeSceneError.h"
+
+#include "vtkPlumeGaussianSplatter.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace plume
+{
+namespace
+{
+std::string Num(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// A list of [x, y, z] points, each finite.
+vtkSmartPointer<vtkPolyData> PolylineFromJson(const nlohmann::json& list, bool closed, const std::string& where)
+{
+  if (!list.is_array() || list.empty())
+  {
+    throw SceneError(where + ": 'points' must be a non-empty list of [x, y, z], got " + list.dump());
+  }
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  for (const auto& p : list)
+  {
+    if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number() ||
+      !std::isfinite(p[0].get<double>()) || !std::isfinite(p[1].get<double>()) || !std::isfinite(p[2].get<double>()))
+    {
+      throw SceneError(where + ": 'points' entries must be lists of 3 finite numbers, got " + p.dump());
+    }
+    pts->InsertNextPoint(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+  }
+  vtkNew<vtkCellArray> cells;
+  const vtkIdType n = pts->GetNumberOfPoints();
+  cells->InsertNextCell(closed && n > 1 ? n + 1 : n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    cells->InsertCellPoint(i);
+  }
+  if (closed && n > 1)
+  {
+    cells->InsertCellPoint(0);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(pts);
+  poly->SetLines(cells);
+  return poly;
+}
+}
+
+vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& datasets, const std::string& name)
+{
+  const std::string where = "datasets." + name;
+  const nlohmann::json* points = p.Raw("points");
+  const nlohmann::json* circle = p.Object("circle");
+  const std::string linesDataset = p.String("lines", "");
+  const bool closed = p.Boolean("closed", false);
+  const std::string mode = p.Choice("mode", "velocity", { "velocity", "density", "distance" });
+  const double sigma = p.Number("sigma", 0.1, 1e-12);
+  const double cutoff = p.Number("cutoff", 4.0, 0.5, 40.0);
+  const double scale = p.Number("scale", 1.0);
+  const bool integrate = p.Boolean("integrate", true);
+  const auto dims = p.Vector<3>("dimensions", { 32, 32, 32 });
+  const bool hasBounds = p.Has("bounds");
+  const auto bounds = p.Vector<6>("bounds", { 1, -1, 1, -1, 1, -1 });
+  p.RejectUnknown();
+  for (double d : dims)
+  {
+    if (d < 1 || d > 1024 || d != std::floor(d))
+    {
+      throw SceneError(where + ": 'dimensions' must be integers in [1, 1024], got " + Num(d));
+    }
+  }
+  if (hasBounds && !(bounds[0] < bounds[1] && bounds[2] < bounds[3] && bounds[4] < bounds[5]))
+  {
+    throw SceneError(where + ": 'bounds' must be [xmin, xmax, ymin, ymax, zmin, zmax] with min < max");
+  }
+  if (int(points != nullptr) + int(circle != nullptr) + int(!linesDataset.empty()) != 1)
+  {
+    throw SceneError(where + ": a splat source needs exactly one of 'points', 'circle' or 'lines'");
+  }
+
+  vtkSmartPointer<vtkPolyData> lines;
+  if (points)
+  {
+    lines = PolylineFromJson(*points, closed, where);
+  }
+  else if (circle)
+  {
+    Parameters c(*circle, where + ".circle");
+    const auto center = c.Vector<3>("center", { 0, 0, 0 });
+    const double radius = c.Number("radius", 1.0, 1e-12);
+    const int resolution = c.Integer("resolution", 64, 3, 1 << 20);
+    c.RejectUnknown();
+    nlohmann::json list = nlohmann::json::array();
+    for (int i = 0; i < resolution; ++i)
+    {
+      const double t = 2 * vtkMath::Pi() * i / resolution;
+      list.push_back({ center[0] + radius * std::cos(t), center[1] + radius * std::sin(t), center[2] });
+    }
+    lines = PolylineFromJson(list, true, where);
+  }
+  else
+  {
+    if (linesDataset == name)
+    {
+      throw SceneError(where + ": 'lines' names the splat dataset itself");
+    }
+    lines = vtkPolyData::SafeDownCast(datasets.Get(linesDataset, where));
+    if (!lines || lines->GetNumberOfLines() == 0)
+    {
+      throw SceneError(where + ": dataset '" + linesDataset + "' has no polylines to splat");
+    }
+  }
+
+  vtkNew<vtkPlumeGaussianSplatter> splatter;
+  splatter->SetLinesData(lines);
+  splatter->SetMode(mode == "velocity" ? vtkPlumeGaussianSplatter::VECTOR_SUM
+      : mode == "density"              ? vtkPlumeGaussianSplatter::SCALAR_SUM
+                                       : vtkPlumeGaussianSplatter::DISTANCE_MAX);
+  splatter->SetRadius(sigma);
+  splatter->SetCutoffFactor(cutoff);
+  splatter->SetLineScaleFactor(scale);
+  splatter->SetIntegrateOverVoxel(integrate);
+  splatter->SetDimensions(int(dims[0]), int(dims[1]), int(dims[2]));
+  if (hasBounds)
+  {
+    splatter->SetModelBounds(bounds.data());
+  }
+  // The command line renders without X (OSMesa), where the GPU backend would
+  // need a window of its own; the CPU backend is the faster one here anyway.
+  splatter->SetBackend(vtkPlumeGaussianSplatter::BACKEND_CPU);
+  splatter->Update();
+  vtkSmartPointer<vtkImageData> image = splatter->GetOutput();
+  if (mode == "velocity")
+  {
+    vtkDataArray* v = image->GetPointData()->GetVectors();
+    vtkNew<vtkFloatArray> speed;
+    speed->SetName("speed");
+    speed->SetNumberOfTuples(v->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < v->GetNumberOfTuples(); ++i)
+    {
+      double t[3];
+      v->GetTuple(i, t);
+      speed->SetValue(i, static_cast<float>(vtkMath::Norm(t)));
+    }
+    image->GetPointData()->AddArray(speed);
+    image->GetPointData()->SetActiveScalars("speed");
+  }
+  return image;
+}
+}
