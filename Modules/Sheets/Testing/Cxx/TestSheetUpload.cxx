@@ -1,0 +1,52 @@
+// Test (no baseline): camera moves upload nothing; density/sigma changes
+// re-upload; zero-density triangles are culled on the CPU and off-screen
+// ones draw nothing.
+#include "plumeSheetMeshes.h"
+#include "plumeSheetTestUtil.h"
+
+int TestSheetUpload(int, char*[])
+{
+  int failures = 0;
+  const double centre[3] = { 0, 0, 0 };
+  auto ring = sheettest::Ring(12, 6, 0.8, 0.25, centre);
+  sheettest::Scene s(ring, 64, 56);
+  s.Mapper->SetDensityArrayName("density");
+  s.Mapper->SetBlurRadius(0.05);
+  s.Camera(1, 2, 4, 0, 0, 0);
+  s.Window->Render();
+  PLUME_CHECK(s.Mapper->GetUploadCount() == 1);
+  PLUME_CHECK(s.Mapper->GetTriangleCount() == 12 * 6 * 2);
+  for (int i = 0; i < 3; ++i)
+  {
+    s.Renderer->GetActiveCamera()->Azimuth(20);
+    s.Window->Render();
+  }
+  PLUME_CHECK(s.Mapper->GetUploadCount() == 1); // camera only: no upload
+  s.Mapper->SetSmokeColor(0.2, 0.3, 0.9);
+  s.Mapper->SetGridA(5);
+  s.Window->Render();
+  PLUME_CHECK(s.Mapper->GetUploadCount() == 1); // shading settings: no upload
+  s.Mapper->SetBlurRadius(0.07);
+  s.Window->Render();
+  PLUME_CHECK(s.Mapper->GetUploadCount() == 2);
+  // zero density on one ring column: those triangles are culled
+  auto* d = ring->GetPointData()->GetArray("density");
+  for (vtkIdType i = 0; i < ring->GetNumberOfPoints(); ++i)
+  {
+    d->SetTuple1(i, i < 2 * 6 ? 0.0 : 1.0);
+  }
+  d->Modified();
+  ring->Modified();
+  s.Window->Render();
+  PLUME_CHECK(s.Mapper->GetUploadCount() == 3);
+  PLUME_CHECK(s.Mapper->GetTriangleCount() == (12 - 1) * 6 * 2);
+  // looking away: nothing drawn, background only
+  s.Camera(0, 0, 4, 0, 0, 10);
+  s.Renderer->GetActiveCamera()->SetClippingRange(0.1, 20);
+  const auto img = plume::test::ReadBack(s.Window);
+  const double white[3] = { 1, 1, 1 };
+  PLUME_CHECK(plume::test::CountForeground(img, white, 1.0 / 255) == 0);
+  std::printf("uploads %d, triangles %lld\n", s.Mapper->GetUploadCount(),
+    static_cast<long long>(s.Mapper->GetTriangleCount()));
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,724 @@
+#include "vtkPlumeSheetMapper.h"
+
+#include "vtkPlumeSheetCompositeFS.h"
+#include "vtkPlumeSheetCompositeVS.h"
+#include "vtkPlumeSheetFS.h"
+#include "vtkPlumeSheetGS.h"
+#include "vtkPlumeSheetVS.h"
+
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkWeakPointer.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+#include <tuple>
+#include <vector>
+
+namespace
+{
+// Keep only the `//PLUME::IF name...` ... `//PLUME::ENDIF` blocks (not nested)
+// where one of the names is enabled, and put `defines` in place of the
+// `//PLUME::Defines` tag. (Same convention as vtkPlumeVelocityGlyphMapper,
+// whose copy is private to that file.)
+std::string SelectVariant(
+  const char* source, const std::set<std::string>& enabled, const std::string& defines)
+{
+  std::istringstream in(source);
+  std::string line;
+  std::string out;
+  bool keep = true;
+  while (std::getline(in, line))
+  {
+    const size_t first = line.find_first_not_of(" \t");
+    const std::string trimmed = first == std::string::npos ? std::string() : line.substr(first);
+    if (trimmed.compare(0, 12, "//PLUME::IF ") == 0)
+    {
+      std::istringstream names(trimmed.substr(12));
+      std::string name;
+      keep = false;
+      while (names >> name)
+      {
+        keep = keep || enabled.count(name) > 0;
+      }
+      continue;
+    }
+    if (trimmed.compare(0, 14, "//PLUME::ENDIF") == 0)
+    {
+      keep = true;
+      continue;
+    }
+    if (!keep)
+    {
+      continue;
+    }
+    if (trimmed.compare(0, 16, "//PLUME::Defines") == 0)
+    {
+      out += defines;
+      continue;
+    }
+    out += line;
+    out += '\n';
+  }
+  return out;
+}
+
+// row-major 4x4 (double) -> column-major floats for GL
+void ToGL(const double m[16], float out[16])
+{
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      out[4 * c + r] = static_cast<float>(m[4 * r + c]);
+    }
+  }
+}
+
+void Transpose(const double a[16], double b[16])
+{
+  double r[16];
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      r[4 * i + j] = a[4 * j + i];
+    }
+  }
+  std::copy(r, r + 16, b);
+}
+
+void Multiply(const double a[16], const double b[16], double c[16])
+{
+  double r[16];
+  vtkMatrix4x4::Multiply4x4(a, b, r);
+  std::copy(r, r + 16, c);
+}
+
+// Gauss-Legendre nodes and weights on [-1, 1] (Newton on the Legendre polynomial)
+void GaussLegendre(int n, std::vector<double>& x, std::vector<double>& w)
+{
+  x.assign(n, 0.0);
+  w.assign(n, 0.0);
+  for (int i = 0; i < n; ++i)
+  {
+    double z = std::cos(vtkMath::Pi() * (i + 0.75) / (n + 0.5));
+    double dp = 1.0;
+    for (int it = 0; it < 100; ++it)
+    {
+      double p0 = 1.0, p1 = 0.0;
+      for (int k = 1; k <= n; ++k)
+      {
+        const double p2 = p1;
+        p1 = p0;
+        p0 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p2) / k;
+      }
+      dp = n * (z * p0 - p1) / (z * z - 1.0);
+      const double dz = p0 / dp;
+      z -= dz;
+      if (std::fabs(dz) < 1e-15)
+      {
+        break;
+      }
+    }
+    x[i] = z;
+    w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
+  }
+}
+
+double Clean(double value)
+{
+  return std::isfinite(value) && value > 0.0 ? value : 0.0;
+}
+
+vtkDataArray* NamedArray(vtkPolyData* poly, const std::string& name, int components)
+{
+  if (name.empty())
+  {
+    return nullptr;
+  }
+  vtkDataArray* a = poly->GetPointData()->GetArray(name.c_str());
+  if (!a || a->GetNumberOfTuples() != poly->GetNumberOfPoints() ||
+    a->GetNumberOfComponents() < components)
+  {
+    return nullptr;
+  }
+  return a;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+class vtkPlumeSheetMapper::Internals
+{
+public:
+  // what the triangle buffer was built from
+  using Signature = std::tuple<vtkPolyData*, vtkMTimeType, std::string, std::string, std::string,
+    std::string, double, double, double, double, bool>;
+  Signature Uploaded;
+  bool HaveUpload = false;
+  double Centre[3] = { 0, 0, 0 };
+  GLsizei VertexCount = 0;
+
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  vtkNew<vtkOpenGLBufferObject> Buffer;
+  vtkNew<vtkOpenGLVertexArrayObject> VAO;
+  vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
+  vtkShaderProgram* VAOProgram = nullptr;
+  bool BufferChanged = true;
+  vtkNew<vtkTextureObject> DepthTexture;
+  vtkNew<vtkTextureObject> AccumTexture;
+  vtkNew<vtkOpenGLFramebufferObject> FBO;
+  int TargetSize[2] = { 0, 0 };
+  std::map<std::string, vtkShaderProgram*> Programs; // owned by the shader cache
+  bool WarnedCells = false;
+
+  vtkShaderProgram* Program(vtkOpenGLRenderWindow* renWin, const std::string& key, const char* vs,
+    const char* fs, const char* gs, const std::set<std::string>& enabled, const std::string& defines)
+  {
+    vtkShaderProgram*& cached = this->Programs[key];
+    vtkShaderProgram* program = nullptr;
+    if (!cached)
+    {
+      const std::string v = SelectVariant(vs, enabled, defines);
+      const std::string f = SelectVariant(fs, enabled, defines);
+      const std::string g = gs ? SelectVariant(gs, enabled, defines) : std::string();
+      program = renWin->GetShaderCache()->ReadyShaderProgram(v.c_str(), f.c_str(), g.c_str());
+      cached = program;
+    }
+    else
+    {
+      program = renWin->GetShaderCache()->ReadyShaderProgram(cached);
+    }
+    if (!program)
+    {
+      this->Programs.erase(key);
+    }
+    return program;
+  }
+
+  void ReleaseGraphicsResources(vtkWindow* window)
+  {
+    this->Buffer->ReleaseGraphicsResources();
+    this->VAO->ReleaseGraphicsResources();
+    this->EmptyVAO->ReleaseGraphicsResources();
+    this->DepthTexture->ReleaseGraphicsResources(window);
+    this->AccumTexture->ReleaseGraphicsResources(window);
+    this->FBO->ReleaseGraphicsResources(window);
+    this->Programs.clear();
+    this->VAOProgram = nullptr;
+    this->HaveUpload = false;
+    this->TargetSize[0] = this->TargetSize[1] = 0;
+    this->Window = nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkStandardNewMacro(vtkPlumeSheetMapper);
+
+vtkPlumeSheetMapper::vtkPlumeSheetMapper()
+  : Impl(new Internals)
+{
+}
+
+vtkPlumeSheetMapper::~vtkPlumeSheetMapper() = default;
+
+int vtkPlumeSheetMapper::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+void vtkPlumeSheetMapper::SetInputData(vtkPolyData* input)
+{
+  this->SetInputDataInternal(0, input);
+}
+
+vtkPolyData* vtkPlumeSheetMapper::GetInput()
+{
+  if (this->GetNumberOfInputConnections(0) < 1)
+  {
+    return nullptr;
+  }
+  return vtkPolyData::SafeDownCast(this->GetExecutive()->GetInputData(0, 0));
+}
+
+//------------------------------------------------------------------------------
+double* vtkPlumeSheetMapper::GetBounds()
+{
+  vtkMath::UninitializeBounds(this->Bounds);
+  if (!this->Static && this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  vtkPolyData* poly = this->GetInput();
+  if (!poly || poly->GetNumberOfPoints() < 1)
+  {
+    return this->Bounds;
+  }
+  poly->GetBounds(this->Bounds);
+  double sigma = 0.0;
+  const std::string* names[2] = { &this->BlurArrayName, &this->ThicknessArrayName };
+  const double constants[2] = { this->BlurRadius, this->ThinSheet ? 0.0 : this->Thickness };
+  for (int s = 0; s < 2; ++s)
+  {
+    if (s == 1 && this->ThinSheet)
+    {
+      continue;
+    }
+    vtkDataArray* a = NamedArray(poly, *names[s], 1);
+    const double value = a ? a->GetRange(0)[1] : constants[s];
+    sigma = std::max(sigma, Clean(value));
+  }
+  const double* b = this->Bounds;
+  const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+    (b[5] - b[4]) * (b[5] - b[4]));
+  double pad = this->Cutoff * sigma;
+  if (diagonal > 0)
+  {
+    pad = std::min(pad, 10.0 * diagonal);
+  }
+  if (!std::isfinite(pad))
+  {
+    pad = 0.0;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Bounds[2 * a] -= pad;
+    this->Bounds[2 * a + 1] += pad;
+  }
+  return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
+{
+  Internals& impl = *this->Impl;
+  if (!this->Static && this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  vtkPolyData* poly = this->GetInput();
+  if (!poly)
+  {
+    vtkErrorMacro(<< "no input mesh");
+    return;
+  }
+  if (ren->GetSelector())
+  {
+    return; // hardware selection is not supported
+  }
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  auto* camera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
+  if (!renWin || !camera)
+  {
+    vtkErrorMacro(<< "an OpenGL render window and camera are required");
+    return;
+  }
+  if (impl.Window && impl.Window != renWin)
+  {
+    impl.ReleaseGraphicsResources(impl.Window);
+  }
+  impl.Window = renWin;
+
+  // ---- triangles: rebuilt only when the mesh or the density/sigma settings change
+  Internals::Signature sig{ poly, poly->GetMTime(), this->DensityArrayName, this->BlurArrayName,
+    this->ThicknessArrayName, this->AbsorptionArrayName, this->Density * this->DensityScale,
+    this->BlurRadius, this->Thickness, this->DensityScale, this->ThinSheet };
+  if (!impl.HaveUpload || sig != impl.Uploaded || !impl.Buffer->GetHandle())
+  {
+    vtkDataArray* dArr = NamedArray(poly, this->DensityArrayName, 1);
+    vtkDataArray* bArr = NamedArray(poly, this->BlurArrayName, 1);
+    vtkDataArray* tArr = NamedArray(poly, this->ThicknessArrayName, 1);
+    vtkDataArray* aArr = NamedArray(poly, this->AbsorptionArrayName, 3);
+    const std::string* names[4] = { &this->DensityArrayName, &this->BlurArrayName,
+      &this->ThicknessArrayName, &this->AbsorptionArrayName };
+    vtkDataArray* found[4] = { dArr, bArr, tArr, aArr };
+    for (int i = 0; i < 4; ++i)
+    {
+      if (!names[i]->empty() && !found[i])
+      {
+        vtkWarningMacro(<< "point array '" << *names[i] << "' is missing or has "
+                        << (i == 3 ? "fewer than 3 components" : "no components")
+                        << "; using the constant instead");
+      }
+    }
+    if ((poly->GetNumberOfVerts() > 0 || poly->GetNumberOfLines() > 0) && !impl.WarnedCells)
+    {
+      vtkWarningMacro(<< "vertices and lines of the input are ignored; only polygons and "
+                         "triangle strips are drawn");
+      impl.WarnedCells = true;
+    }
+    double bounds[6];
+    poly->GetBounds(bounds);
+    for (int a = 0; a < 3; ++a)
+    {
+      impl.Centre[a] = std::isfinite(bounds[2 * a]) && std::isfinite(bounds[2 * a + 1])
+        ? 0.5 * (bounds[2 * a] + bounds[2 * a + 1])
+        : 0.0;
+    }
+    std::vector<float> data;
+    vtkIdType skipped = 0;
+    auto corner = [&](vtkIdType id, float* out, bool& finite, double p[3]) {
+      poly->GetPoint(id, p);
+      finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+      double d = Clean((dArr ? dArr->GetComponent(id, 0) : this->Density) * this->DensityScale);
+      double rgb[3] = { 1, 1, 1 };
+      if (aArr)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          rgb[c] = Clean(aArr->GetComponent(id, c));
+        }
+      }
+      for (int a = 0; a < 3; ++a)
+      {
+        out[a] = static_cast<float>(p[a] - impl.Centre[a]);
+        out[3 + a] = static_cast<float>(std::min(d * rgb[a], 1e30));
+      }
+      out[6] = static_cast<float>(std::min(Clean(bArr ? bArr->GetComponent(id, 0) : this->BlurRadius), 1e30));
+      out[7] = this->ThinSheet
+        ? 0.0f
+        : static_cast<float>(std::min(Clean(tArr ? tArr->GetComponent(id, 0) : this->Thickness), 1e30));
+    };
+    auto addTriangle = [&](vtkIdType i0, vtkIdType i1, vtkIdType i2) {
+      float c[3][8];
+      double p[3][3];
+      bool finite[3];
+      corner(i0, c[0], finite[0], p[0]);
+      corner(i1, c[1], finite[1], p[1]);
+      corner(i2, c[2], finite[2], p[2]);
+      if (!finite[0] || !finite[1] || !finite[2])
+      {
+        ++skipped;
+        return;
+      }
+      bool any = false;
+      for (int k = 0; k < 3; ++k)
+      {
+        any = any || c[k][3] > 0 || c[k][4] > 0 || c[k][5] > 0;
+      }
+      double e1[3], e2[3], n[3];
+      vtkMath::Subtract(p[1], p[0], e1);
+      vtkMath::Subtract(p[2], p[0], e2);
+      vtkMath::Cross(e1, e2, n);
+      if (!any || !(vtkMath::Norm(n) > 0.0))
+      {
+        return; // no density or no area: nothing to integrate
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        data.insert(data.end(), c[k], c[k] + 8);
+      }
+    };
+    vtkIdType npts = 0;
+    const vtkIdType* pts = nullptr;
+    vtkCellArray* polys = poly->GetPolys();
+    for (polys->InitTraversal(); polys->GetNextCell(npts, pts);)
+    {
+      for (vtkIdType k = 1; k + 1 < npts; ++k)
+      {
+        addTriangle(pts[0], pts[k], pts[k + 1]);
+      }
+    }
+    vtkCellArray* strips = poly->GetStrips();
+    for (strips->InitTraversal(); strips->GetNextCell(npts, pts);)
+    {
+      for (vtkIdType k = 0; k + 2 < npts; ++k)
+      {
+        addTriangle(pts[k], pts[k + 1], pts[k + 2]);
+      }
+    }
+    this->SkippedTriangles = skipped;
+    if (skipped > 0)
+    {
+      vtkWarningMacro(<< skipped << " triangle(s) with a NaN or infinite corner position skipped");
+    }
+    this->TriangleCount = static_cast<vtkIdType>(data.size() / 24);
+    impl.VertexCount = static_cast<GLsizei>(data.size() / 8);
+    if (!data.empty())
+    {
+      impl.Buffer->Upload(data, vtkOpenGLBufferObject::ArrayBuffer);
+    }
+    impl.BufferChanged = true;
+    impl.Uploaded = sig;
+    impl.HaveUpload = true;
+    ++this->UploadCount;
+  }
+  if (impl.VertexCount < 3)
+  {
+    return;
+  }
+
+  int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
+  ren->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &vpX, &vpY);
+  if (vpWidth < 1 || vpHeight < 1)
+  {
+    return;
+  }
+
+  // ---- matrices, composed in double: centre-relative model -> eye, eye -> clip
+  vtkMatrix4x4* wcvcT = nullptr;
+  vtkMatrix4x4* vcdcT = nullptr;
+  vtkMatrix4x4* wcdcT = nullptr;
+  vtkMatrix3x3* normals = nullptr;
+  camera->GetKeyMatrices(ren, wcvcT, normals, vcdcT, wcdcT);
+  double wcvc[16], vcdc[16], dcvc[16];
+  Transpose(wcvcT->GetData(), wcvc);
+  Transpose(vcdcT->GetData(), vcdc);
+  vtkMatrix4x4::Invert(vcdc, dcvc);
+  double modelToWorld[16];
+  vtkMatrix4x4::Identity(modelToWorld);
+  if (!actor->GetIsIdentity())
+  {
+    std::copy(actor->GetMatrix()->GetData(), actor->GetMatrix()->GetData() + 16, modelToWorld);
+  }
+  double relToModel[16];
+  vtkMatrix4x4::Identity(relToModel);
+  for (int r = 0; r < 3; ++r)
+  {
+    relToModel[4 * r + 3] = impl.Centre[r];
+  }
+  double mcvcRel[16];
+  Multiply(modelToWorld, relToModel, mcvcRel);
+  Multiply(wcvc, mcvcRel, mcvcRel);
+  double m3[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      m3[r][c] = modelToWorld[4 * r + c];
+    }
+  }
+  const double modelScale = std::cbrt(std::fabs(vtkMath::Determinant3x3(m3)));
+
+  // ---- programs
+  const bool bounded = this->BoundedByDepth;
+  const std::set<std::string> enabled = { bounded ? "BOUNDED" : "UNBOUNDED",
+    this->ThinSheet ? "THIN" : "THICK", this->Quadrature == QUADRATURE_GRID ? "GRID" : "ANALYTIC" };
+  std::ostringstream defines;
+  defines << "#define PLUME_GRID_A " << this->GridA << "\n#define PLUME_GRID_B " << this->GridB
+          << "\n";
+  if (this->Quadrature == QUADRATURE_ANALYTIC)
+  {
+    std::vector<double> x, w;
+    GaussLegendre(this->GridA, x, w);
+    defines.precision(9);
+    defines << "#define PLUME_GL_NODES ";
+    for (int i = 0; i < this->GridA; ++i)
+    {
+      defines << (i ? ", " : "") << std::fixed << x[i];
+    }
+    defines << "\n#define PLUME_GL_WEIGHTS ";
+    for (int i = 0; i < this->GridA; ++i)
+    {
+      defines << (i ? ", " : "") << std::fixed << w[i];
+    }
+    defines << "\n";
+  }
+  std::ostringstream key;
+  key << "S" << (this->Quadrature == QUADRATURE_GRID ? "G" : "A") << (bounded ? "B" : "U") << (this->ThinSheet ? "T" : "K") << this->GridA << "x"
+      << this->GridB;
+  vtkShaderProgram* program = impl.Program(renWin, key.str(), vtkPlumeSheetVS, vtkPlumeSheetFS,
+    vtkPlumeSheetGS, enabled, defines.str());
+  if (!program)
+  {
+    vtkErrorMacro(<< "could not build the sheet shader program (" << key.str() << ")");
+    return;
+  }
+
+  vtkOpenGLState* state = renWin->GetState();
+
+  // ---- targets (viewport-sized): opaque depth copy and float optical depth
+  if (impl.TargetSize[0] != vpWidth || impl.TargetSize[1] != vpHeight ||
+    !impl.AccumTexture->GetHandle() || !impl.DepthTexture->GetHandle())
+  {
+    impl.DepthTexture->SetContext(renWin);
+    impl.DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    impl.DepthTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.DepthTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.DepthTexture->AllocateDepth(vpWidth, vpHeight, vtkTextureObject::Float32);
+    impl.AccumTexture->SetContext(renWin);
+    impl.AccumTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.AccumTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    impl.AccumTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.AccumTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.AccumTexture->SetInternalFormat(GL_RGBA32F);
+    impl.AccumTexture->SetFormat(GL_RGBA);
+    impl.AccumTexture->SetDataType(GL_FLOAT);
+    impl.AccumTexture->Allocate2D(vpWidth, vpHeight, 4, VTK_FLOAT);
+    impl.TargetSize[0] = vpWidth;
+    impl.TargetSize[1] = vpHeight;
+  }
+  if (bounded)
+  {
+    // the opaque scene's depth, as it is now (this actor renders after the opaque actors)
+    impl.DepthTexture->Activate();
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, vpX, vpY, vpWidth, vpHeight);
+  }
+
+  {
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+    vtkOpenGLState::ScopedglViewport viewportSaver(state);
+    vtkOpenGLState::ScopedglClearColor clearSaver(state);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+
+    // ---- accumulate tau of every triangle (additive: order-independent)
+    state->PushFramebufferBindings();
+    impl.FBO->SetContext(renWin);
+    impl.FBO->Bind();
+    impl.FBO->AddColorAttachment(0, impl.AccumTexture);
+    impl.FBO->ActivateDrawBuffers(1);
+    state->vtkglViewport(0, 0, vpWidth, vpHeight);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_CULL_FACE);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+
+    float m[16];
+    ToGL(mcvcRel, m);
+    program->SetUniformMatrix4x4("MCVCRel", m);
+    program->SetUniformf("ModelToEyeScale", static_cast<float>(modelScale));
+    ToGL(vcdc, m);
+    program->SetUniformMatrix4x4("Projection", m);
+    ToGL(dcvc, m);
+    program->SetUniformMatrix4x4("InverseProjection", m);
+    const float vp[2] = { float(vpWidth), float(vpHeight) };
+    program->SetUniform2f("ViewportSize", vp);
+    program->SetUniformf("Cutoff", static_cast<float>(this->Cutoff));
+    program->SetUniformf("MinSigmaPixels", static_cast<float>(this->MinimumSigmaPixels));
+    program->SetUniformi("Parallel", camera->GetParallelProjection() ? 1 : 0);
+    if (bounded)
+    {
+      program->SetUniformi("OpaqueDepth", impl.DepthTexture->GetTextureUnit());
+    }
+    impl.VAO->Bind();
+    if (impl.VAOProgram != program || impl.BufferChanged)
+    {
+      impl.VAO->ShaderProgramChanged();
+      impl.VAO->Bind();
+      const int stride = 8 * sizeof(float);
+      bool ok = impl.VAO->AddAttributeArray(
+        program, impl.Buffer, "sheetPosition", 0, stride, VTK_FLOAT, 3, false);
+      ok = impl.VAO->AddAttributeArray(program, impl.Buffer, "sheetDensity", 3 * sizeof(float),
+             stride, VTK_FLOAT, 3, false) && ok;
+      ok = impl.VAO->AddAttributeArray(program, impl.Buffer, "sheetSigma", 6 * sizeof(float),
+             stride, VTK_FLOAT, 2, false) && ok;
+      if (!ok)
+      {
+        vtkErrorMacro(<< "could not bind the sheet vertex attributes");
+      }
+      impl.VAOProgram = program;
+      impl.BufferChanged = false;
+    }
+    glDrawArrays(GL_TRIANGLES, 0, impl.VertexCount);
+    impl.VAO->Release();
+    impl.FBO->RemoveColorAttachment(0);
+    state->PopFramebufferBindings();
+    if (bounded)
+    {
+      impl.DepthTexture->Deactivate();
+    }
+
+    // ---- composite: frame * T, then + SmokeColor (1 - T) if the smoke is not black
+    state->vtkglViewport(vpX, vpY, vpWidth, vpHeight);
+    const bool add = this->SmokeColor[0] > 0 || this->SmokeColor[1] > 0 || this->SmokeColor[2] > 0;
+    impl.AccumTexture->Activate();
+    for (int pass = 0; pass < (add ? 2 : 1); ++pass)
+    {
+      const std::string mode = pass == 0 ? "MULTIPLY" : "ADD";
+      vtkShaderProgram* composite = impl.Program(renWin, "C" + mode, vtkPlumeSheetCompositeVS,
+        vtkPlumeSheetCompositeFS, nullptr, { mode }, "");
+      if (!composite)
+      {
+        vtkErrorMacro(<< "could not build the sheet composite program");
+        break;
+      }
+      composite->SetUniformi("OpticalDepth", impl.AccumTexture->GetTextureUnit());
+      const float origin[2] = { float(vpX), float(vpY) };
+      composite->SetUniform2f("ViewportOrigin", origin);
+      if (pass == 0)
+      {
+        state->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
+      }
+      else
+      {
+        const float color[3] = { float(this->SmokeColor[0]), float(this->SmokeColor[1]),
+          float(this->SmokeColor[2]) };
+        composite->SetUniform3f("SmokeColor", color);
+        state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+      }
+      impl.EmptyVAO->Bind();
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      impl.EmptyVAO->Release();
+    }
+    impl.AccumTexture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeSheetMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Impl->ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeSheetMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DensityArrayName: " << this->DensityArrayName << "\n";
+  os << indent << "Density: " << this->Density << "\n";
+  os << indent << "DensityScale: " << this->DensityScale << "\n";
+  os << indent << "BlurArrayName: " << this->BlurArrayName << "\n";
+  os << indent << "BlurRadius: " << this->BlurRadius << "\n";
+  os << indent << "ThicknessArrayName: " << this->ThicknessArrayName << "\n";
+  os << indent << "Thickness: " << this->Thickness << "\n";
+  os << indent << "AbsorptionArrayName: " << this->AbsorptionArrayName << "\n";
+  os << indent << "SmokeColor: " << this->SmokeColor[0] << " " << this->SmokeColor[1] << " "
+     << this->SmokeColor[2] << "\n";
+  os << indent << "ThinSheet: " << this->ThinSheet << "\n";
+  os << indent << "BoundedByDepth: " << this->BoundedByDepth << "\n";
+  os << indent << "Cutoff: " << this->Cutoff << "\n";
+  os << indent << "MinimumSigmaPixels: " << this->MinimumSigmaPixels << "\n";
+  os << indent << "GridA: " << this->GridA << "\n";
+  os << indent << "GridB: " << this->GridB << "\n";
+  os << indent << "Quadrature: " << this->Quadrature << "\n";
+  os << indent << "UploadCount: " << this->UploadCount << "\n";
+  os << indent << "TriangleCount: " << this->TriangleCount << "\n";
+}
