@@ -457,7 +457,8 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     mode = "PLUME_SMOKE";
   }
-  const bool lit = mode == "PLUME_ISO" || mode == "PLUME_SMOKE";
+  const bool shade = mode == "PLUME_COMPOSITE" && property->GetShade(0) != 0;
+  const bool lit = mode == "PLUME_ISO" || mode == "PLUME_SMOKE" || shade;
   if (lit && lightDirs.empty())
   {
     // no light switched on: light from the camera so lit modes are not black
@@ -485,6 +486,10 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (skipping)
   {
     defines << "#define PLUME_SKIP\n";
+  }
+  if (shade)
+  {
+    defines << "#define PLUME_SHADE\n";
   }
   if (lit)
   {
@@ -557,6 +562,9 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
     const double u = span > 0 ? (iso - range[0]) / span : (iso > range[0] ? 2.0 : -1.0);
     program->SetUniformf("IsoValue", static_cast<float>(std::min(2.0, std::max(-1.0, u))));
+  }
+  if (mode == "PLUME_ISO" || shade)
+  {
     ToGL3(normal, m3);
     program->SetUniformMatrix3x3("NormalToWorld", m3);
     program->SetUniformf("Specular", static_cast<float>(property->GetSpecular(0)));

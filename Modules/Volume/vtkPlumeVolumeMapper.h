@@ -36,7 +36,9 @@
  *
  * Modes (vtkVolumeMapper's BlendMode, plus Smoke):
  *  - COMPOSITE_BLEND (default): emission–absorption, front to back,
- *    colour c(s); converges to ∫ c σ T dt with T = exp(-∫σ).
+ *    colour c(s); converges to ∫ c σ T dt with T = exp(-∫σ). With the
+ *    property's Shade on, each sample's colour is Phong-lit like the
+ *    isosurface below (central-difference normal at the sample).
  *  - MAXIMUM_INTENSITY_BLEND: s_max along the ray, output (c α, α)(s_max).
  *  - ISOSURFACE_BLEND: the first crossing of the iso value (IsoValue if set,
  *    else the property's first IsoSurfaceValues entry, else mid-range) between two

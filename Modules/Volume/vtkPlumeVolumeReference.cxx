@@ -61,6 +61,7 @@ struct Setup
   double Ambient, Diffuse, Specular, SpecularPower;
   std::vector<Vec3> LightDirs, LightColors;
   double Step, ShadowStep;
+  bool Shade = false; // composite with Phong-lit samples
   int Width, Height;
   const std::vector<float>* Depth;
 
@@ -161,6 +162,43 @@ struct Setup
     return std::exp(-tau);
   }
 
+  // Phong lighting of `base` at p: central-difference normal (one voxel) turned
+  // towards the viewer (the view direction if the gradient vanishes)
+  void Phong(const double base[3], const Vec3& p, const Vec3& viewDir, double col[3]) const
+  {
+    Vec3 g;
+    for (int a = 0; a < 3; ++a)
+    {
+      Vec3 e = { 0, 0, 0 };
+      e[a] = 1;
+      g[a] = this->Field(Add(p, e)) - this->Field(Sub(p, e));
+    }
+    Vec3 nrm = Apply3(this->Normal, g);
+    const double l = Len(nrm);
+    nrm = l > 1e-20 ? Mul(nrm, 1.0 / l) : viewDir;
+    if (Dot(nrm, viewDir) < 0)
+    {
+      nrm = Mul(nrm, -1.0);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      col[c] = this->Ambient * base[c];
+    }
+    for (size_t li = 0; li < this->LightDirs.size(); ++li)
+    {
+      const Vec3& L = this->LightDirs[li];
+      const double nl = std::max(Dot(nrm, L), 0.0);
+      const Vec3 H = Add(L, viewDir);
+      const double hl = Len(H);
+      const double nh = hl > 1e-6 ? std::max(Dot(nrm, Mul(H, 1.0 / hl)), 0.0) : 0.0;
+      const double spec = nh > 0 ? std::pow(nh, this->SpecularPower) : 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        col[c] += (this->Diffuse * nl * base[c] + this->Specular * spec) * this->LightColors[li][c];
+      }
+    }
+  }
+
   void Pixel(int x, int y, float out[4]) const
   {
     out[0] = out[1] = out[2] = out[3] = 0.0f;
@@ -222,40 +260,9 @@ struct Setup
             ((fc < 0) == (fPrev < 0) ? ta : tb) = tc;
           }
           const Vec3 ph = Add(p0, Mul(d, 0.5 * (ta + tb)));
-          Vec3 g;
-          for (int a = 0; a < 3; ++a)
-          {
-            Vec3 e = { 0, 0, 0 };
-            e[a] = 1;
-            g[a] = this->Field(Add(ph, e)) - this->Field(Sub(ph, e));
-          }
-          Vec3 nrm = Apply3(this->Normal, g);
-          const double l = Len(nrm);
-          nrm = l > 1e-20 ? Mul(nrm, 1.0 / l) : viewDir;
-          if (Dot(nrm, viewDir) < 0)
-          {
-            nrm = Mul(nrm, -1.0);
-          }
-          double base[3], a;
+          double base[3], a, col[3];
           this->Transfer(this->Iso, base, a);
-          double col[3];
-          for (int c = 0; c < 3; ++c)
-          {
-            col[c] = this->Ambient * base[c];
-          }
-          for (size_t li = 0; li < this->LightDirs.size(); ++li)
-          {
-            const Vec3& L = this->LightDirs[li];
-            const double nl = std::max(Dot(nrm, L), 0.0);
-            const Vec3 H = Add(L, viewDir);
-            const double hl = Len(H);
-            const double nh = hl > 1e-6 ? std::max(Dot(nrm, Mul(H, 1.0 / hl)), 0.0) : 0.0;
-            const double spec = nh > 0 ? std::pow(nh, this->SpecularPower) : 0.0;
-            for (int c = 0; c < 3; ++c)
-            {
-              col[c] += (this->Diffuse * nl * base[c] + this->Specular * spec) * this->LightColors[li][c];
-            }
-          }
+          this->Phong(base, ph, viewDir, col);
           for (int c = 0; c < 3; ++c)
           {
             out[c] = static_cast<float>(col[c]);
@@ -296,6 +303,12 @@ struct Setup
         continue;
       }
       const double alpha = 1.0 - std::exp(-sigma * segment);
+      if (this->Shade)
+      {
+        double lit[3];
+        this->Phong(rgb, p, viewDir, lit);
+        std::copy(lit, lit + 3, rgb);
+      }
       double light[3] = { 1, 1, 1 };
       if (this->Mode == vtkPlumeVolumeReference::SMOKE)
       {
@@ -503,6 +516,7 @@ bool vtkPlumeVolumeReference::Compute(int width, int height)
   s.Diffuse = property->GetDiffuse(0);
   s.Specular = property->GetSpecular(0);
   s.SpecularPower = property->GetSpecularPower(0);
+  s.Shade = this->Mode == COMPOSITE && property->GetShade(0) != 0;
 
   // lights: switched-on lights (at most 4) as directions towards them
   vtkLightCollection* lights = this->Renderer->GetLights();

@@ -12,7 +12,8 @@
  *
  * The model (documented in vtkPlumeVolumeMapper.h): extinction
  * σ(s) = -ln(1 - min(α(s), 1 - 1e-6)) / u (u = scalar opacity unit distance),
- * composite = ∫ c σ T dt; MIP = (c α, α) at the ray's maximum; isosurface =
+ * composite = ∫ c σ T dt (c Phong-lit at each sample when the property's
+ * Shade is on); MIP = (c α, α) at the ray's maximum; isosurface =
  * first crossing of the iso value, refined by bisection to double precision,
  * central-difference normal (one voxel) and Phong lighting; smoke =
  * ∫ c (ka + kd Σ I_l T_l) σ T dt with T_l the transmittance towards light l

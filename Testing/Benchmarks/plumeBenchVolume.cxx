@@ -5,7 +5,9 @@
 // every image's error against vtkPlumeVolumeReference (computed once per
 // field in its own job and passed to the render jobs through a temporary file).
 // Two fields: "smoke" (three Gaussian puffs, mostly empty space) and "dense"
-// (a low-opacity field that fills the box).
+// (a low-opacity field that fills the box), each unshaded and shaded (the
+// property's Shade on, headlight; note the peers' shading models differ from
+// ours in detail, so part of their shaded error is model, not sampling).
 #include "plumeBenchmarks.h"
 
 #include "vtkPlumeVolumeMapper.h"
@@ -51,7 +53,23 @@ std::vector<double> Steps(bool quick)
   return quick ? std::vector<double>{ 1.0 } : std::vector<double>{ 0.5, 1.0, 2.0, 4.0 };
 }
 
-const char* Fields[] = { "smoke", "dense" };
+// a variant is a field, optionally shaded (property Shade on, same lighting for all)
+const char* Fields[] = { "smoke", "dense", "smoke+shaded", "dense+shaded" };
+
+std::string FieldOf(const std::string& variant)
+{
+  return variant.substr(0, variant.find('+'));
+}
+
+bool Shaded(const std::string& variant)
+{
+  return variant.find("+shaded") != std::string::npos;
+}
+
+std::string Describe(const std::string& variant)
+{
+  return FieldOf(variant) + (Shaded(variant) ? ", shaded" : ", unshaded");
+}
 
 const char* PeerName(const std::string& kind)
 {
@@ -97,8 +115,9 @@ vtkSmartPointer<vtkImageData> Field(const std::string& name, int n)
   return image;
 }
 
-void Configure(vtkVolumeProperty* property, const std::string& field)
+void Configure(vtkVolumeProperty* property, const std::string& variant)
 {
+  const std::string field = FieldOf(variant);
   vtkNew<vtkColorTransferFunction> color;
   color->AddRGBPoint(0.0, 0.1, 0.2, 0.8);
   color->AddRGBPoint(0.5, 0.9, 0.9, 0.8);
@@ -111,7 +130,11 @@ void Configure(vtkVolumeProperty* property, const std::string& field)
   property->SetScalarOpacity(opacity);
   property->SetScalarOpacityUnitDistance(field == "smoke" ? 0.05 : 0.2);
   property->SetInterpolationTypeToLinear();
-  property->ShadeOff();
+  property->SetShade(Shaded(variant) ? 1 : 0);
+  property->SetAmbient(0.2);
+  property->SetDiffuse(0.7);
+  property->SetSpecular(0.3);
+  property->SetSpecularPower(15);
 }
 
 void SetCamera(vtkRenderer* renderer)
@@ -124,10 +147,10 @@ void SetCamera(vtkRenderer* renderer)
   camera->SetClippingRange(0.5, 6.0);
 }
 
-std::string ReferencePath(const std::string& field, int n, bool quick)
+// `run` is the pid of the `plume bench` process: getppid() in a job, getpid() in Report
+std::string ReferencePath(const std::string& field, int n, bool quick, long run)
 {
-  // the job's parent is the `plume bench` process: its pid keys this run
-  return "/tmp/plume-bench-volume-" + std::to_string(getppid()) + "-" + field + "-" + std::to_string(n) +
+  return "/tmp/plume-bench-volume-" + std::to_string(run) + "-" + field + "-" + std::to_string(n) +
     (quick ? "-quick" : "") + ".f32";
 }
 
@@ -136,7 +159,8 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   // job = kind:field:step   (kind: reference, ours, gpu, fixed)
   const size_t a = job.find(':'), b = job.find(':', a + 1);
   const std::string kind = job.substr(0, a);
-  const std::string field = job.substr(a + 1, b - a - 1);
+  const std::string variant = job.substr(a + 1, b - a - 1);
+  const std::string field = FieldOf(variant);
   const double step = b == std::string::npos ? 0.0 : std::stod(job.substr(b + 1));
   const bool quick = context.Quick;
   const int n = Grid(quick), size = Size(quick);
@@ -144,11 +168,14 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   auto image = Field(field, n);
 
   vtkNew<vtkVolume> volume;
-  Configure(volume->GetProperty(), field);
+  Configure(volume->GetProperty(), variant);
   if (kind == "reference")
   {
+    // a window-less renderer: the camera, and the headlight VTK would create
     vtkNew<vtkRenderer> renderer;
     SetCamera(renderer);
+    renderer->CreateLight();
+    renderer->UpdateLightsGeometryToFollowCamera();
     vtkNew<vtkPlumeVolumeReference> reference;
     reference->SetInputData(image);
     reference->SetVolume(volume);
@@ -157,7 +184,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     const double t0 = Now();
     reference->Compute(size, size);
     const double seconds = Now() - t0;
-    std::ofstream out(ReferencePath(field, n, quick), std::ios::binary);
+    std::ofstream out(ReferencePath(variant, n, quick, getppid()), std::ios::binary);
     out.write(reinterpret_cast<const char*>(reference->GetImage().data()),
       reference->GetImage().size() * sizeof(float));
     return { { "reference_s", seconds }, { "peak_rss_mb", PeakRSSMB() } };
@@ -215,7 +242,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   vtkNew<vtkFloatArray> rgba;
   window->GetRGBAPixelData(0, 0, size - 1, size - 1, 0, rgba, 0);
   std::vector<float> expected(4 * static_cast<size_t>(size) * size);
-  std::ifstream in(ReferencePath(field, n, quick), std::ios::binary);
+  std::ifstream in(ReferencePath(variant, n, quick, getppid()), std::ios::binary);
   in.read(reinterpret_cast<char*>(expected.data()), expected.size() * sizeof(float));
   double sum = 0, worst = 0;
   const bool haveReference = static_cast<bool>(in);
@@ -263,7 +290,7 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
   const int n = Grid(quick), size = Size(quick);
   for (const char* field : Fields)
   {
-    std::remove(ReferencePath(field, n, quick).c_str()); // (same parent: this process)
+    std::remove(ReferencePath(field, n, quick, getpid()).c_str()); // (same parent: this process)
     for (double ourStep : Steps(quick))
     {
       char s[32];
@@ -287,7 +314,7 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
           const double o = ours->second["render_s"].get<double>();
           const double p = other->second["render_s"].get<double>();
           nlohmann::json line = { { "bench", "volume" },
-            { "case", std::string(field) + " " + std::to_string(n) + "^3 -> " + std::to_string(size) + "^2, unshaded, ours step " +
+            { "case", Describe(field) + " " + std::to_string(n) + "^3 -> " + std::to_string(size) + "^2, ours step " +
                 s + " voxel, peer step " + ps + " voxel" },
             { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o },
             { "ours_step", ourStep }, { "peer_step", peerStep },
@@ -346,8 +373,8 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
         const double o = (*best)["render_s"].get<double>();
         const double p = other->second["render_s"].get<double>();
         lines.push_back({ { "bench", "volume" },
-          { "case", std::string(field) + " " + std::to_string(n) + "^3 -> " + std::to_string(size) +
-              "^2, unshaded, equal or lower error: our fastest vs peer step " + ps + " voxel" },
+          { "case", Describe(field) + " " + std::to_string(n) + "^3 -> " + std::to_string(size) +
+              "^2, equal or lower error: our fastest vs peer step " + ps + " voxel" },
           { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o },
           { "ours_step", bestStep }, { "peer_step", peerStep }, { "error", (*best)["rms_error"] },
           { "peer_error", peerError }, { "peak_rss_mb", (*best)["peak_rss_mb"] },

@@ -8,6 +8,7 @@
 //   PLUME_JITTER       jittered first segment
 //   PLUME_DEPTH        stop at the opaque scene's depth
 //   PLUME_SKIP         empty-space skipping over transparent blocks
+//   PLUME_SHADE        composite with gradient (Phong) shading of every sample
 //   PLUME_LIGHTS n     number of lights (ISO, SMOKE)
 
 //PLUME::Defines
@@ -39,20 +40,22 @@ uniform vec3 BlockDims;            // blocks per axis
 #endif
 #ifdef PLUME_ISO
 uniform float IsoValue;             // normalised
+#endif
+#if defined(PLUME_ISO) || defined(PLUME_SHADE)
 uniform mat3 NormalToWorld;         // inverse transpose of IndexToWorld
-uniform float Ambient;
-uniform float Diffuse;
 uniform float Specular;
 uniform float SpecularPower;
 #endif
-#ifdef PLUME_SMOKE
+#if defined(PLUME_ISO) || defined(PLUME_SHADE) || defined(PLUME_SMOKE)
 uniform float Ambient;
 uniform float Diffuse;
+#endif
+#ifdef PLUME_SMOKE
 uniform float ShadowStepIndex;      // shadow-ray step, voxels
 uniform vec3 LightIndexDir[PLUME_LIGHTS];     // unit direction towards the light, index space
 uniform float LightWorldPerIndex[PLUME_LIGHTS]; // world length of one index unit along it
 #endif
-#if defined(PLUME_ISO) || defined(PLUME_SMOKE)
+#if defined(PLUME_ISO) || defined(PLUME_SMOKE) || defined(PLUME_SHADE)
 uniform vec3 LightDirection[PLUME_LIGHTS]; // unit, world, towards the light
 uniform vec3 LightColor[PLUME_LIGHTS];     // colour x intensity
 #endif
@@ -139,6 +142,35 @@ float lightTransmittance(vec3 p, int l)
 }
 #endif
 
+#if defined(PLUME_ISO) || defined(PLUME_SHADE)
+// Phong lighting of colour `base` at index-space point p: normal from central
+// differences (one voxel), turned towards the viewer; zero gradient: facing the viewer
+vec3 phong(vec3 base, vec3 p, vec3 viewDir)
+{
+  vec3 g = vec3(sampleU(p + vec3(1, 0, 0)) - sampleU(p - vec3(1, 0, 0)),
+    sampleU(p + vec3(0, 1, 0)) - sampleU(p - vec3(0, 1, 0)),
+    sampleU(p + vec3(0, 0, 1)) - sampleU(p - vec3(0, 0, 1)));
+  vec3 n = NormalToWorld * g;
+  float len = length(n);
+  n = len > 1e-20 ? n / len : viewDir;
+  if (dot(n, viewDir) < 0.0)
+  {
+    n = -n;
+  }
+  vec3 color = Ambient * base;
+  for (int l = 0; l < PLUME_LIGHTS; ++l)
+  {
+    vec3 L = LightDirection[l];
+    color += Diffuse * max(dot(n, L), 0.0) * base * LightColor[l];
+    vec3 H = L + viewDir;
+    float hl = length(H);
+    float nh = hl > 1e-6 ? max(dot(n, H / hl), 0.0) : 0.0;
+    color += Specular * (nh > 0.0 ? pow(nh, SpecularPower) : 0.0) * LightColor[l];
+  }
+  return color;
+}
+#endif
+
 void main()
 {
   vec2 ndc = 2.0 * (gl_FragCoord.xy - ViewportOrigin) / ViewportSize - 1.0;
@@ -172,7 +204,7 @@ void main()
   float first = dt;
 #endif
 
-#if defined(PLUME_ISO) || defined(PLUME_SMOKE)
+#if defined(PLUME_ISO) || defined(PLUME_SMOKE) || defined(PLUME_SHADE)
   vec3 viewDir = -normalize(IndexToWorld * d); // world, towards the eye
 #endif
 
@@ -224,6 +256,12 @@ void main()
 #ifdef PLUME_COMPOSITE
     vec4 c = transfer(u);
     float alpha = 1.0 - exp(-c.a * (s1 - s0) * worldPerT);
+#ifdef PLUME_SHADE
+    if (alpha > 0.0)
+    {
+      c.rgb = phong(c.rgb, p, viewDir);
+    }
+#endif
     dst.rgb += (1.0 - dst.a) * alpha * c.rgb;
     dst.a += (1.0 - dst.a) * alpha;
     if (dst.a >= OpacityThreshold)
@@ -300,28 +338,7 @@ void main()
   {
     discard;
   }
-  vec3 ph = p0 + tHit * d;
-  vec3 g = vec3(sampleU(ph + vec3(1, 0, 0)) - sampleU(ph - vec3(1, 0, 0)),
-    sampleU(ph + vec3(0, 1, 0)) - sampleU(ph - vec3(0, 1, 0)),
-    sampleU(ph + vec3(0, 0, 1)) - sampleU(ph - vec3(0, 0, 1)));
-  vec3 n = NormalToWorld * g;
-  float len = length(n);
-  n = len > 1e-20 ? n / len : viewDir;
-  if (dot(n, viewDir) < 0.0)
-  {
-    n = -n;
-  }
-  vec3 base = transfer(IsoValue).rgb;
-  vec3 color = Ambient * base;
-  for (int l = 0; l < PLUME_LIGHTS; ++l)
-  {
-    vec3 L = LightDirection[l];
-    color += Diffuse * max(dot(n, L), 0.0) * base * LightColor[l];
-    vec3 H = L + viewDir;
-    float hl = length(H);
-    float nh = hl > 1e-6 ? max(dot(n, H / hl), 0.0) : 0.0;
-    color += Specular * (nh > 0.0 ? pow(nh, SpecularPower) : 0.0) * LightColor[l];
-  }
+  vec3 color = phong(transfer(IsoValue).rgb, p0 + tHit * d, viewDir);
   dst = vec4(color, 1.0);
 #endif
   if (dst.a <= 0.0)

@@ -36,6 +36,16 @@ int TestVolumeAccuracy(int, char*[])
     failures += ok ? 0 : 1;
   }
   {
+    // shaded composite: every sample Phong-lit with its central-difference normal
+    Scene s = MakeScene(field, 200, 160);
+    s.Volume->GetProperty()->ShadeOn();
+    s.Volume->GetProperty()->SetAmbient(0.2);
+    s.Volume->GetProperty()->SetDiffuse(0.7);
+    s.Volume->GetProperty()->SetSpecular(0.3);
+    s.Volume->GetProperty()->SetSpecularPower(15);
+    failures += Check("composite, shaded", CompareWithReference(s, vtkPlumeVolumeReference::COMPOSITE), 0.005, 0.05);
+  }
+  {
     Scene s = MakeScene(field, 200, 160);
     s.Mapper->SetBlendModeToMaximumIntensity();
     failures += Check("maximum intensity", CompareWithReference(s, vtkPlumeVolumeReference::MAXIMUM_INTENSITY), 0.005, 0.05);
