@@ -1,6 +1,7 @@
 // The scene dataset `"source": "splat"`: a field splatted from flow lines
 // given in the scene (a list of points, a circle) or taken from another
-// dataset's polylines (e.g. a .vtp of streamlines), by
+// dataset's polylines (e.g. a .vtp of streamlines), or from streamlines
+// traced here through another dataset (`trace`), by
 // vtkPlumeGaussianSplatter (seed 002's flowline extrusion). The result is an
 // image with the splatted array ("velocity", "density" or "distance") and,
 // for velocity, "speed" = |v|, ready for the glyphs, contour or volume
@@ -18,7 +19,9 @@
 #include "vtkMath.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkPlaneSource.h"
 #include "vtkPolyData.h"
+#include "vtkStreamTracer.h"
 
 #include <cmath>
 #include <sstream>
@@ -76,6 +79,8 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
   const nlohmann::json* points = p.Raw("points");
   const nlohmann::json* circle = p.Object("circle");
   const std::string linesDataset = p.String("lines", "");
+  const nlohmann::json* trace = p.Object("trace");
+  const std::string reference = p.String("reference", "");
   const bool closed = p.Boolean("closed", false);
   const std::string mode = p.Choice("mode", "velocity", { "velocity", "density", "distance" });
   const double sigma = p.Number("sigma", 0.1, 1e-12);
@@ -97,9 +102,13 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
   {
     throw SceneError(where + ": 'bounds' must be [xmin, xmax, ymin, ymax, zmin, zmax] with min < max");
   }
-  if (int(points != nullptr) + int(circle != nullptr) + int(!linesDataset.empty()) != 1)
+  if (int(points != nullptr) + int(circle != nullptr) + int(!linesDataset.empty()) + int(trace != nullptr) != 1)
   {
-    throw SceneError(where + ": a splat source needs exactly one of 'points', 'circle' or 'lines'");
+    throw SceneError(where + ": a splat source needs exactly one of 'points', 'circle', 'lines' or 'trace'");
+  }
+  if (linesDataset == name || reference == name)
+  {
+    throw SceneError(where + ": 'lines' and 'reference' cannot name the splat dataset itself");
   }
 
   vtkSmartPointer<vtkPolyData> lines;
@@ -122,12 +131,64 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
     }
     lines = PolylineFromJson(list, true, where);
   }
+  else if (trace)
+  {
+    // streamlines (RK4, both directions) from a rake of seeds on a plane
+    Parameters t(*trace, where + ".trace");
+    const std::string flow = t.String("dataset", "");
+    const std::string vectors = t.String("vectors", "");
+    const auto origin = t.Vector<3>("origin", { 0, 0, 0 });
+    auto point1 = t.Vector<3>("point1", { 1, 0, 0 });
+    auto point2 = t.Vector<3>("point2", { 0, 1, 0 });
+    const auto resolution = t.Vector<2>("resolution", { 8, 8 });
+    const double maxLength = t.Number("max_length", 100.0, 1e-12);
+    const double step = t.Number("step", 0.5, 1e-3, 10.0);
+    const double terminalSpeed = t.Number("terminal_speed", 1e-12, 0.0);
+    t.RejectUnknown();
+    if (flow.empty() || flow == name)
+    {
+      throw SceneError(where + ".trace: 'dataset' must name another dataset (the flow to trace)");
+    }
+    for (double r : resolution)
+    {
+      if (r < 1 || r > 1024 || r != std::floor(r))
+      {
+        throw SceneError(where + ".trace: 'resolution' must be integers in [1, 1024], got " + Num(r));
+      }
+    }
+    vtkImageData* field = datasets.GetImage(flow, where + ".trace");
+    vtkNew<vtkPlaneSource> rake;
+    rake->SetOrigin(origin.data());
+    rake->SetPoint1(point1.data());
+    rake->SetPoint2(point2.data());
+    rake->SetResolution(int(resolution[0]), int(resolution[1]));
+    vtkNew<vtkStreamTracer> tracer;
+    tracer->SetInputData(field);
+    tracer->SetSourceConnection(rake->GetOutputPort());
+    if (!vectors.empty())
+    {
+      if (!field->GetPointData()->GetArray(vectors.c_str()))
+      {
+        throw SceneError(where + ".trace: dataset '" + flow + "' has no point array '" + vectors + "'");
+      }
+      tracer->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vectors.c_str());
+    }
+    tracer->SetIntegratorTypeToRungeKutta4();
+    tracer->SetIntegrationDirectionToBoth();
+    tracer->SetIntegrationStepUnit(vtkStreamTracer::CELL_LENGTH_UNIT);
+    tracer->SetInitialIntegrationStep(step); // fixed steps: vertex differences ∝ direction only
+    tracer->SetMaximumPropagation(maxLength);
+    tracer->SetMaximumNumberOfSteps(100000);
+    tracer->SetTerminalSpeed(terminalSpeed); // stagnant regions would pile up vertices
+    tracer->Update();
+    lines = tracer->GetOutput();
+    if (lines->GetNumberOfLines() == 0)
+    {
+      throw SceneError(where + ".trace: no streamline left the seeds (check the rake lies in the flow)");
+    }
+  }
   else
   {
-    if (linesDataset == name)
-    {
-      throw SceneError(where + ": 'lines' names the splat dataset itself");
-    }
     lines = vtkPolyData::SafeDownCast(datasets.Get(linesDataset, where));
     if (!lines || lines->GetNumberOfLines() == 0)
     {
@@ -148,6 +209,10 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
   if (hasBounds)
   {
     splatter->SetModelBounds(bounds.data());
+  }
+  if (!reference.empty())
+  {
+    splatter->SetReferenceImage(datasets.GetImage(reference, where)); // its grid, not its data
   }
   // The command line renders without X (OSMesa), where the GPU backend would
   // need a window of its own; the CPU backend is the faster one here anyway.
