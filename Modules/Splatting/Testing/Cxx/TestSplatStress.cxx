@@ -218,6 +218,37 @@ int TestSplatStress(int, char*[])
     }
   }
 
+  // AUTO: the CPU by default (no crossover on software GL); the GPU above the
+  // threshold; back to the CPU with one warning when the GPU cannot do the job
+  {
+    vtkNew<vtkPlumeGaussianSplatter> splatter;
+    splatter->SetInputData(splattest::RandomPoints(20, -0.5, 0.5, 0.1, 0.2));
+    splatter->SetModelBounds(-1, 1, -1, 1, -1, 1);
+    splatter->SetDimensions(12, 12, 12);
+    splatter->Update();
+    PLUME_CHECK(splatter->GetBackend() == vtkPlumeGaussianSplatter::BACKEND_AUTO);
+    PLUME_CHECK(splatter->GetLastBackend() == vtkPlumeGaussianSplatter::BACKEND_CPU);
+    splatter->SetAutoGPUThreshold(0);
+    splatter->Update();
+    PLUME_CHECK(splatter->GetLastBackend() == vtkPlumeGaussianSplatter::BACKEND_GPU);
+    vtkNew<vtkImageData> gpu;
+    gpu->DeepCopy(splatter->GetOutput());
+    // wider than any GL_MAX_3D_TEXTURE_SIZE here (2048 on llvmpipe)
+    splatter->SetDimensions(70000, 1, 1);
+    vtkNew<WarningCounter> warnings;
+    splatter->AddObserver(vtkCommand::WarningEvent, warnings);
+    splatter->Update();
+    PLUME_CHECK(splatter->GetLastBackend() == vtkPlumeGaussianSplatter::BACKEND_CPU && warnings->Count == 1);
+    PLUME_CHECK(splattest::Total(splatter->GetOutput()) > 0);
+    // BACKEND_GPU does not fall back: an error naming the limit
+    splatter->SetBackend(vtkPlumeGaussianSplatter::BACKEND_GPU);
+    vtkNew<WarningCounter> errors;
+    splatter->AddObserver(vtkCommand::ErrorEvent, errors);
+    splatter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+    splatter->Update();
+    PLUME_CHECK(errors->Count == 2);
+  }
+
   // bad input: a clear error, no output data
   {
     vtkNew<vtkPlumeGaussianSplatter> splatter;
