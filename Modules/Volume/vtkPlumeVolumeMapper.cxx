@@ -608,6 +608,12 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     program->SetUniform3fv("LightIndexDir", nLights, reinterpret_cast<float(*)[3]>(idxDirs.data()));
     program->SetUniform1fv("LightWorldPerIndex", nLights, perIndex.data());
   }
+  // the property's interpolation type (parameters are sent when the texture is bound)
+  const int filter = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
+    ? vtkTextureObject::Nearest
+    : vtkTextureObject::Linear;
+  impl.Scalars->GetTextureObject()->SetMinificationFilter(filter);
+  impl.Scalars->GetTextureObject()->SetMagnificationFilter(filter);
   impl.Scalars->GetTextureObject()->Activate();
   program->SetUniformi("Volume", impl.Scalars->GetTextureObject()->GetTextureUnit());
   impl.Table->Activate();

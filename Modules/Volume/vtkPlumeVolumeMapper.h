@@ -24,7 +24,8 @@
  * (index-space length) along the ray; the first segment is shortened by a
  * per-pixel jitter (on by default), so the segments cover exactly the part of
  * the ray inside the volume and in front of opaque geometry. The scalar is
- * sampled trilinearly (clamped to the grid).
+ * sampled trilinearly (clamped to the grid), or from the nearest node when the
+ * property's interpolation type is nearest.
  *
  * Transfer functions (vtkVolumeProperty, component 0): colour c(s) from the
  * RGB transfer function, scalar opacity α(s) per ScalarOpacityUnitDistance u

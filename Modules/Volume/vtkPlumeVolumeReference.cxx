@@ -61,12 +61,24 @@ struct Setup
   double Ambient, Diffuse, Specular, SpecularPower;
   std::vector<Vec3> LightDirs, LightColors;
   double Step, ShadowStep;
-  bool Shade = false; // composite with Phong-lit samples
+  bool Shade = false;   // composite with Phong-lit samples
+  bool Nearest = false; // nearest-node instead of trilinear sampling
   int Width, Height;
   const std::vector<float>* Depth;
 
   double Field(const Vec3& p) const
   {
+    if (this->Nearest)
+    {
+      size_t id = 0, stride = 1;
+      for (int a = 0; a < 3; ++a)
+      {
+        const double x = std::min(std::max(p[a], 0.0), double(this->Dims[a] - 1));
+        id += stride * static_cast<size_t>(std::floor(x + 0.5));
+        stride *= this->Dims[a];
+      }
+      return this->Values[id];
+    }
     int i0[3];
     double f[3];
     for (int a = 0; a < 3; ++a)
@@ -517,6 +529,7 @@ bool vtkPlumeVolumeReference::Compute(int width, int height)
   s.Specular = property->GetSpecular(0);
   s.SpecularPower = property->GetSpecularPower(0);
   s.Shade = this->Mode == COMPOSITE && property->GetShade(0) != 0;
+  s.Nearest = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION;
 
   // lights: switched-on lights (at most 4) as directions towards them
   vtkLightCollection* lights = this->Renderer->GetLights();

@@ -7,7 +7,8 @@
  * contributes, with none of the mapper's code: exact trilinear interpolation
  * of the scalars (clamped to the grid), transfer functions evaluated in double
  * (tabulated with 65536 entries over the data range), rays unprojected from
- * pixel centres in double, fine midpoint steps (Step voxels, default 1/8;
+ * pixel centres in double (nearest node instead when the property's
+ * interpolation type is nearest), fine midpoint steps (Step voxels, default 1/8;
  * finer than the mapper's default 1/2), no jitter, no early termination.
  *
  * The model (documented in vtkPlumeVolumeMapper.h): extinction
