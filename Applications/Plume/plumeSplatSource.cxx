@@ -22,6 +22,7 @@
 #include "vtkPlaneSource.h"
 #include "vtkPolyData.h"
 #include "vtkStreamTracer.h"
+#include "vtkXMLImageDataWriter.h"
 
 #include <cmath>
 #include <sstream>
@@ -81,6 +82,7 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
   const std::string linesDataset = p.String("lines", "");
   const nlohmann::json* trace = p.Object("trace");
   const std::string reference = p.String("reference", "");
+  const std::string save = p.String("save", "");
   const bool closed = p.Boolean("closed", false);
   const std::string mode = p.Choice("mode", "velocity", { "velocity", "density", "distance" });
   const double sigma = p.Number("sigma", 0.1, 1e-12);
@@ -233,6 +235,17 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
     }
     image->GetPointData()->AddArray(speed);
     image->GetPointData()->SetActiveScalars("speed");
+  }
+  if (!save.empty())
+  {
+    // the splatted field as a file, for other tools (relative: to the working directory)
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetFileName(save.c_str());
+    writer->SetInputData(image);
+    if (writer->Write() != 1)
+    {
+      throw SceneError(where + ": could not write 'save' file '" + save + "'");
+    }
   }
   return image;
 }
