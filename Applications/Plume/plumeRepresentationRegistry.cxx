@@ -11,6 +11,7 @@ const std::map<std::string, RepresentationBuilder>& Representations()
     std::map<std::string, RepresentationBuilder> b;
     RegisterCoreRepresentations(b); // glyphs, surface, contour, outline, sphere
     RegisterVolumeRepresentations(b); // volume
+    RegisterSheetRepresentations(b); // sheet
     return b;
   }();
   return builders;

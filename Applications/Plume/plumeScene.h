@@ -53,6 +53,7 @@ const std::map<std::string, RepresentationBuilder>& Representations();
 // Each file of builders adds its types (plumeRepresentationRegistry.cxx calls these).
 void RegisterCoreRepresentations(std::map<std::string, RepresentationBuilder>& builders);
 void RegisterVolumeRepresentations(std::map<std::string, RepresentationBuilder>& builders);
+void RegisterSheetRepresentations(std::map<std::string, RepresentationBuilder>& builders);
 
 /** The dataset `"source": "splat"` (plumeSplatSource.cxx). */
 vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);

@@ -192,6 +192,7 @@ public:
   vtkShaderProgram* VAOProgram = nullptr;
   bool BufferChanged = true;
   vtkNew<vtkTextureObject> DepthTexture;
+  vtkNew<vtkTextureObject> ResolvedDepth; // R32F copy of a multisampled depth buffer
   vtkNew<vtkTextureObject> AccumTexture;
   vtkNew<vtkOpenGLFramebufferObject> FBO;
   int TargetSize[2] = { 0, 0 };
@@ -228,6 +229,7 @@ public:
     this->VAO->ReleaseGraphicsResources();
     this->EmptyVAO->ReleaseGraphicsResources();
     this->DepthTexture->ReleaseGraphicsResources(window);
+    this->ResolvedDepth->ReleaseGraphicsResources(window);
     this->AccumTexture->ReleaseGraphicsResources(window);
     this->FBO->ReleaseGraphicsResources(window);
     this->Programs.clear();
@@ -576,11 +578,30 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     impl.TargetSize[0] = vpWidth;
     impl.TargetSize[1] = vpHeight;
   }
+  vtkTextureObject* depthTexture = impl.DepthTexture;
   if (bounded)
   {
     // the opaque scene's depth, as it is now (this actor renders after the opaque actors)
-    impl.DepthTexture->Activate();
-    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, vpX, vpY, vpWidth, vpHeight);
+    GLint samples = 0;
+    glGetIntegerv(GL_SAMPLES, &samples);
+    if (samples > 0)
+    {
+      // a multisampled framebuffer cannot be copied from: let the window
+      // resolve its depth, and upload it (a CPU round trip, MSAA only)
+      std::vector<float> depth(static_cast<size_t>(vpWidth) * vpHeight);
+      renWin->GetZbufferData(vpX, vpY, vpX + vpWidth - 1, vpY + vpHeight - 1, depth.data());
+      impl.ResolvedDepth->SetContext(renWin);
+      impl.ResolvedDepth->SetMinificationFilter(vtkTextureObject::Nearest);
+      impl.ResolvedDepth->SetMagnificationFilter(vtkTextureObject::Nearest);
+      impl.ResolvedDepth->Create2DFromRaw(vpWidth, vpHeight, 1, VTK_FLOAT, depth.data());
+      depthTexture = impl.ResolvedDepth;
+    }
+    else
+    {
+      impl.DepthTexture->Activate();
+      glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, vpX, vpY, vpWidth, vpHeight);
+    }
+    depthTexture->Activate();
   }
 
   {
@@ -626,7 +647,7 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     program->SetUniformi("Parallel", camera->GetParallelProjection() ? 1 : 0);
     if (bounded)
     {
-      program->SetUniformi("OpaqueDepth", impl.DepthTexture->GetTextureUnit());
+      program->SetUniformi("OpaqueDepth", depthTexture->GetTextureUnit());
     }
     impl.VAO->Bind();
     if (impl.VAOProgram != program || impl.BufferChanged)
@@ -653,7 +674,7 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     state->PopFramebufferBindings();
     if (bounded)
     {
-      impl.DepthTexture->Deactivate();
+      depthTexture->Deactivate();
     }
 
     // ---- composite: frame * T, then + SmokeColor (1 - T) if the smoke is not black

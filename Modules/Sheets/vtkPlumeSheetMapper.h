@@ -160,8 +160,12 @@ public:
 
   ///@{
   /**
-   * Sample grid over each triangle: GridA cells along the ray's footprint,
-   * GridB across it, each sampled twice. Defaults 8 x 5 (seed 000). Clamped to 1..32.
+   * Quadrature resolution. QUADRATURE_ANALYTIC: GridA Gauss-Legendre nodes on
+   * each smooth piece along the ray's footprint (GridB unused). QUADRATURE_GRID:
+   * GridA cells along the footprint, GridB across it, each sampled twice with
+   * random offsets (seed 000). Defaults 8 x 5: with the analytic quadrature, 8
+   * is the smallest GridA that met the accuracy goal on every test scene (4
+   * did not: 15 % max error with sub-pixel sigmas). Clamped to 1..32.
    */
   vtkSetClampMacro(GridA, int, 1, 32);
   vtkGetMacro(GridA, int);

@@ -16,6 +16,7 @@ const std::map<std::string, Benchmark>& Registry()
     RegisterGlyphs(r);
     RegisterSplat(r);
     RegisterVolume(r);
+    RegisterSheets(r);
     return r;
   }();
   return registry;

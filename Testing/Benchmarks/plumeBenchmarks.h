@@ -46,6 +46,7 @@ const std::map<std::string, Benchmark>& Registry();
 void RegisterGlyphs(std::map<std::string, Benchmark>& registry);
 void RegisterSplat(std::map<std::string, Benchmark>& registry);
 void RegisterVolume(std::map<std::string, Benchmark>& registry);
+void RegisterSheets(std::map<std::string, Benchmark>& registry);
 
 /** Seconds on a monotonic clock. */
 double Now();

@@ -11,7 +11,7 @@ int TestSheetAccuracy(int, char*[])
 {
   sheettest::UseThreads();
   int failures = 0;
-  const int W = 56, H = 48;
+  const int W = 48, H = 40;
   const double a[3] = { -0.8, -0.6, 0.0 }, b[3] = { 0.9, -0.4, 0.1 }, c[3] = { -0.2, 0.8, -0.1 };
 
   {
@@ -74,7 +74,7 @@ int TestSheetAccuracy(int, char*[])
   {
     // a closed vortex-ring-like torus, seen obliquely (many overlapping layers)
     const double centre[3] = { 0.1, 0, 0 };
-    auto ring = sheettest::Ring(18, 8, 0.8, 0.25, centre);
+    auto ring = sheettest::Ring(14, 6, 0.8, 0.25, centre);
     sheettest::Scene s(ring, W, H);
     s.Mapper->SetDensityArrayName("density");
     s.Mapper->SetDensityScale(0.15);
