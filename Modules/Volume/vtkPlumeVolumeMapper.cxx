@@ -90,6 +90,9 @@ public:
   vtkNew<vtkTextureObject> Occupancy;   // 1 byte per 8^3 block: 0 = transparent
   int OccupancyUpload = -1;
   int OccupancyTable = -1;
+  size_t OccupiedBlocks = 0;
+  double OccupiedMin[3] = { 0, 0, 0 }; // index-space bounds of the non-transparent blocks
+  double OccupiedMax[3] = { 0, 0, 0 };
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
   std::map<std::string, vtkShaderProgram*> Programs;
   vtkOpenGLRenderWindow* Window = nullptr;
@@ -326,6 +329,33 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       vtkErrorMacro(<< "could not create the empty-space texture");
       return;
     }
+    // index-space bounds of the non-transparent blocks
+    impl.OccupiedBlocks = occupied.size() - empty;
+    int lo[3] = { bd[0], bd[1], bd[2] }, hi[3] = { -1, -1, -1 };
+    for (int k = 0; k < bd[2]; ++k)
+    {
+      for (int j = 0; j < bd[1]; ++j)
+      {
+        for (int i = 0; i < bd[0]; ++i)
+        {
+          if (occupied[i + static_cast<size_t>(bd[0]) * (j + static_cast<size_t>(bd[1]) * k)])
+          {
+            const int ijk[3] = { i, j, k };
+            for (int a = 0; a < 3; ++a)
+            {
+              lo[a] = std::min(lo[a], ijk[a]);
+              hi[a] = std::max(hi[a], ijk[a]);
+            }
+          }
+        }
+      }
+    }
+    const double b = impl.Scalars->GetBlockSize();
+    for (int a = 0; a < 3; ++a)
+    {
+      impl.OccupiedMin[a] = hi[a] >= 0 ? lo[a] * b : 0.0;
+      impl.OccupiedMax[a] = hi[a] >= 0 ? (hi[a] + 1) * b : 0.0;
+    }
     impl.OccupancyUpload = impl.Scalars->GetUploadCount();
     impl.OccupancyTable = this->TableCount;
     this->EmptyBlockFraction = occupied.empty() ? 0.0 : double(empty) / occupied.size();
@@ -403,12 +433,24 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkMatrix3x3::Invert(linear, inv);
     vtkMatrix3x3::Transpose(inv, normal);
   }
-  float boxMin[3], boxMax[3], fdims[3];
+  float boxMin[3], boxMax[3], fdims[3], drawMin[3], drawMax[3];
   for (int a = 0; a < 3; ++a)
   {
     boxMin[a] = dims[a] > 1 ? 0.0f : -0.5f;
     boxMax[a] = dims[a] > 1 ? static_cast<float>(dims[a] - 1) : 0.5f;
     fdims[a] = static_cast<float>(dims[a]);
+    // with skipping, only the bounds of the non-transparent blocks are drawn
+    drawMin[a] = skipping ? std::max(boxMin[a], static_cast<float>(impl.OccupiedMin[a])) : boxMin[a];
+    drawMax[a] = skipping ? std::min(boxMax[a], static_cast<float>(impl.OccupiedMax[a])) : boxMax[a];
+    if (skipping && dims[a] == 1)
+    {
+      drawMin[a] = boxMin[a];
+      drawMax[a] = boxMax[a];
+    }
+  }
+  if (skipping && impl.OccupiedBlocks == 0)
+  {
+    return; // everything is transparent: nothing to draw
   }
 
   // ---- lights (world directions towards the light)
@@ -524,6 +566,8 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniformMatrix4x4("ClipToIndex", m);
   program->SetUniform3f("BoxMin", boxMin);
   program->SetUniform3f("BoxMax", boxMax);
+  program->SetUniform3f("DrawMin", drawMin);
+  program->SetUniform3f("DrawMax", drawMax);
   program->SetUniform3f("Dims", fdims);
   float m3[9];
   ToGL3(linear, m3);

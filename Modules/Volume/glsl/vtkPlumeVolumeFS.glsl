@@ -37,6 +37,8 @@ uniform int JitterSeed;
 uniform sampler3D Occupancy;        // per block: 0 = every value in it is transparent
 uniform float BlockSize;            // voxels per block
 uniform vec3 BlockDims;            // blocks per axis
+uniform vec3 DrawMin;              // bounds of the non-transparent blocks (index space)
+uniform vec3 DrawMax;
 #endif
 #ifdef PLUME_ISO
 uniform float IsoValue;             // normalised
@@ -78,28 +80,17 @@ float extinction(float u)
   return transfer(u).a;
 }
 
-// [t0, t1] of the ray p + t d inside the box, clipped to [lo, hi]
+// [t0, t1] of the ray p + t d inside the box, clipped to [lo, hi] (empty: t0 >= t1).
+// Vectorised slab test; |d| components below 1e-30 are replaced by 1e-30 so an
+// axis-parallel ray gets +-1e30 bounds (inside the slab) instead of NaN.
 vec2 clipToBox(vec3 p, vec3 d, float lo, float hi)
 {
-  vec2 t = vec2(lo, hi);
-  for (int i = 0; i < 3; ++i)
-  {
-    if (abs(d[i]) < 1e-30)
-    {
-      if (p[i] < BoxMin[i] || p[i] > BoxMax[i])
-      {
-        return vec2(1.0, 0.0);
-      }
-    }
-    else
-    {
-      float ta = (BoxMin[i] - p[i]) / d[i];
-      float tb = (BoxMax[i] - p[i]) / d[i];
-      t.x = max(t.x, min(ta, tb));
-      t.y = min(t.y, max(ta, tb));
-    }
-  }
-  return t;
+  vec3 dd = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
+  vec3 ta = (BoxMin - p) / dd;
+  vec3 tb = (BoxMax - p) / dd;
+  vec3 tn = min(ta, tb);
+  vec3 tf = max(ta, tb);
+  return vec2(max(lo, max(tn.x, max(tn.y, tn.z))), min(hi, min(tf.x, min(tf.y, tf.z))));
 }
 
 #ifdef PLUME_JITTER
@@ -225,31 +216,50 @@ void main()
   float s1 = min(segBase, t.y);
 #ifdef PLUME_SKIP
   float m = 0.0;
+  float occupiedUntil = -1.0; // the ray is in an occupied block until this t
+  // outside the bounds of the non-transparent blocks nothing contributes: end
+  // there, and start at the first segment (of the same lattice) whose midpoint
+  // is inside them
+  {
+    vec3 dd = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
+    vec3 ta = (DrawMin - p0) / dd;
+    vec3 tb = (DrawMax - p0) / dd;
+    vec3 tn = min(ta, tb);
+    vec3 tf = max(ta, tb);
+    float enter = max(tn.x, max(tn.y, tn.z));
+    t.y = min(t.y, min(tf.x, min(tf.y, tf.z)));
+    if (enter > 0.5 * (s0 + s1))
+    {
+      m = ceil((enter - segBase) / dt + 0.5);
+      s0 = segBase + (m - 1.0) * dt;
+      s1 = min(s0 + dt, t.y);
+    }
+    s1 = min(s1, t.y);
+  }
 #endif
   for (int i = 0; i <= MaxSteps + 1 && s0 < t.y; ++i)
   {
     float tm = 0.5 * (s0 + s1);
     vec3 p = p0 + tm * d;
 #ifdef PLUME_SKIP
-    ivec3 cell = clamp(ivec3(floor(p / BlockSize)), ivec3(0), ivec3(BlockDims) - 1);
-    if (texelFetch(Occupancy, cell, 0).r == 0.0)
+    if (tm >= occupiedUntil)
     {
-      // every sample whose midpoint lies in this block contributes nothing:
-      // go to the first segment whose midpoint is past the block's exit
+      ivec3 cell = clamp(ivec3(floor(p / BlockSize)), ivec3(0), ivec3(BlockDims) - 1);
+      // where the ray leaves this block
       vec3 lo = vec3(cell) * BlockSize;
-      vec3 hi = lo + BlockSize;
-      float te = t.y;
-      for (int a = 0; a < 3; ++a)
+      vec3 dd = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
+      vec3 tf = max((lo - p0) / dd, (lo + BlockSize - p0) / dd);
+      float te = min(t.y, min(tf.x, min(tf.y, tf.z)));
+      if (texelFetch(Occupancy, cell, 0).r == 0.0)
       {
-        if (abs(d[a]) > 1e-30)
-        {
-          te = min(te, max((lo[a] - p0[a]) / d[a], (hi[a] - p0[a]) / d[a]));
-        }
+        // every sample whose midpoint lies in this block contributes nothing:
+        // go to the first segment whose midpoint is past the block's exit
+        m = max(m + 1.0, ceil((te - segBase) / dt + 0.5));
+        s0 = segBase + (m - 1.0) * dt;
+        s1 = min(s0 + dt, t.y);
+        continue;
       }
-      m = max(m + 1.0, ceil((te - segBase) / dt + 0.5));
-      s0 = segBase + (m - 1.0) * dt;
-      s1 = min(s0 + dt, t.y);
-      continue;
+      occupiedUntil = max(te, tm); // no more look-ups until the ray leaves the block
     }
 #endif
     float u = sampleU(p);

@@ -4,8 +4,8 @@
 // generated from gl_VertexID (no vertex buffer). Corners are in index space.
 
 uniform mat4 IndexToClip;
-uniform vec3 BoxMin;
-uniform vec3 BoxMax;
+uniform vec3 DrawMin; // the box drawn: the volume, or only its non-transparent blocks
+uniform vec3 DrawMax;
 
 // corner c of the unit cube is (c & 1, (c >> 1) & 1, (c >> 2) & 1);
 // triangles wind counter-clockwise seen from outside
@@ -16,5 +16,5 @@ void main()
 {
   int c = Corners[gl_VertexID];
   vec3 f = vec3(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1));
-  gl_Position = IndexToClip * vec4(mix(BoxMin, BoxMax, f), 1.0);
+  gl_Position = IndexToClip * vec4(mix(DrawMin, DrawMax, f), 1.0);
 }
