@@ -9,7 +9,8 @@
  * of a vector). Origin, spacing, extent and the image direction matrix, and
  * the vtkVolume's transform, are honoured.
  *
- * How it draws (seed 004): the back faces of the volume's box are rasterised
+ * How it draws (seed 004): the back faces of the volume's box (with
+ * empty-space skipping: of the box around its non-transparent blocks) are rasterised
  * (depth clamp on, so the far plane never clips them); the fragment shader
  * builds the pixel's ray by unprojecting the near and far planes into the
  * volume's index space, intersects it with the box and marches it. Rays start
