@@ -117,6 +117,10 @@ void DrawRoots(GLenum mode, int perRoot, vtkIdType count, vtkIdType chunk, int i
   }
 }
 
+// Offset of glyphs towards the viewer in NDC z: 1/8192 in NDC is 6.1e-5 in
+// window depth, the size of VTK's own offset for coincident lines (4 × 1.6e-5).
+constexpr double CoincidentDepthOffset = 1.0 / 8192.0;
+
 // row-major 4x4 helpers (double)
 void Multiply(const double a[16], const double b[16], double c[16])
 {
@@ -664,6 +668,14 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   double mcdcRel[16];
   Multiply(modelToWorld, relToModel, mcdcRel);
   Multiply(wcdc, mcdcRel, mcdcRel);
+  // Coincident topology, as VTK does for lines: glyphs lying in a surface
+  // (2D data over a pseudocolour plot) are pulled towards the viewer by a
+  // constant window-depth offset (z_ndc -= CoincidentDepthOffset·w), so they
+  // win the depth test against polygons in the same plane.
+  for (int c = 0; c < 4; ++c)
+  {
+    mcdcRel[8 + c] -= CoincidentDepthOffset * mcdcRel[12 + c];
+  }
 
   int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
   ren->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &vpX, &vpY);

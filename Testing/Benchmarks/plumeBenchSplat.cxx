@@ -352,7 +352,7 @@ void RegisterSplat(std::map<std::string, Benchmark>& registry)
       for (const char* field : { "scalar", "vector" })
       {
         const std::string peer = std::string(field) == "scalar" ? "gsplat" : "interp";
-        for (const std::string kind : { std::string("cpu"), std::string("gpu"), peer })
+        for (const std::string& kind : { std::string("cpu"), std::string("gpu"), peer })
         {
           jobs.push_back(kind + ":" + field + ":" + CaseId(c));
         }
