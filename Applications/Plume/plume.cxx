@@ -207,6 +207,7 @@ int main(int argc, char* argv[])
 
   CLI::App app{ "plume: volumetric flow visualization with VTK" };
   app.require_subcommand(1);
+  app.fallthrough(); // --backend may also follow the subcommand
   std::string backendName = "auto";
   app.add_option("--backend", backendName, "OpenGL backend: auto (OSMesa, else X), osmesa, x")
     ->check(CLI::IsMember({ "auto", "osmesa", "x" }));
@@ -245,7 +246,8 @@ int main(int argc, char* argv[])
   }
   catch (const CLI::ParseError& e)
   {
-    return app.exit(e);
+    // --help/--version exit 0; every usage error exits 2 like other bad input.
+    return app.exit(e) == 0 ? 0 : 2;
   }
 
   plume::Backend backend = plume::Backend::Auto;

@@ -158,6 +158,19 @@ template std::array<double, 2> Parameters::Vector<2>(const std::string&, const s
 template std::array<double, 3> Parameters::Vector<3>(const std::string&, const std::array<double, 3>&);
 template std::array<double, 6> Parameters::Vector<6>(const std::string&, const std::array<double, 6>&);
 
+std::array<double, 3> Parameters::Color(const std::string& key, const std::array<double, 3>& fallback)
+{
+  const std::array<double, 3> c = this->Vector<3>(key, fallback);
+  for (double v : c)
+  {
+    if (v < 0 || v > 1)
+    {
+      this->Fail(key, "an RGB colour: 3 numbers in [0, 1]", *this->Json.find(key));
+    }
+  }
+  return c;
+}
+
 std::vector<std::string> Parameters::Strings(const std::string& key)
 {
   std::vector<std::string> out;

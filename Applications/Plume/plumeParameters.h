@@ -29,6 +29,8 @@ public:
   /** A list of exactly N finite numbers. */
   template <size_t N>
   std::array<double, N> Vector(const std::string& key, const std::array<double, N>& fallback);
+  /** An RGB colour: 3 numbers in [0, 1]. */
+  std::array<double, 3> Color(const std::string& key, const std::array<double, 3>& fallback);
   std::vector<std::string> Strings(const std::string& key);
   /** A nested object (or null if absent); its keys are the caller's to check. */
   const nlohmann::json* Object(const std::string& key);

@@ -4,9 +4,12 @@
 #include "plumeParameters.h"
 #include "plumeSceneError.h"
 
+#include "vtkCellData.h"
+#include "vtkCellDataToPointData.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkDataSet.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkScalarsToColors.h"
 
@@ -20,7 +23,7 @@ std::string DescribeArrays(vtkDataSet* data)
   for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
   {
     vtkDataArray* a = pd->GetArray(i);
-    if (a && a->GetName())
+    if (a && a->GetName() && std::string(a->GetName()) != "vtkGhostType")
     {
       list += (list.empty() ? "" : ", ") + std::string(a->GetName()) + " (" +
         std::to_string(a->GetNumberOfComponents()) + " components)";
@@ -61,6 +64,23 @@ vtkDataArray* RequirePointArray(
   return array;
 }
 
+vtkSmartPointer<vtkDataSet> WithPointArrays(vtkDataSet* data, std::initializer_list<std::string> names)
+{
+  for (const auto& name : names)
+  {
+    if (!name.empty() && !data->GetPointData()->GetArray(name.c_str()) &&
+      data->GetCellData()->GetArray(name.c_str()))
+    {
+      vtkNew<vtkCellDataToPointData> convert;
+      convert->SetInputData(data);
+      convert->PassCellDataOn();
+      convert->Update();
+      return vtkDataSet::SafeDownCast(convert->GetOutputDataObject(0));
+    }
+  }
+  return data;
+}
+
 vtkDataSet* RequireDataSet(vtkDataObject* data, const std::string& where, const std::string& name)
 {
   auto* ds = vtkDataSet::SafeDownCast(data);
@@ -74,7 +94,7 @@ vtkDataSet* RequireDataSet(vtkDataObject* data, const std::string& where, const 
 
 void Coloring::Read(Parameters& p, const std::array<double, 3>& defaultColor)
 {
-  this->Color = p.Vector<3>("color", defaultColor);
+  this->Color = p.Color("color", defaultColor);
   this->Map = p.Choice("colormap", "viridis", ColorMapNames());
   this->HasRange = p.Has("range");
   this->Range = p.Vector<2>("range", { 0, 1 });

@@ -6,6 +6,7 @@
 #include "vtkSmartPointer.h"
 
 #include <array>
+#include <initializer_list>
 #include <string>
 
 class vtkDataArray;
@@ -26,6 +27,13 @@ std::string DescribeArrays(vtkDataSet* data);
  */
 vtkDataArray* RequirePointArray(
   vtkDataSet* data, const std::string& name, int components, const std::string& where, const std::string& dataset);
+
+/**
+ * `data` itself, or — when one of `names` exists only as cell data, as is
+ * common for finite-volume results (CGNS, OpenFOAM) — a copy with the cell
+ * arrays also interpolated to the points (vtkCellDataToPointData).
+ */
+vtkSmartPointer<vtkDataSet> WithPointArrays(vtkDataSet* data, std::initializer_list<std::string> names);
 
 /** The dataset as a vtkDataSet; throws SceneError if it is still a composite. */
 vtkDataSet* RequireDataSet(vtkDataObject* data, const std::string& where, const std::string& name);

@@ -91,7 +91,15 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
       plane->SetPoint2(sp.Vector<3>("point2", { 0, 1, 0 }).data());
       const auto res = sp.Vector<2>("resolution", { 20, 20 });
       sp.RejectUnknown();
-      plane->SetResolution(std::max(1, int(res[0])), std::max(1, int(res[1])));
+      for (double r : res)
+      {
+        if (r < 1 || r > 4096 || r != std::floor(r))
+        {
+          throw SceneError(sp.Where() + ": 'resolution' must be two integers in [1, 4096], got " +
+            std::to_string(r));
+        }
+      }
+      plane->SetResolution(int(res[0]), int(res[1]));
       plane->Update();
       mapper->SetSeedData(plane->GetOutput());
     }
@@ -154,7 +162,8 @@ void BuildSurface(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   Coloring coloring;
   coloring.Read(p, { 0.8, 0.8, 0.8 });
   p.RejectUnknown();
-  vtkDataSet* data = RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset);
+  vtkSmartPointer<vtkDataSet> data =
+    WithPointArrays(RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset), { colorArray });
   vtkNew<vtkDataSetSurfaceFilter> surface;
   surface->SetInputData(data);
   AddPolyActor(surface->GetOutputPort(), data, colorArray, coloring, opacity, p.Where(), dataset, renderer, wireframe);
@@ -174,7 +183,8 @@ void BuildContour(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   {
     throw SceneError(p.Where() + ": 'values' must be a non-empty list of iso values");
   }
-  vtkDataSet* data = RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset);
+  vtkSmartPointer<vtkDataSet> data = WithPointArrays(
+    RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset), { arrayName, colorArray });
   vtkDataArray* array = RequirePointArray(data, arrayName, 1, p.Where(), dataset);
   vtkNew<vtkContourFilter> contour;
   contour->SetInputData(data);

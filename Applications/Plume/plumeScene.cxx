@@ -9,14 +9,23 @@
 #include "vtkPlumeVortexSource.h"
 
 #include "vtkCamera.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
 #include "vtkDataObject.h"
+#include "vtkDataSet.h"
+#include "vtkCellData.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkPointData.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkRenderer.h"
 #include "vtksys/SystemTools.hxx"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <unistd.h>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -25,8 +34,28 @@
 namespace plume
 {
 
+double MemoryBudgetBytes()
+{
+  // Default: half of the physical memory, so one scene cannot exhaust the machine.
+  if (const char* env = std::getenv("PLUME_MEMORY_BUDGET_MB"))
+  {
+    const double mb = std::atof(env);
+    if (mb > 0)
+    {
+      return mb * (1 << 20);
+    }
+  }
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long pageSize = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && pageSize > 0 ? 0.5 * double(pages) * double(pageSize) : 4.0 * (1 << 30);
+}
+
 nlohmann::json Scene::ReadFile(const std::string& path)
 {
+  if (vtksys::SystemTools::FileIsDirectory(path))
+  {
+    throw SceneError("scene file '" + path + "' is a directory");
+  }
   std::ifstream in(path);
   if (!in)
   {
@@ -190,6 +219,48 @@ vtkImageData* SceneDatasets::GetImage(const std::string& name, const std::string
   {
     dimension = entry.Spec["image_dimension"].get<int>();
   }
+  // Refuse a grid that cannot fit before allocating it: the resampled image
+  // holds every point and cell array of the dataset (as point data, up to 8
+  // bytes a component), the mask, and the probe's temporary copies (x2).
+  double bounds[6];
+  if (auto* ds = vtkDataSet::SafeDownCast(data))
+  {
+    ds->GetBounds(bounds);
+  }
+  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    composite->GetBounds(bounds);
+  }
+  else
+  {
+    throw SceneError(where + ": dataset '" + name + "' (" + data->GetClassName() + ") cannot be resampled");
+  }
+  int dims[3];
+  vtkPlumeResampleToImage::ComputeAutomaticDimensions(bounds, dimension, dims);
+  const double points = double(dims[0]) * dims[1] * dims[2];
+  int components = 0;
+  if (auto* ds = vtkDataSet::SafeDownCast(data))
+  {
+    for (vtkDataSetAttributes* a : { static_cast<vtkDataSetAttributes*>(ds->GetPointData()),
+           static_cast<vtkDataSetAttributes*>(ds->GetCellData()) })
+    {
+      for (int i = 0; i < a->GetNumberOfArrays(); ++i)
+      {
+        components += a->GetArray(i) ? a->GetArray(i)->GetNumberOfComponents() : 0;
+      }
+    }
+  }
+  const double bytes = points * (8.0 * std::max(components, 4) + 1.0) * 2.0;
+  const double budget = MemoryBudgetBytes();
+  if (bytes > budget)
+  {
+    std::ostringstream message;
+    message << "datasets." << name << ": 'image_dimension' " << dimension << " resamples onto " << dims[0] << "x"
+            << dims[1] << "x" << dims[2] << " points, about " << std::llround(bytes / (1 << 20))
+            << " MB, over the memory budget of " << std::llround(budget / (1 << 20))
+            << " MB (PLUME_MEMORY_BUDGET_MB); choose a smaller image_dimension";
+    throw SceneError(message.str());
+  }
   vtkNew<vtkPlumeResampleToImage> resample;
   resample->SetInputData(data);
   resample->SetMaximumDimension(dimension);
@@ -310,7 +381,7 @@ void BuildLights(const nlohmann::json* spec, vtkRenderer* renderer)
     const auto focal = p.Vector<3>("focal_point", { 0, 0, 0 });
     light->SetPosition(position.data());
     light->SetFocalPoint(focal.data());
-    const auto color = p.Vector<3>("color", { 1, 1, 1 });
+    const auto color = p.Color("color", { 1, 1, 1 });
     light->SetColor(color.data());
     light->SetIntensity(p.Number("intensity", 1.0, 0.0));
     light->SetPositional(p.Boolean("positional", false));
@@ -341,11 +412,11 @@ void Scene::Build(
     options.Height = static_cast<int>(size[1]);
   }
 
-  const auto background = top.Vector<3>("background", { 0.1, 0.1, 0.12 });
+  const auto background = top.Color("background", { 0.1, 0.1, 0.12 });
   renderer->SetBackground(background.data());
   if (top.Has("background2"))
   {
-    const auto background2 = top.Vector<3>("background2", { 0, 0, 0 });
+    const auto background2 = top.Color("background2", { 0, 0, 0 });
     renderer->SetBackground2(background2.data());
     renderer->GradientBackgroundOn();
   }

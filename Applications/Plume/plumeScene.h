@@ -21,6 +21,9 @@ namespace plume
 {
 class Parameters;
 
+/** Bytes a scene may allocate for one resampled grid: $PLUME_MEMORY_BUDGET_MB, else half the RAM. */
+double MemoryBudgetBytes();
+
 /** Datasets of a scene, loaded once each, by name. */
 class SceneDatasets
 {
