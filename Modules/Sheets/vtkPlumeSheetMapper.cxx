@@ -521,11 +521,13 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
 
   // ---- programs
   const bool bounded = this->BoundedByDepth;
+  const bool adaptive = this->AdaptiveSampling && this->Quadrature == QUADRATURE_ANALYTIC;
   const std::set<std::string> enabled = { bounded ? "BOUNDED" : "UNBOUNDED",
-    this->ThinSheet ? "THIN" : "THICK", this->Quadrature == QUADRATURE_GRID ? "GRID" : "ANALYTIC" };
+    this->ThinSheet ? "THIN" : "THICK", this->Quadrature == QUADRATURE_GRID ? "GRID" : "ANALYTIC",
+    adaptive ? "ADAPTIVE" : "FIXED" };
   std::ostringstream defines;
   defines << "#define PLUME_GRID_A " << this->GridA << "\n#define PLUME_GRID_B " << this->GridB
-          << "\n";
+          << "\n#define PLUME_SMALL_TRIANGLE 0.5\n";
   if (this->Quadrature == QUADRATURE_ANALYTIC)
   {
     std::vector<double> x, w;
@@ -544,7 +546,7 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     defines << "\n";
   }
   std::ostringstream key;
-  key << "S" << (this->Quadrature == QUADRATURE_GRID ? "G" : "A") << (bounded ? "B" : "U") << (this->ThinSheet ? "T" : "K") << this->GridA << "x"
+  key << "S" << (this->Quadrature == QUADRATURE_GRID ? "G" : "A") << (bounded ? "B" : "U") << (this->ThinSheet ? "T" : "K") << (adaptive ? "a" : "f") << this->GridA << "x"
       << this->GridB;
   vtkShaderProgram* program = impl.Program(renWin, key.str(), vtkPlumeSheetVS, vtkPlumeSheetFS,
     vtkPlumeSheetGS, enabled, defines.str());
@@ -740,6 +742,7 @@ void vtkPlumeSheetMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridA: " << this->GridA << "\n";
   os << indent << "GridB: " << this->GridB << "\n";
   os << indent << "Quadrature: " << this->Quadrature << "\n";
+  os << indent << "AdaptiveSampling: " << this->AdaptiveSampling << "\n";
   os << indent << "UploadCount: " << this->UploadCount << "\n";
   os << indent << "TriangleCount: " << this->TriangleCount << "\n";
 }
