@@ -1,5 +1,7 @@
 #include "vtkPlumeVelocityGlyphMapper.h"
 
+#include "vtkPlumeShaderVariants.h"
+
 #include "vtkPlumeGlyphFS.h"
 #include "vtkPlumeGlyphGS.h"
 #include "vtkPlumeGlyphLineVS.h"
@@ -42,51 +44,6 @@
 
 namespace
 {
-// Keep only the `//PLUME::IF name...` ... `//PLUME::ENDIF` blocks (not nested)
-// where one of the names is enabled, and put `defines` in place of the
-// `//PLUME::Defines` tag.
-std::string SelectVariant(
-  const char* source, const std::set<std::string>& enabled, const std::string& defines)
-{
-  std::istringstream in(source);
-  std::string line;
-  std::string out;
-  bool keep = true;
-  while (std::getline(in, line))
-  {
-    const size_t first = line.find_first_not_of(" \t");
-    const std::string trimmed = first == std::string::npos ? std::string() : line.substr(first);
-    if (trimmed.compare(0, 12, "//PLUME::IF ") == 0)
-    {
-      std::istringstream names(trimmed.substr(12));
-      std::string name;
-      keep = false;
-      while (names >> name)
-      {
-        keep = keep || enabled.count(name) > 0;
-      }
-      continue;
-    }
-    if (trimmed.compare(0, 14, "//PLUME::ENDIF") == 0)
-    {
-      keep = true;
-      continue;
-    }
-    if (!keep)
-    {
-      continue;
-    }
-    if (trimmed.compare(0, 16, "//PLUME::Defines") == 0)
-    {
-      out += defines;
-      continue;
-    }
-    out += line;
-    out += '\n';
-  }
-  return out;
-}
-
 // Draw `count` roots, `perRoot` vertices each, in draws of at most `chunk` roots
 // (gl_VertexID keeps counting across draws: it includes `first`). With
 // `inFlight` > 0, a fence after each draw and a wait for the draw `inFlight`
@@ -835,9 +792,9 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
             << "#define PLUME_POINTS " << segments + 1 << "\n"
             << "#define PLUME_VERTICES_WIDE " << 2 * (segments + 1) << "\n";
     const std::string vs =
-      SelectVariant(lineVS ? vtkPlumeGlyphLineVS : vtkPlumeGlyphVS, enabled, defines.str());
-    const std::string gs = lineVS ? std::string() : SelectVariant(vtkPlumeGlyphGS, enabled, defines.str());
-    const std::string fs = SelectVariant(vtkPlumeGlyphFS, enabled, defines.str());
+      vtkPlumeShaderVariants::Select(lineVS ? vtkPlumeGlyphLineVS : vtkPlumeGlyphVS, enabled, defines.str());
+    const std::string gs = lineVS ? std::string() : vtkPlumeShaderVariants::Select(vtkPlumeGlyphGS, enabled, defines.str());
+    const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeGlyphFS, enabled, defines.str());
     program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
     cached = program;
   }

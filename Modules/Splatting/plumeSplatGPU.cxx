@@ -1,4 +1,5 @@
 #include "plumeSplatGPU.h"
+#include "vtkPlumeShaderVariants.h"
 
 #include "vtkPlumeSplatFS.h"
 #include "vtkPlumeSplatGS.h"
@@ -33,49 +34,6 @@ namespace
 // Per-batch limits: floats in the buffers hold integers exactly below 2^24.
 constexpr size_t MaxBatchSplats = 1 << 16;
 constexpr size_t MaxBatchWeights = 1 << 22;
-
-// Keep only the `//PLUME::IF name...` ... `//PLUME::ENDIF` blocks (not nested)
-// whose names are enabled, and put `defines` at `//PLUME::Defines`. (The same
-// convention as the glyph mapper's shaders; that copy is private to its file.)
-std::string SelectVariant(const char* source, const std::set<std::string>& enabled, const std::string& defines)
-{
-  std::istringstream in(source);
-  std::string line, out;
-  bool keep = true;
-  while (std::getline(in, line))
-  {
-    const size_t first = line.find_first_not_of(" \t");
-    const std::string trimmed = first == std::string::npos ? std::string() : line.substr(first);
-    if (trimmed.compare(0, 12, "//PLUME::IF ") == 0)
-    {
-      std::istringstream names(trimmed.substr(12));
-      std::string name;
-      keep = false;
-      while (names >> name)
-      {
-        keep = keep || enabled.count(name) > 0;
-      }
-      continue;
-    }
-    if (trimmed.compare(0, 14, "//PLUME::ENDIF") == 0)
-    {
-      keep = true;
-      continue;
-    }
-    if (!keep)
-    {
-      continue;
-    }
-    if (trimmed.compare(0, 16, "//PLUME::Defines") == 0)
-    {
-      out += defines;
-      continue;
-    }
-    out += line;
-    out += '\n';
-  }
-  return out;
-}
 
 std::string DrainErrors()
 {
@@ -271,9 +229,9 @@ bool SplatGPU::Run(vtkRenderWindow* window, const Grid& grid, const Settings& se
   if (!cached)
   {
     const std::set<std::string> enabled = { key };
-    const std::string vs = SelectVariant(vtkPlumeSplatVS, enabled, "");
-    const std::string gs = SelectVariant(vtkPlumeSplatGS, enabled, "");
-    const std::string fs = SelectVariant(vtkPlumeSplatFS, enabled, "");
+    const std::string vs = vtkPlumeShaderVariants::Select(vtkPlumeSplatVS, enabled, "");
+    const std::string gs = vtkPlumeShaderVariants::Select(vtkPlumeSplatGS, enabled, "");
+    const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeSplatFS, enabled, "");
     program = win->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
     cached = program;
   }

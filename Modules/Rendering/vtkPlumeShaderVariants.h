@@ -1,0 +1,28 @@
+/**
+ * @class   vtkPlumeShaderVariants
+ * @brief   picks the shader variant a scene needs out of a .glsl template
+ *
+ * Plume's .glsl files hold every feature of a renderer; blocks between
+ * `//PLUME::IF name1 name2 ...` and `//PLUME::ENDIF` (not nested) are kept
+ * only when one of their names is enabled, and the `//PLUME::Defines` tag is
+ * replaced by the given #define lines. So only the features in use are
+ * compiled, and each variant can be cached by its feature set.
+ */
+#ifndef vtkPlumeShaderVariants_h
+#define vtkPlumeShaderVariants_h
+
+#include "PlumeRenderingModule.h" // For export macro
+#include "vtkWrappingHints.h"     // For VTK_WRAPEXCLUDE
+
+#include <set>    // For std::set
+#include <string> // For std::string
+
+class PLUMERENDERING_EXPORT VTK_WRAPEXCLUDE vtkPlumeShaderVariants
+{
+public:
+  /** The source with the disabled blocks removed and the defines inserted. */
+  static std::string Select(
+    const char* source, const std::set<std::string>& enabled, const std::string& defines);
+};
+
+#endif
