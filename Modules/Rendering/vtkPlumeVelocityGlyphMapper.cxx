@@ -229,13 +229,26 @@ public:
     const vtkIdType n = image->GetNumberOfPoints();
     std::vector<float> slab(4 * static_cast<size_t>(std::min(n, SlabPoints)));
     double range[2] = { VTK_DOUBLE_MAX, -1.0 };
+    double low[3] = { 0, 0, 0 }, high[3] = { 0, 0, 0 };
     for (vtkIdType begin = 0; begin < n; begin += SlabPoints)
     {
-      ConvertVelocity(vectors, mask, begin, std::min(n, begin + SlabPoints), slab.data(), range);
+      const vtkIdType end = std::min(n, begin + SlabPoints);
+      ConvertVelocity(vectors, mask, begin, end, slab.data(), range);
+      for (vtkIdType i = 0; i < end - begin; ++i)
+      {
+        const float* v = &slab[4 * static_cast<size_t>(i)];
+        for (int a = 0; a < 3 && v[3] > 0.f; ++a)
+        {
+          low[a] = std::min(low[a], double(v[a]));
+          high[a] = std::max(high[a], double(v[a]));
+        }
+      }
     }
     const bool any = range[1] >= 0.0;
     this->SpeedRange[0] = any ? range[0] : 0.0;
     this->SpeedRange[1] = any ? range[1] : 0.0;
+    std::copy(low, low + 3, this->ComponentLow);
+    std::copy(high, high + 3, this->ComponentHigh);
   }
 
   // Velocity texture (internal format `internalFormat`) filled from whole
@@ -289,6 +302,9 @@ public:
   Signature Uploaded;       // velocity texture content
   Signature StatsSignature; // SpeedRange content
   double SpeedRange[2] = { 0, 0 };
+  // Per-axis range of the valid vectors, widened to include 0 (for bounds).
+  double ComponentLow[3] = { 0, 0, 0 };
+  double ComponentHigh[3] = { 0, 0, 0 };
   vtkMTimeType LUTTime = 0;
   double LUTRange[2] = { 0, 0 };
   vtkScalarsToColors* LUTObject = nullptr;
@@ -462,7 +478,7 @@ double* vtkPlumeVelocityGlyphMapper::GetBounds()
       }
     }
   }
-  // pad by the longest possible glyph (a streamlet's arc length is also at most Scale·max|v|)
+  // pad by how far glyphs can reach along each axis
   vtkDataArray* vectors = nullptr;
   vtkDataArray* mask = nullptr;
   std::string error;
@@ -476,25 +492,28 @@ double* vtkPlumeVelocityGlyphMapper::GetBounds()
       this->Impl->BuildStatistics(image, vectors, mask);
       this->Impl->StatsSignature = sig;
     }
-    double pad = std::fabs(this->Scale) * this->Impl->SpeedRange[1];
-    // absurd vectors (e.g. 1e30) must not wreck the automatic clipping range:
-    // cap the padding at 10 data diagonals
+    // A glyph's displacement along each axis is Scale times a convex
+    // combination of sampled vectors (straight lines, RK2 and RK4 steps alike,
+    // with trilinear sampling), so it lies within Scale x that axis's range.
     const double* ib = image->GetBounds();
     const double diagonal =
       std::sqrt((ib[1] - ib[0]) * (ib[1] - ib[0]) + (ib[3] - ib[2]) * (ib[3] - ib[2]) +
         (ib[5] - ib[4]) * (ib[5] - ib[4]));
-    if (diagonal > 0)
-    {
-      pad = std::min(pad, 10.0 * diagonal);
-    }
-    if (!std::isfinite(pad))
-    {
-      pad = 0.0;
-    }
     for (int a = 0; a < 3; ++a)
     {
-      this->Bounds[2 * a] -= pad;
-      this->Bounds[2 * a + 1] += pad;
+      double lo = this->Scale * this->Impl->ComponentLow[a];
+      double hi = this->Scale * this->Impl->ComponentHigh[a];
+      if (lo > hi)
+      {
+        std::swap(lo, hi); // negative Scale
+      }
+      // absurd vectors (e.g. 1e30) must not wreck the automatic clipping
+      // range: cap the padding at 10 data diagonals
+      const double cap = diagonal > 0 ? 10.0 * diagonal : VTK_DOUBLE_MAX;
+      lo = std::isfinite(lo) ? std::max(lo, -cap) : 0.0;
+      hi = std::isfinite(hi) ? std::min(hi, cap) : 0.0;
+      this->Bounds[2 * a] += std::min(lo, 0.0);
+      this->Bounds[2 * a + 1] += std::max(hi, 0.0);
     }
   }
   return this->Bounds;

@@ -259,10 +259,12 @@ public:
   void Render(vtkRenderer* ren, vtkActor* actor) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
   /**
-   * The image bounds (plus the seed bounds in ROOTS_SEEDS mode), padded on
-   * every side by the longest possible glyph, Scale·max|v| over the valid
-   * nodes (a streamlet's arc is no longer), so VTK's automatic clipping range
-   * never cuts glyphs. The padding is capped at 10 data diagonals so that
+   * The image bounds (plus the seed bounds in ROOTS_SEEDS mode), extended
+   * along each axis by how far a glyph can reach: Scale times the range of
+   * that velocity component over the valid nodes (straight glyphs and RK
+   * streamlets alike move by convex combinations of sampled vectors), so
+   * VTK's automatic clipping range never cuts glyphs and camera resets frame
+   * the data rather than a worst case. The padding is capped at 10 data diagonals so that
    * absurd vectors (1e30) do not ruin the automatic clipping range; glyphs
    * longer than that may be clipped by the far plane.
    */
