@@ -1,5 +1,7 @@
 #include "vtkPlumeSheetMapper.h"
 
+#include "vtkPlumeShaderVariants.h"
+
 #include "vtkPlumeSheetCompositeFS.h"
 #include "vtkPlumeSheetCompositeVS.h"
 #include "vtkPlumeSheetFS.h"
@@ -43,52 +45,6 @@
 
 namespace
 {
-// Keep only the `//PLUME::IF name...` ... `//PLUME::ENDIF` blocks (not nested)
-// where one of the names is enabled, and put `defines` in place of the
-// `//PLUME::Defines` tag. (Same convention as vtkPlumeVelocityGlyphMapper,
-// whose copy is private to that file.)
-std::string SelectVariant(
-  const char* source, const std::set<std::string>& enabled, const std::string& defines)
-{
-  std::istringstream in(source);
-  std::string line;
-  std::string out;
-  bool keep = true;
-  while (std::getline(in, line))
-  {
-    const size_t first = line.find_first_not_of(" \t");
-    const std::string trimmed = first == std::string::npos ? std::string() : line.substr(first);
-    if (trimmed.compare(0, 12, "//PLUME::IF ") == 0)
-    {
-      std::istringstream names(trimmed.substr(12));
-      std::string name;
-      keep = false;
-      while (names >> name)
-      {
-        keep = keep || enabled.count(name) > 0;
-      }
-      continue;
-    }
-    if (trimmed.compare(0, 14, "//PLUME::ENDIF") == 0)
-    {
-      keep = true;
-      continue;
-    }
-    if (!keep)
-    {
-      continue;
-    }
-    if (trimmed.compare(0, 16, "//PLUME::Defines") == 0)
-    {
-      out += defines;
-      continue;
-    }
-    out += line;
-    out += '\n';
-  }
-  return out;
-}
-
 // row-major 4x4 (double) -> column-major floats for GL
 void ToGL(const double m[16], float out[16])
 {
@@ -206,9 +162,9 @@ public:
     vtkShaderProgram* program = nullptr;
     if (!cached)
     {
-      const std::string v = SelectVariant(vs, enabled, defines);
-      const std::string f = SelectVariant(fs, enabled, defines);
-      const std::string g = gs ? SelectVariant(gs, enabled, defines) : std::string();
+      const std::string v = vtkPlumeShaderVariants::Select(vs, enabled, defines);
+      const std::string f = vtkPlumeShaderVariants::Select(fs, enabled, defines);
+      const std::string g = gs ? vtkPlumeShaderVariants::Select(gs, enabled, defines) : std::string();
       program = renWin->GetShaderCache()->ReadyShaderProgram(v.c_str(), f.c_str(), g.c_str());
       cached = program;
     }
