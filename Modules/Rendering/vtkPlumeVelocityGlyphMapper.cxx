@@ -889,8 +889,17 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_TRUE);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  // Opaque glyphs (no fade, actor opacity 1) need no blending: the result is
+  // the same and llvmpipe skips the read-modify-write of every fragment.
+  if (this->RootAlpha >= 1.0 && property->GetOpacity() >= 1.0)
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  else
+  {
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
 
   // chunked draws keep at most two draws queued in the driver (see DrawRoots)
   const vtkIdType chunk = this->MaximumGlyphsPerDraw > 0 ? this->MaximumGlyphsPerDraw : VTK_ID_MAX;

@@ -81,6 +81,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
                                      : vtkPlumeVelocityGlyphMapper::ROOTS_SCREEN_ADAPTIVE);
     ours->SetLatticeStride(1);
     ours->SetScale(GlyphScale);
+    ours->SetRootAlpha(1.0); // opaque lines, as the peers draw them
     ours->SetLookupTable(Table(speedRange[1]));
     ours->SetUseDataRange(false);
     ours->SetScalarRange(speedRange);
