@@ -78,27 +78,6 @@ void DrawRoots(GLenum mode, int perRoot, vtkIdType count, vtkIdType chunk, int i
 // window depth, the size of VTK's own offset for coincident lines (4 × 1.6e-5).
 constexpr double CoincidentDepthOffset = 1.0 / 8192.0;
 
-// row-major 4x4 helpers (double)
-void Multiply(const double a[16], const double b[16], double c[16])
-{
-  double r[16];
-  vtkMatrix4x4::Multiply4x4(a, b, r);
-  std::copy(r, r + 16, c);
-}
-
-void Transpose(const double a[16], double b[16])
-{
-  double r[16];
-  for (int i = 0; i < 4; ++i)
-  {
-    for (int j = 0; j < 4; ++j)
-    {
-      r[4 * i + j] = a[4 * j + i];
-    }
-  }
-  std::copy(r, r + 16, b);
-}
-
 // GL wants column-major floats
 void ToGL(const double m[16], float out[16])
 {
@@ -628,7 +607,7 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   vtkMatrix3x3* normals = nullptr;
   camera->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdcT); // transposed for GL
   double wcdc[16];
-  Transpose(wcdcT->GetData(), wcdc);
+  vtkMatrix4x4::Transpose(wcdcT->GetData(), wcdc);
   double modelToWorld[16];
   vtkMatrix4x4::Identity(modelToWorld);
   if (!actor->GetIsIdentity())
@@ -642,8 +621,8 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     relToModel[4 * r + 3] = centre[r];
   }
   double mcdcRel[16];
-  Multiply(modelToWorld, relToModel, mcdcRel);
-  Multiply(wcdc, mcdcRel, mcdcRel);
+  vtkMatrix4x4::Multiply4x4(modelToWorld, relToModel, mcdcRel);
+  vtkMatrix4x4::Multiply4x4(wcdc, mcdcRel, mcdcRel);
   // Coincident topology, as VTK does for lines: glyphs lying in a surface
   // (2D data over a pseudocolour plot) are pulled towards the viewer by a
   // constant window-depth offset (z_ndc -= CoincidentDepthOffset·w), so they
@@ -678,7 +657,7 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
       double ymin = VTK_DOUBLE_MAX, ymax = -VTK_DOUBLE_MAX;
       bool behind = false;
       double indexToClip[16];
-      Multiply(mcdcRel, indexToRel, indexToClip);
+      vtkMatrix4x4::Multiply4x4(mcdcRel, indexToRel, indexToClip);
       for (int corner = 0; corner < 8; ++corner)
       {
         const double idx[3] = { (corner & 1) ? dims[0] - 1.0 : 0.0,

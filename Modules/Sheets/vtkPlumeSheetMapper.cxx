@@ -57,26 +57,6 @@ void ToGL(const double m[16], float out[16])
   }
 }
 
-void Transpose(const double a[16], double b[16])
-{
-  double r[16];
-  for (int i = 0; i < 4; ++i)
-  {
-    for (int j = 0; j < 4; ++j)
-    {
-      r[4 * i + j] = a[4 * j + i];
-    }
-  }
-  std::copy(r, r + 16, b);
-}
-
-void Multiply(const double a[16], const double b[16], double c[16])
-{
-  double r[16];
-  vtkMatrix4x4::Multiply4x4(a, b, r);
-  std::copy(r, r + 16, c);
-}
-
 // Gauss-Legendre nodes and weights on [-1, 1] (Newton on the Legendre polynomial)
 void GaussLegendre(int n, std::vector<double>& x, std::vector<double>& w)
 {
@@ -447,8 +427,8 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
   vtkMatrix3x3* normals = nullptr;
   camera->GetKeyMatrices(ren, wcvcT, normals, vcdcT, wcdcT);
   double wcvc[16], vcdc[16], dcvc[16];
-  Transpose(wcvcT->GetData(), wcvc);
-  Transpose(vcdcT->GetData(), vcdc);
+  vtkMatrix4x4::Transpose(wcvcT->GetData(), wcvc);
+  vtkMatrix4x4::Transpose(vcdcT->GetData(), vcdc);
   vtkMatrix4x4::Invert(vcdc, dcvc);
   double modelToWorld[16];
   vtkMatrix4x4::Identity(modelToWorld);
@@ -463,8 +443,8 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     relToModel[4 * r + 3] = impl.Centre[r];
   }
   double mcvcRel[16];
-  Multiply(modelToWorld, relToModel, mcvcRel);
-  Multiply(wcvc, mcvcRel, mcvcRel);
+  vtkMatrix4x4::Multiply4x4(modelToWorld, relToModel, mcvcRel);
+  vtkMatrix4x4::Multiply4x4(wcvc, mcvcRel, mcvcRel);
   double m3[3][3];
   for (int r = 0; r < 3; ++r)
   {
