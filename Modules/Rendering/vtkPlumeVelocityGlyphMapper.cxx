@@ -1,6 +1,7 @@
 #include "vtkPlumeVelocityGlyphMapper.h"
 
 #include "vtkPlumeShaderVariants.h"
+#include "vtkPlumeTextureHandOver.h"
 
 #include "vtkPlumeGlyphFS.h"
 #include "vtkPlumeGlyphGS.h"
@@ -21,6 +22,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLCamera.h"
+#include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
@@ -280,6 +282,7 @@ public:
   // upload bookkeeping
   Signature Uploaded;       // velocity texture content
   Signature StatsSignature; // SpeedRange content
+  Signature HandedSignature; // the last handed-over texture's data (counts hand-overs)
   double SpeedRange[2] = { 0, 0 };
   // Per-axis range of the valid vectors, widened to include 0 (for bounds).
   double ComponentLow[3] = { 0, 0, 0 };
@@ -287,6 +290,7 @@ public:
   vtkMTimeType LUTTime = 0;
   double LUTRange[2] = { 0, 0 };
   vtkScalarsToColors* LUTObject = nullptr;
+  bool LUTOpaque = true; // every entry of the uploaded table has alpha 255
   static constexpr int LUTSize = 256;
   vtkMTimeType SeedTime = 0;
   vtkDataSet* SeedObject = nullptr;
@@ -562,7 +566,41 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   // ---- velocity texture: only when the data changed
   Internals::Signature sig{ image, vectors, mask,
     std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 }) };
-  if (sig != impl.Uploaded || !impl.VelocityTexture->GetHandle())
+  // A GPU copy handed over by the filter that computed the array (same
+  // context, array unchanged since, our layout) replaces our own upload.
+  vtkTextureObject* handed = mask ? nullptr : vtkPlumeTextureHandOver::Find(vectors, renWin);
+  if (handed &&
+    (handed->GetWidth() != static_cast<unsigned int>(dims[0]) ||
+      handed->GetHeight() != static_cast<unsigned int>(dims[1]) ||
+      handed->GetDepth() != static_cast<unsigned int>(dims[2]) || handed->GetComponents() != 4 ||
+      handed->GetVTKDataType() != VTK_FLOAT))
+  {
+    handed = nullptr;
+  }
+  if (handed)
+  {
+    if (impl.VelocityTexture->GetHandle())
+    {
+      impl.VelocityTexture->ReleaseGraphicsResources(renWin); // not needed meanwhile
+    }
+    impl.Uploaded = Internals::Signature();
+    if (sig != impl.StatsSignature)
+    {
+      impl.BuildStatistics(image, vectors, mask);
+      impl.StatsSignature = sig;
+    }
+    handed->SetWrapS(vtkTextureObject::ClampToEdge);
+    handed->SetWrapT(vtkTextureObject::ClampToEdge);
+    handed->SetWrapR(vtkTextureObject::ClampToEdge);
+    handed->SetMinificationFilter(vtkTextureObject::Linear);
+    handed->SetMagnificationFilter(vtkTextureObject::Linear);
+    if (sig != impl.HandedSignature)
+    {
+      impl.HandedSignature = sig;
+      ++this->HandOverCount;
+    }
+  }
+  else if (sig != impl.Uploaded || !impl.VelocityTexture->GetHandle())
   {
     const bool uploaded = impl.UploadVelocity(renWin, vectors, mask, dims, GL_RGBA32F);
     impl.StatsSignature = sig;
@@ -751,6 +789,11 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
         const unsigned char* rgba = lut->MapValue(value);
         std::copy(rgba, rgba + 4, &table[4 * i]);
       }
+      impl.LUTOpaque = true;
+      for (int i = 0; i < Internals::LUTSize; ++i)
+      {
+        impl.LUTOpaque = impl.LUTOpaque && table[4 * i + 3] == 255;
+      }
       impl.LUTTexture->SetContext(renWin);
       impl.LUTTexture->SetWrapS(vtkTextureObject::ClampToEdge);
       impl.LUTTexture->SetWrapT(vtkTextureObject::ClampToEdge);
@@ -776,29 +819,71 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   const bool wide = this->LineWidth > 1.0;
   const bool lineVS = !seedMode && integrator == "STRAIGHT" && !wide &&
     this->StraightLineShader == VERTEX_SHADER;
+  // Opaque glyphs (no fade, actor opacity 1, an opaque table or solid colour)
+  // need no alpha varying, no discard and no blending: the same image with
+  // less work per fragment, which dominates dense glyphs on llvmpipe.
+  vtkProperty* property = actor->GetProperty();
+  const bool opaque = this->RootAlpha >= 1.0 && property->GetOpacity() >= 1.0 &&
+    (!useLUT || impl.LUTOpaque);
   const std::set<std::string> enabled = { seedMode ? "SEEDS" : "LATTICE", integrator,
-    wide ? "WIDE" : "THIN", useLUT ? "LUT" : "SOLID" };
+    wide ? "WIDE" : "THIN", useLUT ? "LUT" : "SOLID", opaque ? "OPAQUE" : "FADE" };
   std::ostringstream key;
   key << (lineVS ? "V" : "G") << (seedMode ? "S" : "L") << integrator << segments
-      << (wide ? "W" : "T") << (useLUT ? "C" : "P");
-  vtkShaderProgram*& cached = impl.Programs[key.str()];
-  vtkShaderProgram* program = nullptr;
-  if (!cached)
+      << (wide ? "W" : "T") << (useLUT ? "C" : "P") << (opaque ? "O" : "F");
+  // A translucent actor is drawn inside VTK's translucent pass (order-
+  // independent transparency or depth peeling), which rewrites fragment
+  // shaders through the actor's render-pass keys and owns the blending.
+  std::vector<vtkOpenGLRenderPass*> passes;
+  vtkInformation* passKeys = actor->GetPropertyKeys();
+  if (passKeys && passKeys->Has(vtkOpenGLRenderPass::RenderPasses()))
   {
+    for (int i = 0; i < passKeys->Length(vtkOpenGLRenderPass::RenderPasses()); ++i)
+    {
+      passes.push_back(
+        static_cast<vtkOpenGLRenderPass*>(passKeys->Get(vtkOpenGLRenderPass::RenderPasses(), i)));
+    }
+  }
+  auto sources = [&](std::string& vs, std::string& gs, std::string& fs) {
     std::ostringstream defines;
     defines << "#define PLUME_SEGMENTS " << segments << "\n"
             << "#define PLUME_POINTS " << segments + 1 << "\n"
             << "#define PLUME_VERTICES_WIDE " << 2 * (segments + 1) << "\n";
-    const std::string vs =
-      vtkPlumeShaderVariants::Select(lineVS ? vtkPlumeGlyphLineVS : vtkPlumeGlyphVS, enabled, defines.str());
-    const std::string gs = lineVS ? std::string() : vtkPlumeShaderVariants::Select(vtkPlumeGlyphGS, enabled, defines.str());
-    const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeGlyphFS, enabled, defines.str());
+    vs = vtkPlumeShaderVariants::Select(lineVS ? vtkPlumeGlyphLineVS : vtkPlumeGlyphVS, enabled, defines.str());
+    gs = lineVS ? std::string() : vtkPlumeShaderVariants::Select(vtkPlumeGlyphGS, enabled, defines.str());
+    fs = vtkPlumeShaderVariants::Select(vtkPlumeGlyphFS, enabled, defines.str());
+  };
+  vtkShaderProgram* program = nullptr;
+  if (!passes.empty())
+  {
+    // the passes' replacements change between their stages: the shader
+    // cache (keyed by the final source) keeps one program per stage
+    std::string vs, gs, fs;
+    sources(vs, gs, fs);
+    for (vtkOpenGLRenderPass* pass : passes)
+    {
+      pass->PreReplaceShaderValues(vs, gs, fs, this, actor);
+    }
+    for (vtkOpenGLRenderPass* pass : passes)
+    {
+      pass->PostReplaceShaderValues(vs, gs, fs, this, actor);
+    }
     program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
-    cached = program;
+    key << "+passes";
   }
   else
   {
-    program = renWin->GetShaderCache()->ReadyShaderProgram(cached);
+    vtkShaderProgram*& cached = impl.Programs[key.str()];
+    if (!cached)
+    {
+      std::string vs, gs, fs;
+      sources(vs, gs, fs);
+      program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+      cached = program;
+    }
+    else
+    {
+      program = renWin->GetShaderCache()->ReadyShaderProgram(cached);
+    }
   }
   if (!program)
   {
@@ -831,7 +916,6 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   const float cr[2] = { static_cast<float>(colorRange[0]),
     span > 0 && std::isfinite(1.0 / span) ? static_cast<float>(1.0 / span) : 0.0f };
   program->SetUniform2f("ColorRange", cr);
-  vtkProperty* property = actor->GetProperty();
   program->SetUniformf("Opacity", static_cast<float>(property->GetOpacity()));
   if (wide)
   {
@@ -845,8 +929,9 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     program->SetUniform2i("StridedDims", sd);
     program->SetUniformi("Stride", stride);
   }
-  impl.VelocityTexture->Activate();
-  program->SetUniformi("Velocity", impl.VelocityTexture->GetTextureUnit());
+  vtkTextureObject* velocityTexture = handed ? handed : impl.VelocityTexture.GetPointer();
+  velocityTexture->Activate();
+  program->SetUniformi("Velocity", velocityTexture->GetTextureUnit());
   if (useLUT)
   {
     impl.LUTTexture->Activate();
@@ -866,19 +951,30 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_TRUE);
-  // Opaque glyphs (no fade, actor opacity 1) need no blending: the result is
-  // the same and llvmpipe skips the read-modify-write of every fragment.
-  if (this->RootAlpha >= 1.0 && property->GetOpacity() >= 1.0)
+  if (passes.empty()) // else the translucent pass has set depth and blending up
   {
-    state->vtkglDisable(GL_BLEND);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_TRUE);
+    // opaque: no blending, the same result without the read-modify-write of every fragment
+    if (opaque)
+    {
+      state->vtkglDisable(GL_BLEND);
+    }
+    else
+    {
+      state->vtkglEnable(GL_BLEND);
+      state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    }
   }
-  else
-  {
-    state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  }
+  auto passParameters = [&](vtkOpenGLVertexArrayObject* vao) {
+    for (vtkOpenGLRenderPass* pass : passes)
+    {
+      if (!pass->SetShaderParameters(program, this, actor, vao))
+      {
+        vtkErrorMacro(<< "render pass " << pass->GetClassName() << " could not set its shader parameters");
+      }
+    }
+  };
 
   // chunked draws keep at most two draws queued in the driver (see DrawRoots)
   const vtkIdType chunk = this->MaximumGlyphsPerDraw > 0 ? this->MaximumGlyphsPerDraw : VTK_ID_MAX;
@@ -898,17 +994,19 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
       impl.SeedVAOProgram = program;
       impl.SeedUploadChanged = false;
     }
+    passParameters(impl.SeedVAO);
     DrawRoots(GL_POINTS, 1, rootCount, chunk, inFlight);
     impl.SeedVAO->Release();
   }
   else
   {
     impl.EmptyVAO->Bind();
+    passParameters(impl.EmptyVAO);
     DrawRoots(lineVS ? GL_LINES : GL_POINTS, lineVS ? 2 : 1, rootCount, chunk, inFlight);
     impl.EmptyVAO->Release();
   }
 
-  impl.VelocityTexture->Deactivate();
+  velocityTexture->Deactivate();
   if (useLUT)
   {
     impl.LUTTexture->Deactivate();
@@ -944,4 +1042,5 @@ void vtkPlumeVelocityGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumGlyphsPerDraw: " << this->MaximumGlyphsPerDraw << "\n";
   os << indent << "LastRootCount: " << this->LastRootCount << "\n";
   os << indent << "UploadCount: " << this->UploadCount << "\n";
+  os << indent << "HandOverCount: " << this->HandOverCount << "\n";
 }

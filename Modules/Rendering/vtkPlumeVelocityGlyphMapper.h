@@ -252,7 +252,21 @@ public:
    */
   vtkGetMacro(UploadCount, int);
 
-  /** Glyphs are drawn in the opaque pass (with blending, see the class documentation). */
+  /**
+   * Number of times a GPU copy of the vector array handed over by the filter
+   * that computed it (vtkPlumeTextureHandOver, e.g. vtkPlumeGaussianSplatter
+   * with GPUHandOver on, in this render window) was used instead of an upload.
+   * Used only when there is no mask array and the texture is an RGBA32F grid
+   * of the input's dimensions; otherwise the array is uploaded as usual.
+   */
+  vtkGetMacro(HandOverCount, int);
+
+  /**
+   * Glyphs of an opaque actor are drawn in the opaque pass (blended there when
+   * they fade, see the class documentation); an actor with opacity < 1 is
+   * drawn by VTK's translucent pass (order-independent transparency or depth
+   * peeling), whose shader replacements the mapper applies.
+   */
   bool HasOpaqueGeometry() override { return true; }
   bool HasTranslucentPolygonalGeometry() override { return false; }
 
@@ -298,6 +312,7 @@ protected:
   vtkIdType MaximumGlyphsPerDraw = 0;
   vtkIdType LastRootCount = 0;
   int UploadCount = 0;
+  int HandOverCount = 0;
 
 private:
   vtkPlumeVelocityGlyphMapper(const vtkPlumeVelocityGlyphMapper&) = delete;

@@ -15,10 +15,13 @@
 //
 // Variant blocks (see vtkPlumeVelocityGlyphMapper.cxx):
 //   LUT | SOLID: colour by |v| through a 1-row lookup texture, or one colour
+//   FADE | OPAQUE: alpha varying from RootAlpha to 1, or none (opaque glyphs)
 
 //PLUME::Defines
 
+//PLUME::IF FADE
 out float glyphAlpha;
+//PLUME::ENDIF
 flat out vec4 glyphColor;
 
 uniform sampler3D Velocity; // xyz = velocity, a = valid mask (0 or 1)
@@ -48,7 +51,9 @@ void main()
 {
   const vec4 culled = vec4(2.0, 2.0, 2.0, 1.0); // outside the clip volume
   bool tipEnd = (gl_VertexID & 1) == 1;
+//PLUME::IF FADE
   glyphAlpha = 1.0;
+//PLUME::ENDIF
   glyphColor = vec4(0.0);
   gl_Position = culled;
 
@@ -81,6 +86,8 @@ void main()
 //PLUME::IF SOLID
   glyphColor = vec4(SolidColor, 1.0);
 //PLUME::ENDIF
+//PLUME::IF FADE
   glyphAlpha = tipEnd ? 1.0 : RootAlpha;
+//PLUME::ENDIF
   gl_Position = tipEnd ? c1 : c0;
 }

@@ -7,6 +7,7 @@
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
@@ -18,6 +19,8 @@
 
 #include "plumeGlyphTestUtil.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace
@@ -359,6 +362,51 @@ int TestVelocityGlyphStress(int, char*[])
     PLUME_CHECK(leftWhite == 0);
     PLUME_CHECK(rightWhite > 500);
     PLUME_CHECK(rightBlue > 1000);
+  }
+
+  // --- translucency: glyphs are blended whenever they are not fully opaque
+  // (actor opacity, RootAlpha, or a table with alpha < 1), and drawn without
+  // blending only when all three are opaque; an actor with opacity < 1 goes
+  // through VTK's translucent pass, whichever it is (order-independent
+  // transparency by default, or depth peeling). One white
+  // glyph over black: its brightest pixel is its alpha.
+  {
+    const float v[3] = { 1, 0, 0 };
+    auto image = MakeImage(1, 1, 1, zero, unit, v);
+    Scene scene(image);
+    scene.Mapper->SetScale(0.15);
+    scene.Renderer->ResetCamera();
+    auto brightest = [&](const std::string& name) {
+      plume::test::FloatImage img;
+      scene.Check(name.c_str(), failures, &img);
+      float top = 0;
+      for (size_t i = 0; i < img.RGBA.size(); i += 4)
+      {
+        top = std::max(top, img.RGBA[i]);
+      }
+      std::cout << name << ": brightest red " << top << "\n";
+      return top;
+    };
+    PLUME_CHECK(std::fabs(brightest("opaque_solid") - 1.0f) < 0.01f);
+    scene.Actor->GetProperty()->SetOpacity(0.5);
+    for (int peeling = 0; peeling < 2; ++peeling)
+    {
+      scene.Renderer->SetUseDepthPeeling(peeling); // off: VTK's order-independent transparency
+      PLUME_CHECK(std::fabs(brightest(peeling ? "opacity_half_peeling" : "opacity_half_oit") - 0.5f) < 0.01f);
+    }
+    scene.Renderer->SetUseDepthPeeling(false);
+    scene.Actor->GetProperty()->SetOpacity(1.0);
+    vtkNew<vtkLookupTable> table;
+    table->SetSaturationRange(0, 0);
+    table->SetValueRange(1, 1);
+    table->SetAlphaRange(0.5, 0.5);
+    table->Build();
+    scene.Mapper->SetLookupTable(table);
+    scene.Mapper->ColorByMagnitudeOn();
+    PLUME_CHECK(std::fabs(brightest("table_alpha_half") - 0.5f) < 0.01f);
+    table->SetAlphaRange(1, 1);
+    table->ForceBuild();
+    PLUME_CHECK(std::fabs(brightest("table_opaque") - 1.0f) < 0.01f);
   }
 
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
