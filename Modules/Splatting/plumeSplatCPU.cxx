@@ -106,6 +106,7 @@ size_t SplatCPU(const Grid& grid, const Settings& settings, const std::vector<Sp
     {
       const int z0 = static_cast<int>(b) * SlabThickness;
       const int z1 = std::min(nz - 1, z0 + SlabThickness - 1);
+      std::fill(out + comps * (z0 * nxy), out + comps * ((z1 + 1) * nxy), 0.0f);
       for (size_t m = start[b]; m < start[b + 1]; ++m)
       {
         const Footprint& f = prints[members[m]];

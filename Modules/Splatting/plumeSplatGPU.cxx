@@ -150,6 +150,12 @@ SplatGPU::~SplatGPU()
   this->Release();
 }
 
+vtkTextureObject* SplatGPU::GetResult(vtkOpenGLRenderWindow*& window)
+{
+  window = this->Impl->Window;
+  return this->Impl->Target;
+}
+
 void SplatGPU::Release()
 {
   this->Impl->Release();
@@ -275,7 +281,9 @@ bool SplatGPU::Run(vtkRenderWindow* window, const Grid& grid, const Settings& se
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDisable(GL_SCISSOR_TEST); // before the clear: VTK leaves a scissor box behind
-    state->vtkglClearColor(0, 0, 0, 0);
+    // vectors: a = 1 (the fragment shader adds 0), the valid mask of the
+    // layout Plume's glyph mapper uploads, so the texture can be handed over
+    state->vtkglClearColor(0, 0, 0, targetComps == 4 ? 1 : 0);
     state->vtkglClear(GL_COLOR_BUFFER_BIT); // every layer of a layered attachment
     state->vtkglDisable(GL_CULL_FACE);
     state->vtkglEnable(GL_BLEND);

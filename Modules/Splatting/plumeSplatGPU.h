@@ -8,7 +8,9 @@
 #include <memory>
 #include <string>
 
+class vtkOpenGLRenderWindow;
 class vtkRenderWindow;
+class vtkTextureObject;
 
 namespace plume
 {
@@ -27,6 +29,12 @@ public:
    */
   bool Run(vtkRenderWindow* window, const Grid& grid, const Settings& settings, const std::vector<Splat>& splats,
     float* out, size_t& touched, std::string& error);
+  /**
+   * The 3D texture of the last successful Run() (RGBA32F with a = 1 for 3
+   * components, R32F for 1) and the window it lives in. The next Run()
+   * renders into the same texture.
+   */
+  vtkTextureObject* GetResult(vtkOpenGLRenderWindow*& window);
   /** Free GL objects (needs the context still alive). */
   void Release();
 

@@ -15,7 +15,10 @@
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPlumeTextureHandOver.h"
 #include "vtkRenderWindow.h"
+#include "vtkTextureObject.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -49,6 +52,25 @@ public:
   vtkSmartPointer<vtkImageData> Reference;
   vtkSmartPointer<vtkRenderWindow> Window;
   plume::splat::SplatGPU GPU;
+  // the output's array, reused by the next execution if nobody else holds it
+  vtkSmartPointer<vtkFloatArray> LastField;
+  // the GPU texture handed over with the current output (GPUHandOver)
+  vtkSmartPointer<vtkPlumeTextureHandOver> HandOver;
+
+  // before the texture is overwritten or freed: arrays holding it upload instead
+  void RevokeHandOver()
+  {
+    if (this->HandOver)
+    {
+      this->HandOver->Revoke();
+      this->HandOver = nullptr;
+    }
+  }
+  void ReleaseGPU()
+  {
+    this->RevokeHandOver();
+    this->GPU.Release();
+  }
 };
 
 vtkStandardNewMacro(vtkPlumeGaussianSplatter);
@@ -71,7 +93,7 @@ vtkPlumeGaussianSplatter::~vtkPlumeGaussianSplatter()
 
 void vtkPlumeGaussianSplatter::ReleaseGraphicsResources()
 {
-  this->Impl->GPU.Release();
+  this->Impl->ReleaseGPU();
 }
 
 void vtkPlumeGaussianSplatter::SetLinesData(vtkPolyData* lines)
@@ -102,7 +124,7 @@ void vtkPlumeGaussianSplatter::SetRenderWindow(vtkRenderWindow* window)
 {
   if (this->Impl->Window != window)
   {
-    this->Impl->GPU.Release();
+    this->Impl->ReleaseGPU();
     this->Impl->Window = window;
     this->Modified();
   }
@@ -365,17 +387,30 @@ int vtkPlumeGaussianSplatter::RequestData(
       return 0;
     }
   }
+  // Reuse the previous output's array when nobody else holds it and it has
+  // the right size (as vtkImageData::AllocateScalars does; the executive
+  // keeps only an image's scalars for that, so we keep our own reference): a
+  // fresh 256³ grid costs more in page faults than splatting a thousand points.
   output->Initialize(); // drop the previous mode's array
   output->SetExtent(0, grid.Dims[0] - 1, 0, grid.Dims[1] - 1, 0, grid.Dims[2] - 1);
   output->SetOrigin(grid.Origin);
   output->SetSpacing(grid.Spacing);
-
-  vtkNew<vtkFloatArray> field;
+  vtkSmartPointer<vtkFloatArray> field = this->Impl->LastField;
+  if (!field || field->GetReferenceCount() != 2 || // ours: the smart pointer here and LastField
+    field->GetNumberOfComponents() != settings.Components ||
+    field->GetNumberOfTuples() != static_cast<vtkIdType>(grid.Voxels()))
+  {
+    field = vtkSmartPointer<vtkFloatArray>::New();
+    field->SetNumberOfComponents(settings.Components);
+    field->SetNumberOfTuples(static_cast<vtkIdType>(grid.Voxels()));
+    this->Impl->LastField = field;
+  }
+  else if (field->HasInformation())
+  {
+    field->GetInformation()->Remove(vtkPlumeTextureHandOver::TEXTURE()); // new values follow
+  }
   field->SetName(this->Mode == VECTOR_SUM ? "velocity" : this->Mode == SCALAR_SUM ? "density" : "distance");
-  field->SetNumberOfComponents(settings.Components);
-  field->SetNumberOfTuples(static_cast<vtkIdType>(grid.Voxels()));
-  float* out = field->GetPointer(0);
-  std::memset(out, 0, sizeof(float) * grid.Voxels() * settings.Components);
+  float* out = field->GetPointer(0); // every value is written by the backend (the CPU zeroes in its threads)
 
   // ---- which backend
   int backend = this->Backend;
@@ -401,6 +436,7 @@ int vtkPlumeGaussianSplatter::RequestData(
   if (backend == BACKEND_GPU && !splats.empty())
   {
     std::string error;
+    this->Impl->RevokeHandOver(); // the texture is about to be overwritten
     done = this->Impl->GPU.Run(this->Impl->Window, grid, settings, splats, out, touched, error);
     if (!done)
     {
@@ -410,7 +446,6 @@ int vtkPlumeGaussianSplatter::RequestData(
         return 0;
       }
       vtkWarningMacro(<< "GPU backend failed (" << error << "); using the CPU");
-      std::memset(out, 0, sizeof(float) * grid.Voxels() * settings.Components);
     }
   }
   if (!done)
@@ -423,6 +458,7 @@ int vtkPlumeGaussianSplatter::RequestData(
   this->SplatCount = static_cast<vtkIdType>(touched);
   this->CulledCount = static_cast<vtkIdType>(splats.size() - touched);
 
+  field->Modified(); // reused or not, these are new values
   if (settings.Components == 3)
   {
     output->GetPointData()->SetVectors(field);
@@ -430,6 +466,14 @@ int vtkPlumeGaussianSplatter::RequestData(
   else
   {
     output->GetPointData()->SetScalars(field);
+  }
+  // hand the GPU's texture over to Plume's mappers in the caller's window
+  // (useless in our own offscreen window, whose context nobody else renders in)
+  if (done && this->GPUHandOver && settings.Components == 3 && this->Impl->Window)
+  {
+    vtkOpenGLRenderWindow* window = nullptr;
+    vtkTextureObject* texture = this->Impl->GPU.GetResult(window);
+    this->Impl->HandOver = vtkPlumeTextureHandOver::Attach(field, texture, window);
   }
   return 1;
 }
@@ -449,4 +493,5 @@ void vtkPlumeGaussianSplatter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CutoffFactor: " << this->CutoffFactor << "\n";
   os << indent << "IntegrateOverVoxel: " << this->IntegrateOverVoxel << "\n";
   os << indent << "AutoGPUThreshold: " << this->AutoGPUThreshold << "\n";
+  os << indent << "GPUHandOver: " << this->GPUHandOver << "\n";
 }

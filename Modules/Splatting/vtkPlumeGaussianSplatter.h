@@ -204,6 +204,24 @@ public:
   vtkSetMacro(AutoGPUThreshold, double);
   vtkGetMacro(AutoGPUThreshold, double);
 
+  ///@{
+  /**
+   * Hand the GPU backend's result texture over with the output (VECTOR_SUM
+   * only, and only when RenderWindow is set): the velocity array's
+   * information then carries a vtkPlumeTextureHandOver, and a
+   * vtkPlumeVelocityGlyphMapper rendering in that window binds the texture
+   * instead of uploading the array (see GetHandOverCount() there). The array
+   * is still read back, so every other consumer sees complete data; the
+   * saving is the consumer's conversion and upload (measured in
+   * Documentation/Splatting.md). The next GPU execution reuses the texture
+   * and revokes the hand-over first, so arrays of earlier outputs still held
+   * somewhere are uploaded from their own values. Default off.
+   */
+  vtkSetMacro(GPUHandOver, bool);
+  vtkGetMacro(GPUHandOver, bool);
+  vtkBooleanMacro(GPUHandOver, bool);
+  ///@}
+
   /** Release the GPU backend's GL resources (before the window goes away). */
   void ReleaseGraphicsResources();
 
@@ -228,6 +246,7 @@ protected:
   double LineScaleFactor = 1.0;
   double CutoffFactor = 4.0;
   bool IntegrateOverVoxel = true;
+  bool GPUHandOver = false;
   double AutoGPUThreshold;
   vtkIdType SplatCount = 0;
   vtkIdType CulledCount = 0;

@@ -249,6 +249,45 @@ int TestSplatStress(int, char*[])
     PLUME_CHECK(errors->Count == 2);
   }
 
+  // re-execution reuses the output array when nobody else holds it: the new
+  // values are exactly a fresh splatter's (no leftovers of the previous run,
+  // both backends), and an array the user kept is never written into
+  for (int backend : { vtkPlumeGaussianSplatter::BACKEND_CPU, vtkPlumeGaussianSplatter::BACKEND_GPU })
+  {
+    for (int mode : { vtkPlumeGaussianSplatter::VECTOR_SUM, vtkPlumeGaussianSplatter::SCALAR_SUM })
+    {
+      auto configure = [&](vtkPlumeGaussianSplatter* s, vtkPolyData* input) {
+        s->SetBackend(backend);
+        s->SetMode(mode);
+        s->SetInputData(input);
+        s->SetModelBounds(-1, 1, -1, 1, -1, 1);
+        s->SetDimensions(14, 12, 10);
+      };
+      auto first = splattest::RandomPoints(30, -0.6, 0.6, 0.1, 0.3, 11);
+      auto second = splattest::RandomPoints(30, -0.6, 0.6, 0.1, 0.3, 12);
+      vtkNew<vtkPlumeGaussianSplatter> reused, fresh;
+      configure(reused, first);
+      reused->Update();
+      vtkDataArray* before = reused->GetOutput()->GetPointData()->GetArray(0);
+      configure(reused, second);
+      reused->Update();
+      PLUME_CHECK(reused->GetOutput()->GetPointData()->GetArray(0) == before); // reused in place
+      configure(fresh, second);
+      fresh->Update();
+      PLUME_CHECK(splattest::Difference(reused->GetOutput(), fresh->GetOutput()) == 0.0);
+      // the user keeps the output: the next execution writes a new array
+      vtkNew<vtkImageData> kept;
+      kept->ShallowCopy(reused->GetOutput());
+      vtkNew<vtkImageData> keptValues;
+      keptValues->DeepCopy(kept);
+      configure(reused, first);
+      reused->Update();
+      PLUME_CHECK(reused->GetOutput()->GetPointData()->GetArray(0) != kept->GetPointData()->GetArray(0));
+      PLUME_CHECK(splattest::Difference(kept, keptValues) == 0.0);
+      PLUME_CHECK(splattest::Difference(reused->GetOutput(), keptValues) > 0.0);
+    }
+  }
+
   // bad input: a clear error, no output data
   {
     vtkNew<vtkPlumeGaussianSplatter> splatter;
