@@ -18,6 +18,8 @@
 #include "vtkVolumeProperty.h"
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace plume
 {
@@ -52,6 +54,22 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   }
 
   vtkImageData* image = datasets.GetImage(dataset, p.Where());
+  // the scene's memory budget (PLUME_MEMORY_BUDGET_MB) bounds the volume's 3D texture too
+  const double budget = MemoryBudgetBytes();
+  {
+    int dims[3];
+    image->GetDimensions(dims);
+    const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims);
+    if (bytes > budget)
+    {
+      std::ostringstream message;
+      message << p.Where() << ": dataset '" << dataset << "' (" << dims[0] << "x" << dims[1] << "x" << dims[2]
+              << " points) needs " << std::setprecision(3) << bytes / (1 << 20)
+              << " MB of 3D texture, over the memory budget of " << budget / (1 << 20)
+              << " MB; resample it coarser (image_dimension) or raise PLUME_MEMORY_BUDGET_MB";
+      throw SceneError(message.str());
+    }
+  }
   vtkDataArray* array = RequirePointArray(image, arrayName, 0, p.Where(), dataset);
   if (component >= array->GetNumberOfComponents())
   {
@@ -121,6 +139,7 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   mapper->SetOpacityThreshold(threshold);
   mapper->SetShadowSampleDistance(shadowDistance);
   mapper->SetUseOpaqueDepth(opaqueDepth);
+  mapper->SetTextureMemoryBudgetMB(budget / (1 << 20));
   if (mode == "mip")
   {
     mapper->SetBlendModeToMaximumIntensity();

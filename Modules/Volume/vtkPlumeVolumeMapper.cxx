@@ -35,7 +35,9 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <iomanip>
 #include <sstream>
+#include <unistd.h>
 #include <vector>
 
 vtkStandardNewMacro(vtkPlumeVolumeMapper);
@@ -68,6 +70,47 @@ void ToGL3(const double m[9], float out[9])
   }
 }
 
+constexpr double Megabyte = 1024.0 * 1024.0;
+
+// megabytes for a message: whole numbers from 10 MB, else 3 significant digits
+std::string MB(double mb)
+{
+  std::ostringstream out;
+  if (mb >= 10)
+  {
+    out << std::llround(mb);
+  }
+  else
+  {
+    out << std::setprecision(3) << mb;
+  }
+  return out.str();
+}
+
+// Half the physical memory (software GL keeps textures in it; the plume command
+// line uses the same default), capped at 3/4 of the video memory if the driver tells.
+double AutomaticBudgetMB(vtkOpenGLRenderWindow* window)
+{
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long pageSize = sysconf(_SC_PAGE_SIZE);
+  double mb = pages > 0 && pageSize > 0 ? 0.5 * double(pages) * double(pageSize) / Megabyte : 4096.0;
+  window->MakeCurrent();
+  GLint kb[4] = { 0, 0, 0, 0 };
+  if (GLEW_NVX_gpu_memory_info)
+  {
+    glGetIntegerv(0x9048 /* GL_GPU_MEMORY_INFO_TOTAL_AVAILABLE_MEMORY_NVX */, kb);
+  }
+  else if (GLEW_ATI_meminfo)
+  {
+    glGetIntegerv(0x87FC /* GL_TEXTURE_FREE_MEMORY_ATI */, kb);
+  }
+  if (kb[0] > 0)
+  {
+    mb = std::min(mb, 0.75 * kb[0] / 1024.0);
+  }
+  return mb;
+}
+
 std::string Replace(std::string s, const std::string& tag, const std::string& with)
 {
   const size_t at = s.find(tag);
@@ -96,6 +139,7 @@ public:
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
   std::map<std::string, vtkShaderProgram*> Programs;
   vtkOpenGLRenderWindow* Window = nullptr;
+  double AutomaticBudgetMB = 0; // of Window
   int Frame = 0;
 
   // what the transfer-function table was built from
@@ -114,6 +158,7 @@ public:
     this->Programs.clear(); // owned by the window's shader cache
     this->TableProperty = nullptr;
     this->Window = nullptr;
+    this->AutomaticBudgetMB = 0;
   }
 };
 
@@ -129,6 +174,19 @@ vtkPlumeVolumeMapper::~vtkPlumeVolumeMapper() = default;
 int vtkPlumeVolumeMapper::GetUploadCount()
 {
   return this->Impl->Scalars->GetUploadCount();
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeVolumeMapper::GetTextureBytes(const int dimensions[3])
+{
+  // R32F scalars + the 8-bit block occupancy and RG32F block ranges (8³ blocks)
+  const double nodes = double(std::max(dimensions[0], 1)) * std::max(dimensions[1], 1) * std::max(dimensions[2], 1);
+  double blocks = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    blocks *= std::max(1, (dimensions[a] - 1 + 7) / 8);
+  }
+  return 4.0 * nodes + 9.0 * blocks;
 }
 
 //------------------------------------------------------------------------------
@@ -228,6 +286,28 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl.ReleaseGraphicsResources(impl.Window);
   }
   impl.Window = renWin;
+
+  // ---- texture-memory budget: refuse (never crop) what does not fit
+  if (!(impl.AutomaticBudgetMB > 0))
+  {
+    impl.AutomaticBudgetMB = AutomaticBudgetMB(renWin); // once per window
+  }
+  this->EffectiveTextureMemoryBudgetMB =
+    this->TextureMemoryBudgetMB > 0 ? this->TextureMemoryBudgetMB : impl.AutomaticBudgetMB;
+  {
+    int dims[3];
+    image->GetDimensions(dims);
+    const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims);
+    if (bytes > this->EffectiveTextureMemoryBudgetMB * Megabyte)
+    {
+      std::ostringstream msg;
+      msg << "volume " << dims[0] << "x" << dims[1] << "x" << dims[2] << " needs " << MB(bytes / Megabyte)
+          << " MB of 3D texture, over the texture memory budget of " << MB(this->EffectiveTextureMemoryBudgetMB)
+          << " MB (SetTextureMemoryBudgetMB); resample the data to a coarser image";
+      vtkErrorMacro(<< msg.str());
+      return;
+    }
+  }
 
   // ---- 3D texture (only when the data changed)
   if (!impl.Scalars->Update(renWin, image, scalars, this->ScalarComponent))
@@ -736,4 +816,6 @@ void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowSampleDistance: " << this->ShadowSampleDistance << "\n";
   os << indent << "UseOpaqueDepth: " << this->UseOpaqueDepth << "\n";
   os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
+  os << indent << "TextureMemoryBudgetMB: " << this->TextureMemoryBudgetMB << " (in effect "
+     << this->EffectiveTextureMemoryBudgetMB << ")\n";
 }

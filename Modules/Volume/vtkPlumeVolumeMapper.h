@@ -63,8 +63,8 @@
  * ±Inf as its ends (vtkPlumeScalarTexture3D); a grid one node thick along an
  * axis is a slab one spacing thick (index -0.5..0.5) along it; zero gradients
  * give the view direction as normal. Errors (no input, no or cell scalars,
- * grids larger than GL_MAX_3D_TEXTURE_SIZE) are reported with vtkErrorMacro
- * and nothing is drawn.
+ * grids larger than GL_MAX_3D_TEXTURE_SIZE or than the texture-memory budget)
+ * are reported with vtkErrorMacro and nothing is drawn (never a silent crop).
  */
 #ifndef vtkPlumeVolumeMapper_h
 #define vtkPlumeVolumeMapper_h
@@ -159,6 +159,28 @@ public:
   /** Fraction of the 8³ blocks classified empty at the last render (0 when skipping is off). */
   vtkGetMacro(EmptyBlockFraction, double);
 
+  ///@{
+  /**
+   * Texture-memory budget in MB (2^20 bytes). A volume whose 3D texture would
+   * need more (4 bytes per node, R32F, plus the 8³ block summary) is refused
+   * with one error naming its size and the budget; nothing is cropped and
+   * nothing drawn (there is no bricking). 0 (default) = automatic: half of the
+   * physical memory (on software GL such as llvmpipe textures live in system
+   * memory, and it is also the plume command line's default budget), capped at
+   * three quarters of the video memory when the driver reports it
+   * (GL_NVX_gpu_memory_info / GL_ATI_meminfo). Uploading also needs about
+   * three times the texture size in transient host memory.
+   */
+  vtkSetClampMacro(TextureMemoryBudgetMB, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(TextureMemoryBudgetMB, double);
+  ///@}
+
+  /** The budget that applied at the last render, MB (the automatic value when TextureMemoryBudgetMB is 0). */
+  vtkGetMacro(EffectiveTextureMemoryBudgetMB, double);
+
+  /** Bytes of GPU texture memory the mapper needs for an image of these point dimensions. */
+  static double GetTextureBytes(const int dimensions[3]);
+
   /** Number of 3D-texture uploads so far (tests check re-renders do not upload). */
   int GetUploadCount();
 
@@ -188,6 +210,8 @@ protected:
   bool UseOpaqueDepth = true;
   bool EmptySpaceSkipping = true;
   double EmptyBlockFraction = 0.0;
+  double TextureMemoryBudgetMB = 0.0;
+  double EffectiveTextureMemoryBudgetMB = 0.0;
   int TableCount = 0;
 
 private:
