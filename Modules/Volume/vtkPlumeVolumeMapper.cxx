@@ -46,6 +46,9 @@ namespace
 {
 constexpr int TableSize = 1024;
 constexpr int MaxLights = 4;
+// an isosurface block is skipped only when its range misses the iso value by
+// more than this (normalised units): filtered samples may round past a node value
+constexpr float IsoMargin = 1e-6f;
 
 // GL wants column-major floats (VTK matrices are row-major)
 void ToGL(const double m[16], float out[16])
@@ -131,9 +134,12 @@ public:
   vtkNew<vtkTextureObject> Table;
   std::vector<float> TableAlpha;        // extinction column of the table
   vtkNew<vtkTextureObject> Occupancy;   // 1 byte per 8^3 block: 0 = transparent
+  vtkNew<vtkTextureObject> BlockRanges; // RG32F per 8^3 block: min, max of u (MIP, isosurface)
+  int RangesUpload = -1;
   int OccupancyUpload = -1;
   int OccupancyTable = -1;
   size_t OccupiedBlocks = 0;
+  double EmptyFraction = 0;    // of the blocks, in the occupancy texture
   double OccupiedMin[3] = { 0, 0, 0 }; // index-space bounds of the non-transparent blocks
   double OccupiedMax[3] = { 0, 0, 0 };
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
@@ -154,6 +160,8 @@ public:
     this->Table->ReleaseGraphicsResources(window);
     this->Occupancy->ReleaseGraphicsResources(window);
     this->OccupancyUpload = this->OccupancyTable = -1;
+    this->BlockRanges->ReleaseGraphicsResources(window);
+    this->RangesUpload = -1;
     this->EmptyVAO->ReleaseGraphicsResources();
     this->Programs.clear(); // owned by the window's shader cache
     this->TableProperty = nullptr;
@@ -438,12 +446,32 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
     impl.OccupancyUpload = impl.Scalars->GetUploadCount();
     impl.OccupancyTable = this->TableCount;
-    this->EmptyBlockFraction = occupied.empty() ? 0.0 : double(empty) / occupied.size();
+    impl.EmptyFraction = occupied.empty() ? 0.0 : double(empty) / occupied.size();
   }
-  if (!skipping)
+  // MIP and isosurface skip by value range (decided per ray in the shader against
+  // the running maximum or the iso value): upload the block ranges
+  const bool rangeSkipping = this->EmptySpaceSkipping &&
+    (this->BlendMode == MAXIMUM_INTENSITY_BLEND || this->BlendMode == ISOSURFACE_BLEND);
+  if (rangeSkipping && (impl.RangesUpload != impl.Scalars->GetUploadCount() || !impl.BlockRanges->GetHandle()))
   {
-    this->EmptyBlockFraction = 0.0;
+    const int* bd = impl.Scalars->GetBlockDimensions();
+    std::vector<float> ranges = impl.Scalars->GetBlockRanges();
+    impl.BlockRanges->SetContext(renWin);
+    impl.BlockRanges->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.BlockRanges->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.BlockRanges->SetWrapR(vtkTextureObject::ClampToEdge);
+    impl.BlockRanges->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.BlockRanges->SetMagnificationFilter(vtkTextureObject::Nearest);
+    if (ranges.empty() ||
+      !impl.BlockRanges->Create3DFromRaw(bd[0], bd[1], bd[2], 2, VTK_FLOAT, ranges.data()))
+    {
+      vtkErrorMacro(<< "could not create the block-range texture");
+      return;
+    }
+    impl.RangesUpload = impl.Scalars->GetUploadCount();
   }
+  // MIP decides per ray (0 here); the isosurface's fraction is set with its iso value below
+  this->EmptyBlockFraction = skipping ? impl.EmptyFraction : 0.0;
 
   // ---- opaque depth
   bool useDepth = false;
@@ -605,9 +633,13 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     defines << "#define PLUME_DEPTH\n";
   }
-  if (skipping)
+  if (skipping || rangeSkipping)
   {
     defines << "#define PLUME_SKIP\n";
+  }
+  if (rangeSkipping && mode == "PLUME_ISO")
+  {
+    defines << "#define PLUME_ISO_MARGIN " << IsoMargin << "\n";
   }
   if (shade)
   {
@@ -685,7 +717,19 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       iso = range[0] + 0.5 * span;
     }
     const double u = span > 0 ? (iso - range[0]) / span : (iso > range[0] ? 2.0 : -1.0);
-    program->SetUniformf("IsoValue", static_cast<float>(std::min(2.0, std::max(-1.0, u))));
+    const float isoU = static_cast<float>(std::min(2.0, std::max(-1.0, u)));
+    program->SetUniformf("IsoValue", isoU);
+    if (rangeSkipping)
+    {
+      // blocks whose range does not contain the iso value (as the shader tests them)
+      const std::vector<float>& ranges = impl.Scalars->GetBlockRanges();
+      size_t outside = 0;
+      for (size_t b = 0; 2 * b + 1 < ranges.size(); ++b)
+      {
+        outside += ranges[2 * b + 1] < isoU - IsoMargin || ranges[2 * b] > isoU + IsoMargin ? 1 : 0;
+      }
+      this->EmptyBlockFraction = ranges.empty() ? 0.0 : double(outside) / (ranges.size() / 2);
+    }
   }
   if (mode == "PLUME_ISO" || shade)
   {
@@ -747,10 +791,11 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl.Depth->GetTextureObject()->Activate();
     program->SetUniformi("OpaqueDepth", impl.Depth->GetTextureObject()->GetTextureUnit());
   }
-  if (skipping)
+  if (skipping || rangeSkipping)
   {
-    impl.Occupancy->Activate();
-    program->SetUniformi("Occupancy", impl.Occupancy->GetTextureUnit());
+    vtkTextureObject* blocks = skipping ? impl.Occupancy.GetPointer() : impl.BlockRanges.GetPointer();
+    blocks->Activate();
+    program->SetUniformi(skipping ? "Occupancy" : "BlockRanges", blocks->GetTextureUnit());
     program->SetUniformf("BlockSize", static_cast<float>(impl.Scalars->GetBlockSize()));
     const int* bd = impl.Scalars->GetBlockDimensions();
     const float fbd[3] = { float(bd[0]), float(bd[1]), float(bd[2]) };
@@ -792,6 +837,10 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (skipping)
   {
     impl.Occupancy->Deactivate();
+  }
+  if (rangeSkipping)
+  {
+    impl.BlockRanges->Deactivate();
   }
   ++impl.Frame;
 }

@@ -55,9 +55,9 @@
  * directional from its focal point towards its position; colour × intensity.
  *
  * Early ray termination when the accumulated opacity reaches OpacityThreshold;
- * empty-space skipping over 8³ blocks whose values are all transparent.
- * Only the features in use are compiled (mode, jitter, depth, light count are
- * preprocessor switches).
+ * empty-space skipping over 8³ blocks (see EmptySpaceSkipping).
+ * Only the features in use are compiled (mode, jitter, depth, skipping,
+ * shading, light count are preprocessor switches).
  *
  * Numerical safety: NaN scalars count as the minimum of the finite range,
  * ±Inf as its ends (vtkPlumeScalarTexture3D); a grid one node thick along an
@@ -145,18 +145,27 @@ public:
 
   ///@{
   /**
-   * Empty-space skipping (composite and smoke): blocks of 8³ voxels whose value
-   * range maps to zero opacity are jumped over. The result is the same as
-   * without skipping (a skipped sample would have contributed exactly
-   * nothing); the block summary is rebuilt when the data or the transfer
-   * functions change. Default on.
+   * Empty-space skipping over blocks of 8³ voxels. Composite and smoke: blocks
+   * whose value range maps to zero opacity are jumped over (the block summary
+   * is rebuilt when the data or the transfer functions change), and only the
+   * box around the others is drawn. MIP: a block whose maximum is not above
+   * the ray's running maximum is jumped over. Isosurface: a block whose range
+   * misses the iso value on the side the ray is on. The result is the same as
+   * without skipping (a skipped sample could not have changed it; float
+   * rounding aside). Default on.
    */
   vtkSetMacro(EmptySpaceSkipping, bool);
   vtkGetMacro(EmptySpaceSkipping, bool);
   vtkBooleanMacro(EmptySpaceSkipping, bool);
   ///@}
 
-  /** Fraction of the 8³ blocks classified empty at the last render (0 when skipping is off). */
+  /**
+   * Fraction of the 8³ blocks skipped wholesale at the last render (0 when
+   * skipping is off): composite and smoke, blocks whose values are all
+   * transparent; isosurface, blocks whose value range does not contain the iso
+   * value. MIP decides per ray (a block whose maximum is not above the ray's
+   * running maximum is jumped over), so this is 0 there.
+   */
   vtkGetMacro(EmptyBlockFraction, double);
 
   ///@{

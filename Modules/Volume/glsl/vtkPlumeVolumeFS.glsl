@@ -7,7 +7,10 @@
 //   PLUME_COMPOSITE | PLUME_MIP | PLUME_ISO | PLUME_SMOKE   the mode
 //   PLUME_JITTER       jittered first segment
 //   PLUME_DEPTH        stop at the opaque scene's depth
-//   PLUME_SKIP         empty-space skipping over transparent blocks
+//   PLUME_SKIP         empty-space skipping: composite/smoke jump over transparent
+//                      blocks; MIP over blocks whose max is not above the running
+//                      max; isosurface over blocks whose range misses the iso value
+//                      (by PLUME_ISO_MARGIN) on the side the ray already is
 //   PLUME_SHADE        composite with gradient (Phong) shading of every sample
 //   PLUME_LIGHTS n     number of lights (ISO, SMOKE)
 
@@ -34,7 +37,11 @@ uniform sampler2D OpaqueDepth;
 uniform int JitterSeed;
 #endif
 #ifdef PLUME_SKIP
+#if defined(PLUME_MIP) || defined(PLUME_ISO)
+uniform sampler3D BlockRanges;      // per block: min, max of u
+#else
 uniform sampler3D Occupancy;        // per block: 0 = every value in it is transparent
+#endif
 uniform float BlockSize;            // voxels per block
 uniform vec3 BlockDims;            // blocks per axis
 uniform vec3 DrawMin;              // bounds of the non-transparent blocks (index space)
@@ -250,13 +257,28 @@ void main()
       vec3 dd = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
       vec3 tf = max((lo - p0) / dd, (lo + BlockSize - p0) / dd);
       float te = min(t.y, min(tf.x, min(tf.y, tf.z)));
-      if (texelFetch(Occupancy, cell, 0).r == 0.0)
+#if defined(PLUME_MIP)
+      // no sample in the block can raise the maximum
+      bool skip = texelFetch(BlockRanges, cell, 0).g <= uMax;
+#elif defined(PLUME_ISO)
+      // every sample in the block is on the side of the iso value the ray is on:
+      // no sign change can be found before the block's exit
+      vec2 r = texelFetch(BlockRanges, cell, 0).rg;
+      bool skip = fPrev < 0.0 ? r.g < IsoValue - PLUME_ISO_MARGIN : r.r > IsoValue + PLUME_ISO_MARGIN;
+#else
+      bool skip = texelFetch(Occupancy, cell, 0).r == 0.0;
+#endif
+      if (skip)
       {
         // every sample whose midpoint lies in this block contributes nothing:
         // go to the first segment whose midpoint is past the block's exit
         m = max(m + 1.0, ceil((te - segBase) / dt + 0.5));
         s0 = segBase + (m - 1.0) * dt;
         s1 = min(s0 + dt, t.y);
+#ifdef PLUME_ISO
+        // the bisection starts at the last skipped sample, as without skipping
+        tPrev = m >= 2.0 ? segBase + (m - 1.5) * dt : 0.5 * (t.x + min(segBase, t.y));
+#endif
         continue;
       }
       occupiedUntil = max(te, tm); // no more look-ups until the ray leaves the block
