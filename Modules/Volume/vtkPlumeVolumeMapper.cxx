@@ -2,6 +2,7 @@
 
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeScalarTexture3D.h"
+#include "vtkPlumeShaderVariants.h"
 #include "vtkPlumeVolumeFS.h"
 #include "vtkPlumeVolumeVS.h"
 
@@ -36,6 +37,7 @@
 #include <limits>
 #include <map>
 #include <iomanip>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 #include <vector>
@@ -114,15 +116,6 @@ double AutomaticBudgetMB(vtkOpenGLRenderWindow* window)
   return mb;
 }
 
-std::string Replace(std::string s, const std::string& tag, const std::string& with)
-{
-  const size_t at = s.find(tag);
-  if (at != std::string::npos)
-  {
-    s.replace(at, tag.size(), with);
-  }
-  return s;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -622,20 +615,22 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   const int nLights = lit ? static_cast<int>(lightDirs.size()) : 0;
 
-  // ---- program (only the features in use are compiled)
+  // ---- program (only the features in use are compiled: vtkPlumeShaderVariants keeps
+  // the shader's //PLUME::IF blocks of the enabled features)
+  std::set<std::string> enabled = { mode.substr(6) }; // COMPOSITE, MIP, ISO or SMOKE
   std::ostringstream defines;
-  defines << "#define " << mode << "\n";
   if (this->Jitter)
   {
-    defines << "#define PLUME_JITTER\n";
+    enabled.insert("JITTER");
   }
   if (useDepth)
   {
-    defines << "#define PLUME_DEPTH\n";
+    enabled.insert("DEPTH");
   }
   if (skipping || rangeSkipping)
   {
-    defines << "#define PLUME_SKIP\n";
+    enabled.insert("SKIP");
+    enabled.insert(skipping ? "SKIP_TRANSPARENT" : (mode == "PLUME_MIP" ? "SKIP_MIP" : "SKIP_ISO"));
   }
   if (rangeSkipping && mode == "PLUME_ISO")
   {
@@ -643,19 +638,23 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   if (shade)
   {
-    defines << "#define PLUME_SHADE\n";
+    enabled.insert("SHADE");
   }
   if (lit)
   {
     defines << "#define PLUME_LIGHTS " << nLights << "\n";
   }
-  const std::string key = defines.str();
+  std::string key = defines.str();
+  for (const std::string& feature : enabled)
+  {
+    key += feature + " ";
+  }
   vtkShaderProgram*& cached = impl.Programs[key];
   vtkShaderProgram* program = nullptr;
   if (!cached)
   {
     const std::string vs = vtkPlumeVolumeVS;
-    const std::string fs = Replace(vtkPlumeVolumeFS, "//PLUME::Defines", key);
+    const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeVolumeFS, enabled, defines.str());
     program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
     cached = program;
   }

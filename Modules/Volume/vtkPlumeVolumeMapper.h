@@ -57,7 +57,7 @@
  * Early ray termination when the accumulated opacity reaches OpacityThreshold;
  * empty-space skipping over 8³ blocks (see EmptySpaceSkipping).
  * Only the features in use are compiled (mode, jitter, depth, skipping,
- * shading, light count are preprocessor switches).
+ * shading: the shader's feature blocks picked by vtkPlumeShaderVariants).
  *
  * Numerical safety: NaN scalars count as the minimum of the finite range,
  * ±Inf as its ends (vtkPlumeScalarTexture3D); a grid one node thick along an

@@ -3,16 +3,19 @@
 // vtkPlumeVolumeMapper fragment shader: one ray per pixel, in the volume's
 // index space (voxel (i,j,k) at (i,j,k)). Outputs premultiplied colour.
 //
-// Switches (#define, set by the mapper so only what is used is compiled):
-//   PLUME_COMPOSITE | PLUME_MIP | PLUME_ISO | PLUME_SMOKE   the mode
-//   PLUME_JITTER       jittered first segment
-//   PLUME_DEPTH        stop at the opaque scene's depth
-//   PLUME_SKIP         empty-space skipping: composite/smoke jump over transparent
-//                      blocks; MIP over blocks whose max is not above the running
-//                      max; isosurface over blocks whose range misses the iso value
-//                      (by PLUME_ISO_MARGIN) on the side the ray already is
-//   PLUME_SHADE        composite with gradient (Phong) shading of every sample
-//   PLUME_LIGHTS n     number of lights (ISO, SMOKE)
+// Feature blocks (//PLUME::IF name ... //PLUME::ENDIF, kept by
+// vtkPlumeShaderVariants when one of the names is enabled; not nested), so only
+// what is used is compiled:
+//   COMPOSITE | MIP | ISO | SMOKE   the mode
+//   JITTER           jittered first segment
+//   DEPTH            stop at the opaque scene's depth
+//   SKIP             empty-space skipping, with one of: SKIP_TRANSPARENT
+//                    (composite/smoke: jump over transparent blocks), SKIP_MIP
+//                    (blocks whose max is not above the running max), SKIP_ISO
+//                    (blocks whose range misses the iso value by PLUME_ISO_MARGIN
+//                    on the side the ray already is)
+//   SHADE            composite with gradient (Phong) shading of every sample
+// Values (#define): PLUME_LIGHTS n (lit modes), PLUME_ISO_MARGIN (SKIP_ISO).
 
 //PLUME::Defines
 
@@ -30,44 +33,45 @@ uniform float StepIndex;            // sample distance, voxels
 uniform int MaxSteps;
 uniform float UnitDistance;         // scalar opacity unit distance (world)
 uniform float OpacityThreshold;
-#ifdef PLUME_DEPTH
+//PLUME::IF DEPTH
 uniform sampler2D OpaqueDepth;
-#endif
-#ifdef PLUME_JITTER
+//PLUME::ENDIF
+//PLUME::IF JITTER
 uniform int JitterSeed;
-#endif
-#ifdef PLUME_SKIP
-#if defined(PLUME_MIP) || defined(PLUME_ISO)
+//PLUME::ENDIF
+//PLUME::IF SKIP_MIP SKIP_ISO
 uniform sampler3D BlockRanges;      // per block: min, max of u
-#else
+//PLUME::ENDIF
+//PLUME::IF SKIP_TRANSPARENT
 uniform sampler3D Occupancy;        // per block: 0 = every value in it is transparent
-#endif
+//PLUME::ENDIF
+//PLUME::IF SKIP
 uniform float BlockSize;            // voxels per block
 uniform vec3 BlockDims;            // blocks per axis
 uniform vec3 DrawMin;              // bounds of the non-transparent blocks (index space)
 uniform vec3 DrawMax;
-#endif
-#ifdef PLUME_ISO
+//PLUME::ENDIF
+//PLUME::IF ISO
 uniform float IsoValue;             // normalised
-#endif
-#if defined(PLUME_ISO) || defined(PLUME_SHADE)
+//PLUME::ENDIF
+//PLUME::IF ISO SHADE
 uniform mat3 NormalToWorld;         // inverse transpose of IndexToWorld
 uniform float Specular;
 uniform float SpecularPower;
-#endif
-#if defined(PLUME_ISO) || defined(PLUME_SHADE) || defined(PLUME_SMOKE)
+//PLUME::ENDIF
+//PLUME::IF ISO SHADE SMOKE
 uniform float Ambient;
 uniform float Diffuse;
-#endif
-#ifdef PLUME_SMOKE
+//PLUME::ENDIF
+//PLUME::IF SMOKE
 uniform float ShadowStepIndex;      // shadow-ray step, voxels
 uniform vec3 LightIndexDir[PLUME_LIGHTS];     // unit direction towards the light, index space
 uniform float LightWorldPerIndex[PLUME_LIGHTS]; // world length of one index unit along it
-#endif
-#if defined(PLUME_ISO) || defined(PLUME_SMOKE) || defined(PLUME_SHADE)
+//PLUME::ENDIF
+//PLUME::IF ISO SMOKE SHADE
 uniform vec3 LightDirection[PLUME_LIGHTS]; // unit, world, towards the light
 uniform vec3 LightColor[PLUME_LIGHTS];     // colour x intensity
-#endif
+//PLUME::ENDIF
 
 //VTK::Output::Dec
 
@@ -100,7 +104,7 @@ vec2 clipToBox(vec3 p, vec3 d, float lo, float hi)
   return vec2(max(lo, max(tn.x, max(tn.y, tn.z))), min(hi, min(tf.x, min(tf.y, tf.z))));
 }
 
-#ifdef PLUME_JITTER
+//PLUME::IF JITTER
 float jitter()
 {
   uvec2 q = uvec2(gl_FragCoord.xy);
@@ -112,9 +116,9 @@ float jitter()
   h ^= h >> 15;
   return 1.0 - float(h & 0xffffffu) / 16777216.0; // (0, 1]
 }
-#endif
+//PLUME::ENDIF
 
-#ifdef PLUME_SMOKE
+//PLUME::IF SMOKE
 // transmittance from p (index space) towards light l, through the box
 float lightTransmittance(vec3 p, int l)
 {
@@ -138,9 +142,9 @@ float lightTransmittance(vec3 p, int l)
   }
   return exp(-tau * h * LightWorldPerIndex[l]);
 }
-#endif
+//PLUME::ENDIF
 
-#if defined(PLUME_ISO) || defined(PLUME_SHADE)
+//PLUME::IF ISO SHADE
 // Phong lighting of colour `base` at index-space point p: normal from central
 // differences (one voxel), turned towards the viewer; zero gradient: facing the viewer
 vec3 phong(vec3 base, vec3 p, vec3 viewDir)
@@ -167,7 +171,7 @@ vec3 phong(vec3 base, vec3 p, vec3 viewDir)
   }
   return color;
 }
-#endif
+//PLUME::ENDIF
 
 void main()
 {
@@ -177,14 +181,14 @@ void main()
   vec3 p0 = a.xyz / a.w;   // ray at the near plane
   vec3 d = b.xyz / b.w - p0; // to the far plane: t in [0, 1]
   float tEnd = 1.0;
-#ifdef PLUME_DEPTH
+//PLUME::IF DEPTH
   float z = texelFetch(OpaqueDepth, ivec2(gl_FragCoord.xy - ViewportOrigin), 0).r;
   if (z < 1.0)
   {
     vec4 q = ClipToIndex * vec4(ndc, 2.0 * z - 1.0, 1.0);
     tEnd = dot(q.xyz / q.w - p0, d) / dot(d, d);
   }
-#endif
+//PLUME::ENDIF
   vec2 t = clipToBox(p0, d, 0.0, tEnd);
   if (!(t.y > t.x))
   {
@@ -196,32 +200,31 @@ void main()
     dt = (t.y - t.x) / float(MaxSteps);
   }
   float worldPerT = length(IndexToWorld * d);
-#ifdef PLUME_JITTER
-  float first = jitter() * dt;
-#else
   float first = dt;
-#endif
+//PLUME::IF JITTER
+  first = jitter() * dt;
+//PLUME::ENDIF
 
-#if defined(PLUME_ISO) || defined(PLUME_SMOKE) || defined(PLUME_SHADE)
+//PLUME::IF ISO SMOKE SHADE
   vec3 viewDir = -normalize(IndexToWorld * d); // world, towards the eye
-#endif
+//PLUME::ENDIF
 
   vec4 dst = vec4(0.0);
-#ifdef PLUME_MIP
+//PLUME::IF MIP
   float uMax = -1.0;
-#endif
-#ifdef PLUME_ISO
+//PLUME::ENDIF
+//PLUME::IF ISO
   float tPrev = t.x;
   float fPrev = sampleU(p0 + t.x * d) - IsoValue;
   bool hit = false;
   float tHit = 0.0;
-#endif
+//PLUME::ENDIF
 
   // segment 0 is [t.x, segBase]; segment m >= 1 is [segBase + (m-1) dt, segBase + m dt], clipped to t.y
   float segBase = t.x + first;
   float s0 = t.x;
   float s1 = min(segBase, t.y);
-#ifdef PLUME_SKIP
+//PLUME::IF SKIP
   float m = 0.0;
   float occupiedUntil = -1.0; // the ray is in an occupied block until this t
   // outside the bounds of the non-transparent blocks nothing contributes: end
@@ -243,12 +246,12 @@ void main()
     }
     s1 = min(s1, t.y);
   }
-#endif
+//PLUME::ENDIF
   for (int i = 0; i <= MaxSteps + 1 && s0 < t.y; ++i)
   {
     float tm = 0.5 * (s0 + s1);
     vec3 p = p0 + tm * d;
-#ifdef PLUME_SKIP
+//PLUME::IF SKIP
     if (tm >= occupiedUntil)
     {
       ivec3 cell = clamp(ivec3(floor(p / BlockSize)), ivec3(0), ivec3(BlockDims) - 1);
@@ -257,17 +260,21 @@ void main()
       vec3 dd = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
       vec3 tf = max((lo - p0) / dd, (lo + BlockSize - p0) / dd);
       float te = min(t.y, min(tf.x, min(tf.y, tf.z)));
-#if defined(PLUME_MIP)
+//PLUME::ENDIF
+//PLUME::IF SKIP_MIP
       // no sample in the block can raise the maximum
       bool skip = texelFetch(BlockRanges, cell, 0).g <= uMax;
-#elif defined(PLUME_ISO)
+//PLUME::ENDIF
+//PLUME::IF SKIP_ISO
       // every sample in the block is on the side of the iso value the ray is on:
       // no sign change can be found before the block's exit
       vec2 r = texelFetch(BlockRanges, cell, 0).rg;
       bool skip = fPrev < 0.0 ? r.g < IsoValue - PLUME_ISO_MARGIN : r.r > IsoValue + PLUME_ISO_MARGIN;
-#else
+//PLUME::ENDIF
+//PLUME::IF SKIP_TRANSPARENT
       bool skip = texelFetch(Occupancy, cell, 0).r == 0.0;
-#endif
+//PLUME::ENDIF
+//PLUME::IF SKIP
       if (skip)
       {
         // every sample whose midpoint lies in this block contributes nothing:
@@ -275,33 +282,37 @@ void main()
         m = max(m + 1.0, ceil((te - segBase) / dt + 0.5));
         s0 = segBase + (m - 1.0) * dt;
         s1 = min(s0 + dt, t.y);
-#ifdef PLUME_ISO
+//PLUME::ENDIF
+//PLUME::IF SKIP_ISO
         // the bisection starts at the last skipped sample, as without skipping
         tPrev = m >= 2.0 ? segBase + (m - 1.5) * dt : 0.5 * (t.x + min(segBase, t.y));
-#endif
+//PLUME::ENDIF
+//PLUME::IF SKIP
         continue;
       }
       occupiedUntil = max(te, tm); // no more look-ups until the ray leaves the block
     }
-#endif
+//PLUME::ENDIF
     float u = sampleU(p);
-#ifdef PLUME_COMPOSITE
+//PLUME::IF COMPOSITE
     vec4 c = transfer(u);
     float alpha = 1.0 - exp(-c.a * (s1 - s0) * worldPerT);
-#ifdef PLUME_SHADE
+//PLUME::ENDIF
+//PLUME::IF SHADE
     if (alpha > 0.0)
     {
       c.rgb = phong(c.rgb, p, viewDir);
     }
-#endif
+//PLUME::ENDIF
+//PLUME::IF COMPOSITE
     dst.rgb += (1.0 - dst.a) * alpha * c.rgb;
     dst.a += (1.0 - dst.a) * alpha;
     if (dst.a >= OpacityThreshold)
     {
       break;
     }
-#endif
-#ifdef PLUME_SMOKE
+//PLUME::ENDIF
+//PLUME::IF SMOKE
     vec4 c = transfer(u);
     float sigma = c.a;
     if (sigma > 0.0)
@@ -319,11 +330,11 @@ void main()
         break;
       }
     }
-#endif
-#ifdef PLUME_MIP
+//PLUME::ENDIF
+//PLUME::IF MIP
     uMax = max(uMax, u);
-#endif
-#ifdef PLUME_ISO
+//PLUME::ENDIF
+//PLUME::IF ISO
     float f = u - IsoValue;
     if ((fPrev < 0.0) != (f < 0.0))
     {
@@ -348,15 +359,15 @@ void main()
     }
     tPrev = tm;
     fPrev = f;
-#endif
+//PLUME::ENDIF
     s0 = s1;
     s1 = min(s0 + dt, t.y);
-#ifdef PLUME_SKIP
+//PLUME::IF SKIP
     m += 1.0;
-#endif
+//PLUME::ENDIF
   }
 
-#ifdef PLUME_MIP
+//PLUME::IF MIP
   if (uMax < 0.0)
   {
     discard;
@@ -364,15 +375,15 @@ void main()
   vec4 c = transfer(uMax);
   float alpha = 1.0 - exp(-c.a * UnitDistance); // the scalar opacity
   dst = vec4(c.rgb * alpha, alpha);
-#endif
-#ifdef PLUME_ISO
+//PLUME::ENDIF
+//PLUME::IF ISO
   if (!hit)
   {
     discard;
   }
   vec3 color = phong(transfer(IsoValue).rgb, p0 + tHit * d, viewDir);
   dst = vec4(color, 1.0);
-#endif
+//PLUME::ENDIF
   if (dst.a <= 0.0)
   {
     discard;
