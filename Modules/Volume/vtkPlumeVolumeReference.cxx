@@ -576,10 +576,15 @@ bool vtkPlumeVolumeReference::Compute(int width, int height)
   s.Depth = &this->OpaqueDepth;
 
   float* out = this->Image.data();
+  const int stride = this->PixelStride;
   vtkSMPTools::For(0, height, [&](vtkIdType y0, vtkIdType y1) {
     for (vtkIdType y = y0; y < y1; ++y)
     {
-      for (int x = 0; x < width; ++x)
+      if (y % stride != 0)
+      {
+        continue;
+      }
+      for (int x = 0; x < width; x += stride)
       {
         s.Pixel(x, static_cast<int>(y), out + 4 * (static_cast<size_t>(y) * width + x));
       }
@@ -609,4 +614,5 @@ void vtkPlumeVolumeReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Mode: " << this->Mode << "\n";
   os << indent << "Step: " << this->Step << "\n";
   os << indent << "ShadowStep: " << this->ShadowStep << "\n";
+  os << indent << "PixelStride: " << this->PixelStride << "\n";
 }

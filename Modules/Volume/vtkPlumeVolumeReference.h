@@ -74,6 +74,12 @@ public:
   void SetStep(double step) { this->Step = step; }
   /** Shadow-ray step in voxels (SMOKE). Default 0.25. */
   void SetShadowStep(double step) { this->ShadowStep = step; }
+  /**
+   * Compute only the pixels (x, y) with x and y multiples of this (the others
+   * stay 0), for spot checks of large volumes. Default 1 (every pixel).
+   */
+  void SetPixelStride(int stride) { this->PixelStride = stride > 1 ? stride : 1; }
+  int GetPixelStride() const { return this->PixelStride; }
   /** Window depth (0..1) per pixel, bottom row first; empty (default) = nothing opaque. */
   void SetOpaqueDepth(const std::vector<float>& depth) { this->OpaqueDepth = depth; }
 
@@ -101,6 +107,7 @@ protected:
   double IsoValue;
   double Step = 0.125;
   double ShadowStep = 0.25;
+  int PixelStride = 1;
   std::vector<float> OpaqueDepth;
   std::vector<float> Image;
   std::string LastError;

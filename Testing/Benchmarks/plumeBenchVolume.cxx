@@ -1,13 +1,19 @@
-// `plume bench volume`: raycasting a 128³ scalar volume into 512x512 with
-// vtkPlumeVolumeMapper against VTK's own vtkGPUVolumeRayCastMapper and
+// `plume bench volume`: raycasting 128³ and 256³ scalar volumes into 512x512
+// with vtkPlumeVolumeMapper against VTK's own vtkGPUVolumeRayCastMapper and
 // vtkFixedPointVolumeRayCastMapper (the faster one on software GL): same
 // volume, transfer functions and camera, several sample distances each, and
 // every image's error against vtkPlumeVolumeReference (computed once per
-// field in its own job and passed to the render jobs through a temporary file).
+// field and size in its own job and passed to the render jobs through a
+// temporary file; at 256³ on every 4th pixel along x and y only, which is
+// where the errors are measured then).
 // Two fields: "smoke" (three Gaussian puffs, mostly empty space) and "dense"
 // (a low-opacity field that fills the box), each unshaded and shaded (the
 // property's Shade on, headlight; note the peers' shading models differ from
 // ours in detail, so part of their shaded error is model, not sampling).
+// Sparsity report: ours at step 1 with empty-space skipping and/or early ray
+// termination switched off, on the sparse smoke, the dense field and an
+// "opaque" one (the dense field with the smoke's opacity, where rays saturate
+// early), composite at both sizes, MIP and isosurface at 128³.
 #include "plumeBenchmarks.h"
 
 #include "vtkPlumeVolumeMapper.h"
@@ -43,15 +49,42 @@ int Size(bool quick)
   return quick ? 128 : 512;
 }
 
-int Grid(bool quick)
+// grid sizes (quick: small stand-ins that run the same code paths)
+std::vector<int> Grids(bool quick)
 {
-  return quick ? 32 : 128;
+  return quick ? std::vector<int>{ 32, 48 } : std::vector<int>{ 128, 256 };
 }
 
-std::vector<double> Steps(bool quick)
+std::vector<double> Steps(bool quick, int n)
 {
-  return quick ? std::vector<double>{ 1.0 } : std::vector<double>{ 0.5, 1.0, 2.0, 4.0 };
+  if (quick)
+  {
+    return { 1.0 };
+  }
+  return n >= 256 ? std::vector<double>{ 1.0, 2.0, 4.0 } : std::vector<double>{ 0.5, 1.0, 2.0, 4.0 };
 }
+
+// the reference at every stride-th pixel along x and y (a full 512² reference at 256³ is too slow)
+int Stride(bool quick, int n)
+{
+  return n > Grids(quick)[0] ? (quick ? 2 : 4) : 1;
+}
+
+int MeasuredFrames(bool quick, int n)
+{
+  return quick ? 2 : (n >= 256 ? 3 : 5);
+}
+
+std::string StepText(double step)
+{
+  char s[32];
+  std::snprintf(s, sizeof(s), "%g", step);
+  return s;
+}
+
+// sparsity report: our configurations (switch, what is off)
+const char* const SparsityConfigs[][2] = { { "ours-noskip", "empty-space skipping off" },
+  { "ours-noert", "early ray termination off" }, { "ours-plain", "skipping and early termination off" } };
 
 // a variant is a field, optionally shaded (property Shade on, same lighting for all)
 const char* Fields[] = { "smoke", "dense", "smoke+shaded", "dense+shaded" };
@@ -59,6 +92,13 @@ const char* Fields[] = { "smoke", "dense", "smoke+shaded", "dense+shaded" };
 std::string FieldOf(const std::string& variant)
 {
   return variant.substr(0, variant.find('+'));
+}
+
+// composite (default), "mip" or "iso" (sparsity jobs only)
+std::string ModeOf(const std::string& variant)
+{
+  return variant.find("+mip") != std::string::npos ? "mip"
+                                                     : (variant.find("+iso") != std::string::npos ? "iso" : "composite");
 }
 
 bool Shaded(const std::string& variant)
@@ -125,10 +165,11 @@ void Configure(vtkVolumeProperty* property, const std::string& variant)
   vtkNew<vtkPiecewiseFunction> opacity;
   opacity->AddPoint(0.0, 0.0);
   opacity->AddPoint(0.05, 0.0);
-  opacity->AddPoint(1.0, field == "smoke" ? 0.8 : 0.15);
+  const bool thick = field != "dense"; // "opaque" is the dense field with the smoke's opacity
+  opacity->AddPoint(1.0, thick ? 0.8 : 0.15);
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(field == "smoke" ? 0.05 : 0.2);
+  property->SetScalarOpacityUnitDistance(thick ? 0.05 : 0.2);
   property->SetInterpolationTypeToLinear();
   property->SetShade(Shaded(variant) ? 1 : 0);
   property->SetAmbient(0.2);
@@ -154,18 +195,25 @@ std::string ReferencePath(const std::string& field, int n, bool quick, long run)
     (quick ? "-quick" : "") + ".f32";
 }
 
+// job = kind:variant:n[:step]   (kind: reference, ours, gpu, fixed, or a sparsity configuration)
+std::string JobId(const std::string& kind, const std::string& variant, int n, double step = 0)
+{
+  return kind + ":" + variant + ":" + std::to_string(n) + (kind == "reference" ? "" : ":" + StepText(step));
+}
+
 nlohmann::json RunJob(const Context& context, const std::string& job)
 {
-  // job = kind:field:step   (kind: reference, ours, gpu, fixed)
-  const size_t a = job.find(':'), b = job.find(':', a + 1);
+  const size_t a = job.find(':'), b = job.find(':', a + 1), c = job.find(':', b + 1);
   const std::string kind = job.substr(0, a);
   const std::string variant = job.substr(a + 1, b - a - 1);
   const std::string field = FieldOf(variant);
-  const double step = b == std::string::npos ? 0.0 : std::stod(job.substr(b + 1));
+  const int n = std::stoi(job.substr(b + 1, c == std::string::npos ? std::string::npos : c - b - 1));
+  const double step = c == std::string::npos ? 0.0 : std::stod(job.substr(c + 1));
   const bool quick = context.Quick;
-  const int n = Grid(quick), size = Size(quick);
-  const int frames = quick ? 2 : 5;
-  auto image = Field(field, n);
+  const int size = Size(quick);
+  const int frames = MeasuredFrames(quick, n);
+  const int stride = Stride(quick, n);
+  auto image = Field(field == "opaque" ? "dense" : field, n);
 
   vtkNew<vtkVolume> volume;
   Configure(volume->GetProperty(), variant);
@@ -181,6 +229,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     reference->SetVolume(volume);
     reference->SetRenderer(renderer);
     reference->SetStep(0.125);
+    reference->SetPixelStride(stride);
     const double t0 = Now();
     reference->Compute(size, size);
     const double seconds = Now() - t0;
@@ -200,10 +249,22 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
 
   const double spacing = 1.0 / (n - 1);
   vtkNew<vtkPlumeVolumeMapper> ours;
-  if (kind == "ours")
+  const bool isOurs = kind.compare(0, 4, "ours") == 0;
+  if (isOurs)
   {
     ours->SetInputData(image);
     ours->SetSampleDistance(step);
+    ours->SetEmptySpaceSkipping(kind != "ours-noskip" && kind != "ours-plain");
+    ours->SetOpacityThreshold(kind == "ours-noert" || kind == "ours-plain" ? 1.0 : 0.995);
+    if (ModeOf(variant) == "mip")
+    {
+      ours->SetBlendModeToMaximumIntensity();
+    }
+    else if (ModeOf(variant) == "iso")
+    {
+      ours->SetBlendModeToIsoSurface();
+      ours->SetIsoValue(0.5);
+    }
     volume->SetMapper(ours);
   }
   else if (kind == "gpu")
@@ -246,140 +307,218 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   in.read(reinterpret_cast<char*>(expected.data()), expected.size() * sizeof(float));
   double sum = 0, worst = 0;
   const bool haveReference = static_cast<bool>(in);
-  for (size_t p = 0; p < expected.size(); p += 4)
+  size_t compared = 0;
+  for (int y = 0; y < size; y += stride)
   {
-    for (int c = 0; c < 3; ++c)
+    for (int x = 0; x < size; x += stride)
     {
-      const double d = std::fabs(double(rgba->GetValue(p + c)) - expected[p + c]);
-      sum += d * d;
-      worst = std::max(worst, d);
+      const size_t p = 4 * (static_cast<size_t>(y) * size + x);
+      for (int c = 0; c < 3; ++c)
+      {
+        const double d = std::fabs(double(rgba->GetValue(p + c)) - expected[p + c]);
+        sum += d * d;
+        worst = std::max(worst, d);
+      }
+      ++compared;
     }
   }
   nlohmann::json result = { { "render_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() },
-    { "empty_block_fraction", kind == "ours" ? ours->GetEmptyBlockFraction() : 0.0 } };
+    { "empty_block_fraction", isOurs ? ours->GetEmptyBlockFraction() : 0.0 } };
   if (haveReference)
   {
-    result["rms_error"] = std::sqrt(sum / (3.0 * size * size));
+    result["rms_error"] = std::sqrt(sum / (3.0 * compared));
     result["max_error"] = worst;
+    result["error_pixels"] = compared;
   }
   return result;
+}
+
+// sparsity jobs: (variant, grid) pairs, each run "ours" (all on) and in every SparsityConfigs
+std::vector<std::pair<std::string, int>> SparsityCases(bool quick)
+{
+  const std::vector<int> grids = Grids(quick);
+  std::vector<std::pair<std::string, int>> cases;
+  for (int n : grids)
+  {
+    for (const char* field : { "smoke", "dense", "opaque" })
+    {
+      if (n == grids[0] || std::string(field) != "opaque")
+      {
+        cases.emplace_back(field, n);
+      }
+    }
+  }
+  for (const char* variant : { "smoke+mip", "dense+mip", "smoke+iso", "dense+iso" })
+  {
+    cases.emplace_back(variant, grids[0]);
+  }
+  return cases;
 }
 
 std::vector<std::string> Jobs(bool quick)
 {
   std::vector<std::string> jobs;
-  for (const char* field : Fields)
+  for (int n : Grids(quick))
   {
-    jobs.push_back(std::string("reference:") + field);
-    for (double step : Steps(quick))
+    for (const char* field : Fields)
     {
-      char s[32];
-      std::snprintf(s, sizeof(s), "%g", step);
-      for (const char* kind : { "ours", "gpu", "fixed" })
+      jobs.push_back(JobId("reference", field, n));
+      for (double step : Steps(quick, n))
       {
-        jobs.push_back(std::string(kind) + ":" + field + ":" + s);
+        for (const char* kind : { "ours", "gpu", "fixed" })
+        {
+          jobs.push_back(JobId(kind, field, n, step));
+        }
       }
+    }
+  }
+  for (const auto& c : SparsityCases(quick))
+  {
+    if (c.first == "opaque" || c.first.find('+') != std::string::npos)
+    {
+      jobs.push_back(JobId("ours", c.first, c.second, 1.0)); // the others are timed above
+    }
+    for (const auto& config : SparsityConfigs)
+    {
+      jobs.push_back(JobId(config[0], c.first, c.second, 1.0));
     }
   }
   return jobs;
 }
 
+std::string CaseName(const std::string& variant, int n, int size)
+{
+  return Describe(variant) + " " + std::to_string(n) + "^3 -> " + std::to_string(size) + "^2";
+}
+
 std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& results, bool quick)
 {
   std::vector<nlohmann::json> lines;
-  const int n = Grid(quick), size = Size(quick);
-  for (const char* field : Fields)
+  const int size = Size(quick);
+  auto find = [&](const std::string& id) -> const nlohmann::json* {
+    const auto it = results.find(id);
+    return it == results.end() || !it->second.contains("render_s") ? nullptr : &it->second;
+  };
+  for (int n : Grids(quick))
   {
-    std::remove(ReferencePath(field, n, quick, getpid()).c_str()); // (same parent: this process)
-    for (double ourStep : Steps(quick))
+    const std::vector<double> steps = Steps(quick, n);
+    for (const char* field : Fields)
     {
-      char s[32];
-      std::snprintf(s, sizeof(s), "%g", ourStep);
-      const auto ours = results.find(std::string("ours:") + field + ":" + s);
-      if (ours == results.end())
+      std::remove(ReferencePath(field, n, quick, getpid()).c_str()); // (same parent: this process)
+      for (double ourStep : steps)
       {
-        continue;
+        const nlohmann::json* ours = find(JobId("ours", field, n, ourStep));
+        if (!ours)
+        {
+          continue;
+        }
+        for (const std::string peer : { "gpu", "fixed" })
+        {
+          for (double peerStep : steps)
+          {
+            const nlohmann::json* other = find(JobId(peer, field, n, peerStep));
+            if (!other)
+            {
+              continue;
+            }
+            const double o = (*ours)["render_s"].get<double>();
+            const double p = (*other)["render_s"].get<double>();
+            nlohmann::json line = { { "bench", "volume" },
+              { "case", CaseName(field, n, size) + ", ours step " + StepText(ourStep) + " voxel, peer step " +
+                  StepText(peerStep) + " voxel" },
+              { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o },
+              { "grid", n }, { "ours_step", ourStep }, { "peer_step", peerStep },
+              { "peak_rss_mb", (*ours)["peak_rss_mb"] }, { "peer_peak_rss_mb", (*other)["peak_rss_mb"] },
+              { "empty_block_fraction", (*ours)["empty_block_fraction"] } };
+            if (ours->contains("rms_error") && other->contains("rms_error"))
+            {
+              line["error"] = (*ours)["rms_error"];
+              line["peer_error"] = (*other)["rms_error"];
+              line["max_error"] = (*ours)["max_error"];
+              line["peer_max_error"] = (*other)["max_error"];
+              line["error_pixels"] = (*ours)["error_pixels"];
+            }
+            lines.push_back(line);
+          }
+        }
       }
+    }
+    // headline per field and peer: every peer configuration against our fastest
+    // configuration whose error is not larger than that peer configuration's
+    for (const char* field : Fields)
+    {
       for (const std::string peer : { "gpu", "fixed" })
       {
-        for (double peerStep : Steps(quick))
+        for (double peerStep : steps)
         {
-          char ps[32];
-          std::snprintf(ps, sizeof(ps), "%g", peerStep);
-          const auto other = results.find(peer + ":" + field + ":" + ps);
-          if (other == results.end())
+          const nlohmann::json* other = find(JobId(peer, field, n, peerStep));
+          if (!other || !other->contains("rms_error"))
           {
             continue;
           }
-          const double o = ours->second["render_s"].get<double>();
-          const double p = other->second["render_s"].get<double>();
-          nlohmann::json line = { { "bench", "volume" },
-            { "case", Describe(field) + " " + std::to_string(n) + "^3 -> " + std::to_string(size) + "^2, ours step " +
-                s + " voxel, peer step " + ps + " voxel" },
-            { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o },
-            { "ours_step", ourStep }, { "peer_step", peerStep },
-            { "peak_rss_mb", ours->second["peak_rss_mb"] }, { "peer_peak_rss_mb", other->second["peak_rss_mb"] },
-            { "empty_block_fraction", ours->second["empty_block_fraction"] } };
-          if (ours->second.contains("rms_error") && other->second.contains("rms_error"))
+          const double peerError = (*other)["rms_error"].get<double>();
+          const nlohmann::json* best = nullptr;
+          double bestStep = 0;
+          for (double ourStep : steps)
           {
-            line["error"] = ours->second["rms_error"];
-            line["peer_error"] = other->second["rms_error"];
-            line["max_error"] = ours->second["max_error"];
-            line["peer_max_error"] = other->second["max_error"];
+            const nlohmann::json* ours = find(JobId("ours", field, n, ourStep));
+            if (!ours || !ours->contains("rms_error") || (*ours)["rms_error"].get<double>() > peerError)
+            {
+              continue;
+            }
+            if (!best || (*ours)["render_s"].get<double>() < (*best)["render_s"].get<double>())
+            {
+              best = ours;
+              bestStep = ourStep;
+            }
           }
-          lines.push_back(line);
+          if (!best)
+          {
+            continue;
+          }
+          const double o = (*best)["render_s"].get<double>();
+          const double p = (*other)["render_s"].get<double>();
+          lines.push_back({ { "bench", "volume" },
+            { "case", CaseName(field, n, size) + ", equal or lower error: our fastest vs peer step " +
+                StepText(peerStep) + " voxel" },
+            { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o }, { "grid", n },
+            { "ours_step", bestStep }, { "peer_step", peerStep }, { "error", (*best)["rms_error"] },
+            { "peer_error", peerError }, { "error_pixels", (*best)["error_pixels"] },
+            { "peak_rss_mb", (*best)["peak_rss_mb"] }, { "empty_block_fraction", (*best)["empty_block_fraction"] } });
         }
       }
     }
   }
-  // headline per field and peer: every peer configuration against our fastest
-  // configuration whose error is not larger than that peer configuration's
-  for (const char* field : Fields)
+  // sparsity: what each of our switches saves (ratio = time with it off / time with everything on)
+  for (const auto& c : SparsityCases(quick))
   {
-    for (const std::string peer : { "gpu", "fixed" })
+    const nlohmann::json* on = find(JobId("ours", c.first, c.second, 1.0));
+    if (!on)
     {
-      for (double peerStep : Steps(quick))
+      continue;
+    }
+    for (const auto& config : SparsityConfigs)
+    {
+      const nlohmann::json* off = find(JobId(config[0], c.first, c.second, 1.0));
+      if (!off)
       {
-        char ps[32];
-        std::snprintf(ps, sizeof(ps), "%g", peerStep);
-        const auto other = results.find(peer + ":" + field + ":" + ps);
-        if (other == results.end() || !other->second.contains("rms_error"))
-        {
-          continue;
-        }
-        const double peerError = other->second["rms_error"].get<double>();
-        const nlohmann::json* best = nullptr;
-        double bestStep = 0;
-        for (double ourStep : Steps(quick))
-        {
-          char s[32];
-          std::snprintf(s, sizeof(s), "%g", ourStep);
-          const auto ours = results.find(std::string("ours:") + field + ":" + s);
-          if (ours == results.end() || !ours->second.contains("rms_error") ||
-            ours->second["rms_error"].get<double>() > peerError)
-          {
-            continue;
-          }
-          if (!best || ours->second["render_s"].get<double>() < (*best)["render_s"].get<double>())
-          {
-            best = &ours->second;
-            bestStep = ourStep;
-          }
-        }
-        if (!best)
-        {
-          continue;
-        }
-        const double o = (*best)["render_s"].get<double>();
-        const double p = other->second["render_s"].get<double>();
-        lines.push_back({ { "bench", "volume" },
-          { "case", Describe(field) + " " + std::to_string(n) + "^3 -> " + std::to_string(size) +
-              "^2, equal or lower error: our fastest vs peer step " + ps + " voxel" },
-          { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o },
-          { "ours_step", bestStep }, { "peer_step", peerStep }, { "error", (*best)["rms_error"] },
-          { "peer_error", peerError }, { "peak_rss_mb", (*best)["peak_rss_mb"] },
-          { "empty_block_fraction", (*best)["empty_block_fraction"] } });
+        continue;
       }
+      const std::string mode = ModeOf(c.first);
+      const double o = (*on)["render_s"].get<double>();
+      const double p = (*off)["render_s"].get<double>();
+      nlohmann::json line = { { "bench", "volume" },
+        { "case", "sparsity: " + FieldOf(c.first) + " " + mode + " " + std::to_string(c.second) + "^3 -> " +
+            std::to_string(size) + "^2, step 1 voxel, " + config[1] + " vs all on" },
+        { "ours_s", o }, { "peer", std::string("vtkPlumeVolumeMapper, ") + config[1] }, { "peer_s", p },
+        { "ratio", p / o }, { "grid", c.second }, { "field", FieldOf(c.first) }, { "mode", mode },
+        { "peak_rss_mb", (*on)["peak_rss_mb"] }, { "empty_block_fraction", (*on)["empty_block_fraction"] } };
+      if (on->contains("rms_error") && off->contains("rms_error"))
+      {
+        line["error"] = (*on)["rms_error"];
+        line["peer_error"] = (*off)["rms_error"];
+      }
+      lines.push_back(line);
     }
   }
   return lines;
@@ -389,8 +528,9 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
 void RegisterVolume(std::map<std::string, Benchmark>& registry)
 {
   Benchmark b;
-  b.Description = "raycast 128^3 volumes into 512x512 (smoke and dense fields, several steps) vs "
-                  "vtkGPUVolumeRayCastMapper and vtkFixedPointVolumeRayCastMapper, errors vs the CPU reference";
+  b.Description = "raycast 128^3 and 256^3 volumes into 512x512 (smoke and dense fields, several steps) vs "
+                  "vtkGPUVolumeRayCastMapper and vtkFixedPointVolumeRayCastMapper, errors vs the CPU reference; "
+                  "sparsity report (skipping / early termination off vs on)";
   b.Jobs = Jobs;
   b.Run = RunJob;
   b.Report = Report;
