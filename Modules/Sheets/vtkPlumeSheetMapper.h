@@ -43,6 +43,11 @@
  * so a partly broken mesh still draws its valid part (GetSkippedTriangles
  * reports how many were dropped for non-finite positions).
  *
+ * Actor transform: positions go through the actor's matrix; sigma_b and
+ * sigma_t are model lengths, multiplied by the matrix's length scale
+ * cbrt(|det|) (exact for uniform scales); densities stay per unit of world
+ * area. vtkPlumeSheetReference::SetModelMatrix follows the same rules.
+ *
  * Precision: positions are uploaded relative to the mesh centre and the
  * model-to-eye matrix is composed in double, so meshes far from the origin
  * render like meshes at the origin. Uploads happen only when the mesh, the

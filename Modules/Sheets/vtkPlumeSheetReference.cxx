@@ -82,6 +82,61 @@ double RayDistance(const Ray& ray, const Vec& c)
   return Norm(Sub(Add(ray.O, Scale(ray.V, t)), c));
 }
 
+// Distance from the ray's infinite line to the triangle abc: the distance
+// from the origin to the triangle projected along the ray's direction
+// (closest point on a triangle, Ericson, Real-Time Collision Detection 5.1.5).
+double LineTriangleDistance(const Ray& ray, const Vec& pa, const Vec& pb, const Vec& pc)
+{
+  auto project = [&](const Vec& p) {
+    const Vec q = Sub(p, ray.O);
+    return Sub(q, Scale(ray.V, Dot(q, ray.V)));
+  };
+  const Vec a = project(pa), b = project(pb), c = project(pc);
+  const Vec ab = Sub(b, a), ac = Sub(c, a), ap = Scale(a, -1.0);
+  const double d1 = Dot(ab, ap), d2 = Dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0)
+  {
+    return Norm(a);
+  }
+  const Vec bp = Scale(b, -1.0);
+  const double d3 = Dot(ab, bp), d4 = Dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3)
+  {
+    return Norm(b);
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+  {
+    const double v = d1 / (d1 - d3);
+    return Norm(Add(a, Scale(ab, v)));
+  }
+  const Vec cp = Scale(c, -1.0);
+  const double d5 = Dot(ab, cp), d6 = Dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6)
+  {
+    return Norm(c);
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+  {
+    const double w = d2 / (d2 - d6);
+    return Norm(Add(a, Scale(ac, w)));
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+  {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return Norm(Add(b, Scale(Sub(c, b), w)));
+  }
+  const double denom = va + vb + vc;
+  if (!(std::fabs(denom) > 0))
+  {
+    return 0.0; // degenerate projection (the triangle seen edge-on): do not cull
+  }
+  const double v = vb / denom, w = vc / denom;
+  return Norm(Add(a, Add(Scale(ab, v), Scale(ac, w))));
+}
+
 // Gauss-Kronrod 7/15 nodes and weights
 const double XGK[8] = { 0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
   0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
@@ -236,32 +291,49 @@ struct TriangleIntegrator
     return Scale(s, area);
   }
 
+  // Both distances are lower bounds of the distance between the ray and the
+  // (sub)triangle: from the ray segment to its bounding sphere, and from the
+  // ray's infinite line to the triangle itself (exact for slivers, whose
+  // bounding spheres are huge).
   bool Culled(const Vec& a, const Vec& b, const Vec& c) const
   {
     const Vec pa = this->Point(a), pb = this->Point(b), pc = this->Point(c);
     const Vec centre = Scale(Add(Add(pa, pb), pc), 1.0 / 3.0);
     const double r =
       std::max({ Norm(Sub(pa, centre)), Norm(Sub(pb, centre)), Norm(Sub(pc, centre)) });
-    return RayDistance(this->R, centre) > r + T.Reach;
+    if (RayDistance(this->R, centre) > r + T.Reach)
+    {
+      return true;
+    }
+    return LineTriangleDistance(this->R, pa, pb, pc) > T.Reach;
   }
 
+  // Longest-edge bisection: a sliver (real stream sheets have triangles
+  // metres long and millimetres wide) is cut along its length only, so the
+  // pieces far from the ray are culled early; 4-way midpoint subdivision
+  // kept slivers' aspect and multiplied the work by 4 per level.
   Vec Recurse(const Vec& a, const Vec& b, const Vec& c, const Vec& estimate, double area, int level) const
   {
-    const Vec ab = Scale(Add(a, b), 0.5), bc = Scale(Add(b, c), 0.5), ca = Scale(Add(c, a), 0.5);
-    const Vec kids[4][3] = { { a, ab, ca }, { ab, b, bc }, { ca, bc, c }, { ab, bc, ca } };
-    const double q = 0.25 * area;
-    Vec parts[4];
-    bool culled[4];
+    const Vec pa = this->Point(a), pb = this->Point(b), pc = this->Point(c);
+    const double lab = Norm(Sub(pa, pb)), lbc = Norm(Sub(pb, pc)), lca = Norm(Sub(pc, pa));
+    const double diameter = std::max({ lab, lbc, lca });
+    // (u, v) the longest edge, w the opposite corner
+    const Vec& u = lab >= lbc && lab >= lca ? a : (lbc >= lca ? b : c);
+    const Vec& v = lab >= lbc && lab >= lca ? b : (lbc >= lca ? c : a);
+    const Vec& w = lab >= lbc && lab >= lca ? c : (lbc >= lca ? a : b);
+    const Vec m = Scale(Add(u, v), 0.5);
+    const Vec kids[2][3] = { { u, m, w }, { m, v, w } };
+    const double q = 0.5 * area;
+    Vec parts[2];
+    bool culled[2];
     Vec sum{ 0, 0, 0 };
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < 2; ++k)
     {
       culled[k] = this->Culled(kids[k][0], kids[k][1], kids[k][2]);
       parts[k] = culled[k] ? Vec{ 0, 0, 0 } : this->Rule(kids[k][0], kids[k][1], kids[k][2], q);
       sum = Add(sum, parts[k]);
     }
     // resolve sigma_b before trusting the error estimate
-    const Vec pa = this->Point(a), pb = this->Point(b), pc = this->Point(c);
-    const double diameter = std::max({ Norm(Sub(pa, pb)), Norm(Sub(pb, pc)), Norm(Sub(pc, pa)) });
     const double sbMin = std::min({ a[0] * T.SB[0] + a[1] * T.SB[1] + a[2] * T.SB[2],
       b[0] * T.SB[0] + b[1] * T.SB[1] + b[2] * T.SB[2],
       c[0] * T.SB[0] + c[1] * T.SB[1] + c[2] * T.SB[2] });
@@ -270,12 +342,12 @@ struct TriangleIntegrator
     // the error budget is shared by the part of the triangle the ray can see
     const double relevant = std::min(T.Area, Pi * T.Reach * T.Reach);
     const double tol = this->Tolerance * std::max(std::min(1.0, area / relevant), 1e-3);
-    if (level >= 16 || (diameter <= 3.0 * sbMin && err <= tol))
+    if (level >= 40 || (diameter <= 3.0 * sbMin && err <= tol))
     {
       return sum;
     }
     Vec total{ 0, 0, 0 };
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < 2; ++k)
     {
       if (!culled[k])
       {
@@ -331,6 +403,19 @@ vtkDataArray* Named(vtkPolyData* poly, const std::string& name, int comps)
 vtkPlumeSheetReference::vtkPlumeSheetReference() = default;
 vtkPlumeSheetReference::~vtkPlumeSheetReference() = default;
 
+void vtkPlumeSheetReference::SetModelMatrix(vtkMatrix4x4* matrix)
+{
+  if (matrix)
+  {
+    std::copy(matrix->GetData(), matrix->GetData() + 16, this->ModelMatrix);
+  }
+  else
+  {
+    vtkMatrix4x4::Identity(this->ModelMatrix);
+  }
+  this->Modified();
+}
+
 void vtkPlumeSheetReference::SetInputData(vtkPolyData* mesh)
 {
   this->Mesh = mesh;
@@ -365,6 +450,10 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
   vtkDataArray* bArr = Named(poly, this->BlurArrayName, 1);
   vtkDataArray* tArr = Named(poly, this->ThicknessArrayName, 1);
   vtkDataArray* aArr = Named(poly, this->AbsorptionArrayName, 3);
+  // model -> world: positions by the matrix, sigmas by its length scale
+  const double* MM = this->ModelMatrix;
+  const double lengthScale = std::cbrt(std::fabs(MM[0] * (MM[5] * MM[10] - MM[6] * MM[9]) -
+    MM[1] * (MM[4] * MM[10] - MM[6] * MM[8]) + MM[2] * (MM[4] * MM[9] - MM[5] * MM[8])));
   auto pixelSize = [&](const Vec& p) {
     double c[4];
     Apply(M, p, c);
@@ -383,13 +472,15 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
     bool any = false;
     for (int k = 0; k < 3; ++k)
     {
-      double p[3];
-      poly->GetPoint(ids[k], p);
-      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      double m[3];
+      poly->GetPoint(ids[k], m);
+      double p[4];
+      Apply(MM, { m[0], m[1], m[2] }, p);
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) || !(p[3] != 0.0))
       {
         return;
       }
-      t.P[k] = { p[0], p[1], p[2] };
+      t.P[k] = { p[0] / p[3], p[1] / p[3], p[2] / p[3] };
       const double d =
         Clean((dArr ? dArr->GetComponent(ids[k], 0) : this->Density) * this->DensityScale);
       for (int c = 0; c < 3; ++c)
@@ -398,10 +489,12 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
         any = any || t.D[k][c] > 0;
       }
       const double floorSigma = this->MinimumSigmaPixels * pixelSize(t.P[k]);
-      t.SB[k] = std::max(Clean(bArr ? bArr->GetComponent(ids[k], 0) : this->BlurRadius), floorSigma);
+      t.SB[k] = std::max(
+        Clean(bArr ? bArr->GetComponent(ids[k], 0) : this->BlurRadius) * lengthScale, floorSigma);
       t.ST[k] = this->ThinSheet
         ? 0.0
-        : std::max(Clean(tArr ? tArr->GetComponent(ids[k], 0) : this->Thickness), floorSigma);
+        : std::max(
+            Clean(tArr ? tArr->GetComponent(ids[k], 0) : this->Thickness) * lengthScale, floorSigma);
     }
     const Vec n = Cross(Sub(t.P[1], t.P[0]), Sub(t.P[2], t.P[0]));
     const double nl = Norm(n);

@@ -22,8 +22,9 @@
  * documentation: per-corner lower bound of MinimumSigmaPixels pixels on both
  * sigmas (the pixel size measured by unprojecting a one-pixel offset at the
  * corner's depth); densities/sigmas that are NaN, Inf or negative count as
- * zero; triangles with a non-finite corner are skipped. The mesh is taken in
- * world coordinates (identity actor matrix).
+ * zero; triangles with a non-finite corner are skipped. The mesh is in model
+ * coordinates, placed in the world by ModelMatrix (the actor's matrix) as the
+ * mapper does.
  *
  * Cost: a few seconds for 64x64 pixels of a few thousand overlapping
  * triangles on 2 threads (vtkSMPTools); PixelStride computes a sparse subset.
@@ -38,6 +39,7 @@
 #include <string> // For std::string
 #include <vector> // For std::vector
 
+class vtkMatrix4x4;
 class vtkPolyData;
 class vtkRenderer;
 
@@ -64,6 +66,18 @@ public:
   vtkSetMacro(ThinSheet, bool);
   vtkSetMacro(BoundedByDepth, bool);
   vtkSetMacro(MinimumSigmaPixels, double);
+  ///@}
+
+  ///@{
+  /**
+   * Model-to-world matrix of the actor that draws the mesh (vtkProp3D::GetMatrix()),
+   * copied; nullptr restores the default, identity. As in vtkPlumeSheetMapper,
+   * positions are transformed by it, sigma_b and sigma_t (model lengths) are
+   * multiplied by its length scale cbrt(|det|) (exact for uniform scales), and
+   * densities stay per unit of world area.
+   */
+  void SetModelMatrix(vtkMatrix4x4* matrix);
+  const double* GetModelMatrix() const { return this->ModelMatrix; }
   ///@}
 
   ///@{
@@ -108,6 +122,7 @@ protected:
   bool BoundedByDepth = true;
   double MinimumSigmaPixels = 1.0 / 3.0;
   double Tolerance = 1e-4;
+  double ModelMatrix[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   int PixelStride = 1;
   int Width = 0;
   int Height = 0;

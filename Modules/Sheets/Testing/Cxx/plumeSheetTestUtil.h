@@ -115,6 +115,7 @@ inline Result CompareWithReference(Scene& s, vtkPolyData* mesh, const std::strin
   vtkNew<vtkPlumeSheetReference> own;
   vtkPlumeSheetReference* ref = refIn ? refIn : own.Get();
   Configure(ref, s.Mapper, mesh);
+  ref->SetModelMatrix(s.Actor->GetIsIdentity() ? nullptr : s.Actor->GetMatrix());
   const auto t1 = std::chrono::steady_clock::now();
   ref->Compute(s.Renderer, base.Depth.data());
   const double cpu = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
