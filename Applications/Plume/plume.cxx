@@ -79,7 +79,9 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   {
     plume::DrawProgress("rendering", 0);
   }
-  const plume::test::FloatImage image = plume::test::ReadBack(window);
+  // EXR: the frame from a float framebuffer (the window's is 8 bits per channel)
+  const plume::test::FloatImage image =
+    ext == ".exr" ? plume::RenderFloat(window, renderer) : plume::test::ReadBack(window);
   if (options.Progress)
   {
     plume::DrawProgress("rendering", 1);

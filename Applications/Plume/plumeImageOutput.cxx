@@ -3,6 +3,14 @@
 #include "plumeSceneError.h"
 
 #include "vtkCamera.h"
+#include "vtkFramebufferPass.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPixelBufferObject.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
 #include "vtkUnsignedCharArray.h"
@@ -35,6 +43,66 @@ double LinearDepth(double d, vtkCamera* camera)
   }
   const double ndc = 2.0 * d - 1.0;
   return 2.0 * n * f / ((f + n) - ndc * (f - n));
+}
+
+namespace
+{
+// Copies a texture's level 0 as floats (`components` per pixel).
+std::vector<float> DownloadFloats(vtkTextureObject* texture, int components)
+{
+  vtkSmartPointer<vtkPixelBufferObject> pbo;
+  pbo.TakeReference(texture->Download());
+  if (!pbo)
+  {
+    throw SceneError("could not read back the float framebuffer");
+  }
+  const size_t n = static_cast<size_t>(texture->GetWidth()) * texture->GetHeight() * components;
+  std::vector<float> values(n);
+  const auto* mapped = static_cast<const float*>(pbo->MapPackedBuffer());
+  if (!mapped)
+  {
+    throw SceneError("could not map the float framebuffer read-back");
+  }
+  std::copy(mapped, mapped + n, values.begin());
+  pbo->UnmapPackedBuffer();
+  return values;
+}
+}
+
+test::FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer)
+{
+  vtkSmartPointer<vtkRenderPass> previous = renderer->GetPass();
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkFramebufferPass> framebuffer;
+  framebuffer->SetDelegatePass(previous ? previous.Get() : steps.Get());
+  framebuffer->SetColorFormat(vtkTextureObject::Float32);
+  // depth keeps the window's format: the pass blits depth back into the
+  // window's framebuffer, and a depth blit needs matching formats
+  renderer->SetPass(framebuffer);
+  window->Render();
+  test::FloatImage image;
+  try
+  {
+    vtkTextureObject* color = framebuffer->GetColorTexture();
+    vtkTextureObject* depth = framebuffer->GetDepthTexture();
+    if (!color || !depth || color->GetVTKDataType() != VTK_FLOAT || color->GetComponents() != 4)
+    {
+      throw SceneError("the float framebuffer was not created (no RGBA32F render target)");
+    }
+    image.Width = static_cast<int>(color->GetWidth());
+    image.Height = static_cast<int>(color->GetHeight());
+    image.RGBA = DownloadFloats(color, 4);
+    image.Depth = DownloadFloats(depth, 1);
+  }
+  catch (...)
+  {
+    framebuffer->ReleaseGraphicsResources(window);
+    renderer->SetPass(previous);
+    throw;
+  }
+  framebuffer->ReleaseGraphicsResources(window);
+  renderer->SetPass(previous);
+  return image;
 }
 
 namespace
@@ -80,10 +148,13 @@ void WriteEXR(const std::string& path, const test::FloatImage& image, vtkCamera*
     {
       const size_t src = static_cast<size_t>(y) * w + x;
       const size_t dst = static_cast<size_t>(h - 1 - y) * w + x;
-      for (int c = 0; c < 4; ++c)
+      for (int c = 0; c < 3; ++c)
       {
         channels[c][dst] = image.RGBA[4 * src + c];
       }
+      // opaque output, as for PNG: the framebuffer's alpha is VTK's internal
+      // coverage (in a float buffer it can leave [0, 1])
+      channels[3][dst] = 1.0f;
       channels[4][dst] = static_cast<float>(LinearDepth(image.Depth[src], camera));
     }
   }

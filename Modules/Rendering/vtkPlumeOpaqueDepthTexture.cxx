@@ -57,8 +57,7 @@ bool vtkPlumeOpaqueDepthTexture::Capture(vtkRenderer* renderer)
   // read from the framebuffer VTK is drawing into
   state->PushReadFramebufferBinding();
   state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
-  GLint samples = 0, componentType = 0, depthBits = 0;
-  glGetIntegerv(GL_SAMPLES, &samples);
+  GLint componentType = 0, depthBits = 0;
   const GLenum attachment = drawBinding ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
   glGetFramebufferAttachmentParameteriv(
     GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &componentType);
@@ -85,18 +84,20 @@ bool vtkPlumeOpaqueDepthTexture::Capture(vtkRenderer* renderer)
       this->LastError = "could not allocate the depth texture";
     }
   }
-  if (ok && samples == 0)
+  if (ok)
   {
-    this->Texture->CopyFromFrameBuffer(x, y, 0, 0, width, height);
-    this->Texture->Deactivate();
-  }
-  else if (ok)
-  {
-    // multisampled: resolve by blitting the depth into a framebuffer around the texture
+    // Blit the depth into a framebuffer around the texture (resolves a
+    // multisampled source too). Not vtkTextureObject::CopyFromFrameBuffer:
+    // in VTK 9.1 it blits from a read framebuffer of its own choosing, which
+    // inside a vtkFramebufferPass is not the one being drawn into.
     if (!this->ResolveFramebuffer)
     {
       glGenFramebuffers(1, &this->ResolveFramebuffer);
     }
+    // the scissor box (VTK's viewport) applies to the blit's destination,
+    // which starts at (0, 0): off, or other viewports than the lower left are cut
+    vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+    state->vtkglDisable(GL_SCISSOR_TEST);
     state->PushDrawFramebufferBinding();
     state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->ResolveFramebuffer);
     glFramebufferTexture2D(
@@ -107,7 +108,7 @@ bool vtkPlumeOpaqueDepthTexture::Capture(vtkRenderer* renderer)
     if (glGetError() != GL_NO_ERROR)
     {
       ok = false;
-      this->LastError = "could not resolve the multisampled depth buffer";
+      this->LastError = "could not copy the depth buffer (blit)";
     }
   }
   state->PopReadFramebufferBinding();

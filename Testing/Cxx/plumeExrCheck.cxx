@@ -1,11 +1,21 @@
-// plumeExrCheck FILE.exr W H: the EXR written by `plume render` has float
-// channels R, G, B, A and Z of the given size, finite colour everywhere, a
-// finite positive Z on drawn pixels and +inf Z on some background pixels.
+// plumeExrCheck FILE.exr W H [FILE.png]: the EXR written by `plume render` has
+// float channels R, G, B, A and Z of the given size, finite non-negative
+// colour everywhere (linear, may exceed 1), A = 1, a finite positive Z on
+// drawn pixels and +inf Z on some background pixels. With the PNG of the same
+// scene: the EXR matches it to within the 8-bit rounding away from edges
+// (the window multisamples, the float framebuffer does not), and is not itself
+// 8-bit (most colour values between 0 and 1 lie off the k/255 lattice: it
+// comes from a float framebuffer, not the window's 8-bit one).
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -13,9 +23,9 @@
 
 int main(int argc, char* argv[])
 {
-  if (argc != 4)
+  if (argc != 4 && argc != 5)
   {
-    std::cerr << "usage: plumeExrCheck FILE.exr W H\n";
+    std::cerr << "usage: plumeExrCheck FILE.exr W H [FILE.png]\n";
     return 2;
   }
   try
@@ -48,13 +58,18 @@ int main(int argc, char* argv[])
     size_t drawn = 0, background = 0;
     for (size_t p = 0; p < channels[0].size(); ++p)
     {
-      for (int c = 0; c < 4; ++c)
+      for (int c = 0; c < 3; ++c)
       {
-        if (!std::isfinite(channels[c][p]) || channels[c][p] < 0 || channels[c][p] > 1)
+        if (!std::isfinite(channels[c][p]) || channels[c][p] < 0)
         {
-          std::cerr << "colour channel " << names[c] << " out of [0,1] at pixel " << p << "\n";
+          std::cerr << "colour channel " << names[c] << " negative or not finite at pixel " << p << "\n";
           return 1;
         }
+      }
+      if (channels[3][p] != 1.0f)
+      {
+        std::cerr << "alpha " << channels[3][p] << " is not 1 at pixel " << p << "\n";
+        return 1;
       }
       const float z = channels[4][p];
       if (std::isinf(z) && z > 0)
@@ -72,7 +87,59 @@ int main(int argc, char* argv[])
       }
     }
     std::cout << drawn << " drawn pixels, " << background << " background pixels\n";
-    return (drawn > 0 && background > 0) ? 0 : 1;
+    if (drawn == 0 || background == 0)
+    {
+      return 1;
+    }
+    if (argc == 5)
+    {
+      vtkNew<vtkPNGReader> reader;
+      reader->SetFileName(argv[4]);
+      reader->Update();
+      vtkImageData* png = reader->GetOutput();
+      int dims[3];
+      png->GetDimensions(dims);
+      if (dims[0] != w || dims[1] != h || png->GetNumberOfScalarComponents() < 3)
+      {
+        std::cerr << "the PNG is not a " << w << "x" << h << " RGB image\n";
+        return 1;
+      }
+      // The window multisamples (the PNG's edges are antialiased), the float
+      // framebuffer does not: edges differ, everything else must agree to
+      // within the 8-bit rounding.
+      std::vector<double> differences;
+      size_t between = 0, offLattice = 0;
+      for (int y = 0; y < h; ++y)
+      {
+        for (int x = 0; x < w; ++x)
+        {
+          const size_t p = static_cast<size_t>(h - 1 - y) * w + x; // EXR rows top to bottom
+          for (int c = 0; c < 3; ++c)
+          {
+            const double e = channels[c][p];
+            const double q = png->GetScalarComponentAsDouble(x, y, 0, c) / 255.0;
+            differences.push_back(std::fabs(std::min(e, 1.0) - q) * 255.0);
+            if (e > 0.01 && e < 0.99)
+            {
+              ++between;
+              offLattice += std::fabs(e * 255.0 - std::round(e * 255.0)) > 0.01;
+            }
+          }
+        }
+      }
+      std::sort(differences.begin(), differences.end());
+      const double median = differences[differences.size() / 2];
+      const double p95 = differences[differences.size() * 95 / 100];
+      const double fraction = between ? double(offLattice) / between : 0.0;
+      std::cout << "vs PNG: median " << median << ", 95th percentile " << p95 << " 8-bit steps; " << offLattice
+                << " of " << between << " values in (0,1) off the 8-bit lattice\n";
+      if (median > 0.5 || p95 > 2.0 || between < 100 || fraction < 0.5)
+      {
+        std::cerr << "the EXR does not look like an unquantised float render of the PNG's scene\n";
+        return 1;
+      }
+    }
+    return 0;
   }
   catch (const std::exception& e)
   {
