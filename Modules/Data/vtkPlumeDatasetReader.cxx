@@ -38,6 +38,7 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <cstring>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -272,6 +273,66 @@ struct vtkPlumeDatasetReader::Internals
     return this->Captured.empty() ? std::string() : ": " + this->Captured;
   }
 };
+
+namespace
+{
+// VTK's legacy reader reports a truncated or corrupt file only through
+// vtkGenericWarningMacro ("Error reading binary data!"), which reaches the
+// output window, not the reader's observers. While a read runs, this window
+// stands in for the current one: it forwards every message and remembers
+// generic warnings about reading, so a damaged file fails instead of loading
+// half-filled arrays.
+class ReadWarningCatcher : public vtkOutputWindow
+{
+public:
+  static ReadWarningCatcher* New()
+  {
+    auto* self = new ReadWarningCatcher;
+    self->InitializeObjectBase();
+    return self;
+  }
+  vtkTypeMacro(ReadWarningCatcher, vtkOutputWindow);
+
+  std::string Caught;
+  vtkSmartPointer<vtkOutputWindow> Previous;
+
+  void DisplayText(const char* text) override { this->Previous->DisplayText(text); }
+  void DisplayErrorText(const char* text) override { this->Previous->DisplayErrorText(text); }
+  void DisplayWarningText(const char* text) override { this->Previous->DisplayWarningText(text); }
+  void DisplayDebugText(const char* text) override { this->Previous->DisplayDebugText(text); }
+  void DisplayGenericWarningText(const char* text) override
+  {
+    if (text && this->Caught.empty() && std::strstr(text, "Error reading"))
+    {
+      std::string message = text;
+      // keep the last line (the message itself, not VTK's file and line)
+      while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+      {
+        message.pop_back();
+      }
+      const auto newline = message.rfind('\n');
+      this->Caught = newline == std::string::npos ? message : message.substr(newline + 1);
+    }
+    this->Previous->DisplayGenericWarningText(text);
+  }
+};
+
+// Installs a ReadWarningCatcher for its lifetime.
+class ScopedReadWarningCatcher
+{
+public:
+  ScopedReadWarningCatcher()
+  {
+    this->Catcher->Previous = vtkOutputWindow::GetInstance();
+    vtkOutputWindow::SetInstance(this->Catcher);
+  }
+  ~ScopedReadWarningCatcher() { vtkOutputWindow::SetInstance(this->Catcher->Previous); }
+  const std::string& Caught() const { return this->Catcher->Caught; }
+
+private:
+  vtkNew<ReadWarningCatcher> Catcher;
+};
+}
 
 //------------------------------------------------------------------------------
 vtkPlumeDatasetReader::vtkPlumeDatasetReader()
@@ -1014,8 +1075,15 @@ int vtkPlumeDatasetReader::RequestData(
   {
     in.ProgressOffset = 0;
     in.ProgressScale = 1;
+    ScopedReadWarningCatcher warnings;
     const int ok = n > 0 ? in.Reader->UpdateTimeStep(times[step]) : in.Reader->GetExecutive()->Update();
     vtkDataObject* produced = in.Reader->GetOutputDataObject(0);
+    if (!warnings.Caught().empty())
+    {
+      in.Reader->Modified(); // a later Update must read again, not keep the damaged output
+      return fail("the " + in.Kind + " reader could not read all of " + in.Path +
+        " (truncated or corrupt?): " + warnings.Caught());
+    }
     if (!ok || !produced || !in.Captured.empty() || in.Reader->GetErrorCode() != 0)
     {
       const std::string what = in.Kind == "plot3d" && !in.QPath.empty()
