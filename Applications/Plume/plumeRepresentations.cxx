@@ -59,6 +59,15 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   {
     throw SceneError(p.Where() + ": roots \"seeds\" needs 'seed_plane' or 'seed_dataset'");
   }
+  if (seedPlane && !seedDataset.empty())
+  {
+    throw SceneError(p.Where() + ": give 'seed_plane' or 'seed_dataset', not both");
+  }
+  if ((seedPlane || !seedDataset.empty()) && roots != "seeds")
+  {
+    throw SceneError(p.Where() + ": '" + std::string(seedPlane ? "seed_plane" : "seed_dataset") +
+      "' is used only with roots \"seeds\" (roots is \"" + roots + "\")");
+  }
 
   vtkImageData* image = datasets.GetImage(dataset, p.Where());
   vtkDataArray* array = RequirePointArray(image, vectors, 3, p.Where(), dataset);
