@@ -1099,6 +1099,12 @@ int vtkPlumeDatasetReader::RequestData(
     return fail("the " + in.Kind + " reader produced no data (no points) from " + in.Path);
   }
 
+  if (!vtkCompositeDataSet::SafeDownCast(data) && !this->BlockNames.empty())
+  {
+    return fail(in.Path + " holds one dataset, not blocks: block selection (" + Join(this->BlockNames) +
+      ") matches nothing");
+  }
+
   // --- composite: select, then merge or prune
   if (vtkCompositeDataSet::SafeDownCast(data))
   {
