@@ -259,6 +259,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     if (ModeOf(variant) == "mip")
     {
       ours->SetBlendModeToMaximumIntensity();
+      ours->MIPSkippingOn(); // opt-in (off by default): measured here
     }
     else if (ModeOf(variant) == "iso")
     {
