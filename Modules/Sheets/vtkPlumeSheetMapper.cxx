@@ -1,5 +1,6 @@
 #include "vtkPlumeSheetMapper.h"
 
+#include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeShaderVariants.h"
 
 #include "vtkPlumeSheetCompositeFS.h"
@@ -127,8 +128,8 @@ public:
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
   vtkShaderProgram* VAOProgram = nullptr;
   bool BufferChanged = true;
-  vtkNew<vtkTextureObject> DepthTexture;
-  vtkNew<vtkTextureObject> ResolvedDepth; // R32F copy of a multisampled depth buffer
+  vtkNew<vtkPlumeOpaqueDepthTexture> Depth; // the opaque scene's depth (MSAA resolved by a blit)
+  bool WarnedDepth = false;
   vtkNew<vtkTextureObject> AccumTexture;
   vtkNew<vtkOpenGLFramebufferObject> FBO;
   int TargetSize[2] = { 0, 0 };
@@ -164,8 +165,7 @@ public:
     this->Buffer->ReleaseGraphicsResources();
     this->VAO->ReleaseGraphicsResources();
     this->EmptyVAO->ReleaseGraphicsResources();
-    this->DepthTexture->ReleaseGraphicsResources(window);
-    this->ResolvedDepth->ReleaseGraphicsResources(window);
+    this->Depth->ReleaseGraphicsResources(window);
     this->AccumTexture->ReleaseGraphicsResources(window);
     this->FBO->ReleaseGraphicsResources(window);
     this->Programs.clear();
@@ -455,8 +455,21 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
   }
   const double modelScale = std::cbrt(std::fabs(vtkMath::Determinant3x3(m3)));
 
+  // ---- the opaque scene's depth, as it is now (this actor renders after the
+  // opaque actors); without it the integral runs over the whole line
+  bool bounded = this->BoundedByDepth;
+  if (bounded && !impl.Depth->Capture(ren))
+  {
+    if (!impl.WarnedDepth)
+    {
+      vtkWarningMacro(<< "cannot read the opaque depth (" << impl.Depth->GetLastError()
+                      << "): the sheet is drawn as if nothing opaque were in the scene");
+      impl.WarnedDepth = true;
+    }
+    bounded = false;
+  }
+
   // ---- programs
-  const bool bounded = this->BoundedByDepth;
   const bool adaptive = this->AdaptiveSampling && this->Quadrature == QUADRATURE_ANALYTIC;
   const std::set<std::string> enabled = { bounded ? "BOUNDED" : "UNBOUNDED",
     this->ThinSheet ? "THIN" : "THICK", this->Quadrature == QUADRATURE_GRID ? "GRID" : "ANALYTIC",
@@ -494,16 +507,10 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
 
   vtkOpenGLState* state = renWin->GetState();
 
-  // ---- targets (viewport-sized): opaque depth copy and float optical depth
+  // ---- target (viewport-sized): float optical depth
   if (impl.TargetSize[0] != vpWidth || impl.TargetSize[1] != vpHeight ||
-    !impl.AccumTexture->GetHandle() || !impl.DepthTexture->GetHandle())
+    !impl.AccumTexture->GetHandle())
   {
-    impl.DepthTexture->SetContext(renWin);
-    impl.DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    impl.DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    impl.DepthTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.DepthTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.DepthTexture->AllocateDepth(vpWidth, vpHeight, vtkTextureObject::Float32);
     impl.AccumTexture->SetContext(renWin);
     impl.AccumTexture->SetMinificationFilter(vtkTextureObject::Nearest);
     impl.AccumTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
@@ -516,29 +523,9 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     impl.TargetSize[0] = vpWidth;
     impl.TargetSize[1] = vpHeight;
   }
-  vtkTextureObject* depthTexture = impl.DepthTexture;
-  if (bounded)
+  vtkTextureObject* depthTexture = bounded ? impl.Depth->GetTextureObject() : nullptr;
+  if (depthTexture)
   {
-    // the opaque scene's depth, as it is now (this actor renders after the opaque actors)
-    GLint samples = 0;
-    glGetIntegerv(GL_SAMPLES, &samples);
-    if (samples > 0)
-    {
-      // a multisampled framebuffer cannot be copied from: let the window
-      // resolve its depth, and upload it (a CPU round trip, MSAA only)
-      std::vector<float> depth(static_cast<size_t>(vpWidth) * vpHeight);
-      renWin->GetZbufferData(vpX, vpY, vpX + vpWidth - 1, vpY + vpHeight - 1, depth.data());
-      impl.ResolvedDepth->SetContext(renWin);
-      impl.ResolvedDepth->SetMinificationFilter(vtkTextureObject::Nearest);
-      impl.ResolvedDepth->SetMagnificationFilter(vtkTextureObject::Nearest);
-      impl.ResolvedDepth->Create2DFromRaw(vpWidth, vpHeight, 1, VTK_FLOAT, depth.data());
-      depthTexture = impl.ResolvedDepth;
-    }
-    else
-    {
-      impl.DepthTexture->Activate();
-      glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, vpX, vpY, vpWidth, vpHeight);
-    }
     depthTexture->Activate();
   }
 

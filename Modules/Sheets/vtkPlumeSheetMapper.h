@@ -34,7 +34,9 @@
  *
  * Compositing: the sheet is drawn in the opaque pass (HasOpaqueGeometry),
  * without depth writes. Add the sheet actor after the opaque actors it
- * overlaps: it sees the depth buffer as it is when the actor renders.
+ * overlaps: it sees the depth buffer as it is when the actor renders (copied
+ * by vtkPlumeOpaqueDepthTexture, which also resolves multisampled windows; if
+ * the depth cannot be read the sheet warns once and is not bounded by it).
  *
  * Bad values: a point whose density is NaN, Inf or negative counts as zero
  * density; a non-finite or negative sigma counts as zero (then the 1/3-pixel
