@@ -1,12 +1,18 @@
 // `plume bench sheets`: smoke sheets on a real mesh (office_stream_sheet.vtp,
-// 24,000 triangles) at 512x512: time against error for the sample settings
-// (Gauss-Legendre along the footprint with 2..16 nodes, the default; and the
-// paper's regular grid 2x1..16x10), and what a VTK user would do today:
-// splat the sheet into a density grid (64^3, 128^3), blur it and raycast it
-// with vtkGPUVolumeRayCastMapper / vtkFixedPointVolumeRayCastMapper. Every
-// error is measured against vtkPlumeSheetReference on a sparse pixel lattice
-// (the reference is slow): RMS and max transmittance error as a fraction of
-// the reference's dynamic range there. Each job runs in its own process.
+// 24,000 triangles) at 512x512 and 1024x1024: time against error for the
+// sample settings (Gauss-Legendre along the footprint with 2..8 nodes, the
+// default; and the paper's regular grid 2x1..16x10), and what a VTK user
+// would do today: splat the sheet into a density grid (64^3..256^3), blur it
+// and raycast it with vtkGPUVolumeRayCastMapper /
+// vtkFixedPointVolumeRayCastMapper. Every error is measured against
+// vtkPlumeSheetReference on a sparse 32x32 pixel lattice (the reference is
+// slow): RMS and max transmittance error as a fraction of the reference's
+// dynamic range there. Scaling (256x256, default settings, against splat +
+// vtkFixedPointVolumeRayCastMapper 64^3): time against triangle count (the
+// fire_ug.vtu mfrac isosurface, 1,278 triangles, split 1->4 up to 4 times:
+// the same surface and smoke, up to 327,000 triangles) and against screen
+// coverage (the office sheet zoomed). Each job runs in its own process.
+// Slow jobs time fewer frames (at least one after the first; see Frames()).
 #include "plumeBenchmarks.h"
 #include "plumeTestSupport.h"
 
@@ -16,6 +22,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkContourFilter.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkFixedPointVolumeRayCastMapper.h"
 #include "vtkFloatArray.h"
@@ -30,11 +37,15 @@
 #include "vtkSMPTools.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkXMLPolyDataReader.h"
+#include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
+#include <utility>
 
 namespace plume
 {
@@ -46,14 +57,13 @@ const double Density = 0.03;
 const double Blur = 0.04;
 const double Thick = 0.03;
 
-int SizeOf(bool quick)
+// the error lattice is 32x32 pixels at 512^2 and 1024^2 (8x8 at --quick's 128^2)
+int StrideOf(int size)
 {
-  return quick ? 128 : 512;
+  return size <= 128 ? 16 : size / 32;
 }
-int StrideOf(bool quick)
-{
-  return quick ? 16 : 16;
-}
+const int ScaleSize = 256;     // scaling runs
+const int ScaleSizeQuick = 64;
 
 std::string DataFile()
 {
@@ -73,16 +83,117 @@ vtkSmartPointer<vtkPolyData> LoadMesh()
   return mesh;
 }
 
-void SetCamera(vtkRenderer* renderer, double azimuth)
+// the fire_ug.vtu mfrac = 0.005 isosurface (1,278 triangles), each triangle
+// split into 4 at its edge midpoints `levels` times (same surface)
+vtkSmartPointer<vtkPolyData> FireMesh(int levels)
+{
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  const std::string file = plume::test::DataPath("classic/fire_ug.vtu");
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  if (!reader->GetOutput()->GetPointData()->GetArray("mfrac"))
+  {
+    throw std::runtime_error("cannot read " + file);
+  }
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputData(reader->GetOutput());
+  contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "mfrac");
+  contour->SetValue(0, 0.005);
+  contour->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(contour->GetOutput()->GetPoints());
+  mesh->SetPolys(contour->GetOutput()->GetPolys());
+  for (int level = 0; level < levels; ++level)
+  {
+    vtkNew<vtkPoints> points;
+    points->DeepCopy(mesh->GetPoints());
+    vtkNew<vtkCellArray> polys;
+    std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> midpoints;
+    auto mid = [&](vtkIdType a, vtkIdType b) {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = midpoints.find(key);
+      if (it != midpoints.end())
+      {
+        return it->second;
+      }
+      double pa[3], pb[3];
+      points->GetPoint(a, pa);
+      points->GetPoint(b, pb);
+      const vtkIdType id =
+        points->InsertNextPoint(0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]));
+      midpoints[key] = id;
+      return id;
+    };
+    vtkIdType npts = 0;
+    const vtkIdType* pts = nullptr;
+    vtkCellArray* old = mesh->GetPolys();
+    for (old->InitTraversal(); old->GetNextCell(npts, pts);)
+    {
+      for (vtkIdType k = 1; k + 1 < npts; ++k)
+      {
+        const vtkIdType a = pts[0], b = pts[k], c = pts[k + 1];
+        const vtkIdType ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+        const vtkIdType t[4][3] = { { a, ab, ca }, { ab, b, bc }, { ca, bc, c }, { ab, bc, ca } };
+        for (const auto& tri : t)
+        {
+          polys->InsertNextCell(3, tri);
+        }
+      }
+    }
+    mesh = vtkSmartPointer<vtkPolyData>::New();
+    mesh->SetPoints(points);
+    mesh->SetPolys(polys);
+  }
+  return mesh;
+}
+
+// office: the view of the error runs, zoomed by `zoom` (coverage runs);
+// fire: a view of the whole plume
+void SetCamera(vtkRenderer* renderer, double azimuth, bool fire = false, double zoom = 1.0)
 {
   vtkCamera* cam = renderer->GetActiveCamera();
-  cam->SetPosition(1.0, 9.0, 6.0);
-  cam->SetFocalPoint(1.9, 1.6, 1.2);
+  if (fire)
+  {
+    cam->SetPosition(4.2, 2.4, 5.2);
+    cam->SetFocalPoint(1.5, 1.5, 1.2);
+    cam->SetViewAngle(40);
+  }
+  else
+  {
+    cam->SetPosition(1.0, 9.0, 6.0);
+    cam->SetFocalPoint(1.9, 1.6, 1.2);
+    cam->SetViewAngle(32 / zoom);
+  }
   cam->SetViewUp(0, 1, 0);
-  cam->SetViewAngle(32);
   cam->Azimuth(azimuth);
   // a fixed clipping range, so every job (and the reference) sees the same rays
-  cam->SetClippingRange(4.0, 16.0);
+  cam->SetClippingRange(fire ? 1.0 : 4.0, fire ? 12.0 : 16.0);
+}
+
+// Timed frames after the first (which compiles and uploads): up to 3, but
+// stop once 15 s have been spent (slow 1024^2 and 16x10 settings: minutes
+// per frame on llvmpipe); the median of those taken.
+bool MoreFrames(const std::vector<double>& times)
+{
+  double total = 0.0;
+  for (double t : times)
+  {
+    total += t;
+  }
+  return times.size() < 3 && total < 15.0;
+}
+
+// fraction of the frame the smoke darkens by more than 1 % (R channel)
+double Coverage(vtkRenderWindow* window, int size)
+{
+  vtkNew<vtkFloatArray> rgba;
+  window->GetRGBAPixelData(0, 0, size - 1, size - 1, 0, rgba, 0);
+  size_t dark = 0;
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(size) * size; ++i)
+  {
+    dark += rgba->GetValue(4 * i) < 0.99f ? 1 : 0;
+  }
+  return double(dark) / (double(size) * size);
 }
 
 // the R channel on the sparse lattice (white background, black smoke: R = T)
@@ -102,11 +213,11 @@ std::vector<double> Samples(vtkRenderWindow* window, int size, int stride)
 }
 
 // mass of every triangle deposited (trilinear) at its centroid, as density per volume, then blurred
-vtkSmartPointer<vtkImageData> Splat(vtkPolyData* mesh, int n)
+vtkSmartPointer<vtkImageData> Splat(vtkPolyData* mesh, int n, double density, double blur, double thick)
 {
   double b[6];
   mesh->GetBounds(b);
-  const double pad = 4 * std::max(Blur, Thick);
+  const double pad = 4 * std::max(blur, thick);
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(n, n, n);
   double spacing[3];
@@ -140,7 +251,7 @@ vtkSmartPointer<vtkImageData> Splat(vtkPolyData* mesh, int n)
       }
       const double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
                    cz = e1[0] * e2[1] - e1[1] * e2[0];
-      const double mass = Density * 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+      const double mass = density * 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
       double f[3];
       int i0[3];
       for (int a = 0; a < 3; ++a)
@@ -169,7 +280,7 @@ vtkSmartPointer<vtkImageData> Splat(vtkPolyData* mesh, int n)
   vtkNew<vtkImageGaussianSmooth> smooth;
   smooth->SetInputData(image);
   smooth->SetDimensionality(3);
-  smooth->SetStandardDeviations(Blur / spacing[0], Blur / spacing[1], Thick / spacing[2]);
+  smooth->SetStandardDeviations(blur / spacing[0], blur / spacing[1], thick / spacing[2]);
   smooth->SetRadiusFactors(3, 3, 3);
   smooth->Update();
   auto out = vtkSmartPointer<vtkImageData>::New();
@@ -177,28 +288,50 @@ vtkSmartPointer<vtkImageData> Splat(vtkPolyData* mesh, int n)
   return out;
 }
 
+std::vector<std::string> Split(const std::string& job)
+{
+  std::vector<std::string> parts;
+  size_t start = 0;
+  for (size_t c = job.find(':'); c != std::string::npos; c = job.find(':', start))
+  {
+    parts.push_back(job.substr(start, c - start));
+    start = c + 1;
+  }
+  parts.push_back(job.substr(start));
+  return parts;
+}
+
+// Jobs: reference:SIZE | ours:SIZE:A|F|G:ARG | peer:SIZE:gpu|fixed:N |
+// tris:LEVEL:ours|peer | cover:ZOOM:ours|peer
 nlohmann::json RunJob(const Context& context, const std::string& job)
 {
   vtkSMPTools::SetBackend("STDThread");
-  const int size = SizeOf(context.Quick);
-  const int stride = StrideOf(context.Quick);
-  const int frames = 3;
-  auto mesh = LoadMesh();
+  const std::vector<std::string> part = Split(job);
+  const std::string kind = part[0];
+  const bool scaling = kind == "tris" || kind == "cover";
+  const int size = scaling ? (context.Quick ? ScaleSizeQuick : ScaleSize) : std::stoi(part[1]);
+  const int stride = StrideOf(size);
+  const bool fire = kind == "tris";
+  const double zoom = kind == "cover" ? std::stod(part[1]) : 1.0;
+  const double density = fire ? 0.25 : Density;
+  const double blur = fire ? 0.06 : Blur;
+  const double thick = fire ? 0.04 : Thick;
+  auto mesh = fire ? FireMesh(std::stoi(part[1])) : LoadMesh();
   auto window = context.MakeWindow(size, size);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(1, 1, 1);
   window->AddRenderer(renderer);
-  SetCamera(renderer, 0);
+  SetCamera(renderer, 0, fire, zoom);
   window->Render();
   window->WaitForCompletion();
 
-  if (job == "reference")
+  if (kind == "reference")
   {
     vtkNew<vtkPlumeSheetReference> ref;
     ref->SetInputData(mesh);
-    ref->SetDensity(Density);
-    ref->SetBlurRadius(Blur);
-    ref->SetThickness(Thick);
+    ref->SetDensity(density);
+    ref->SetBlurRadius(blur);
+    ref->SetThickness(thick);
     ref->SetPixelStride(stride);
     const double t0 = Now();
     ref->Compute(renderer, nullptr);
@@ -214,22 +347,22 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     return { { "reference_s", seconds }, { "samples", out }, { "peak_rss_mb", PeakRSSMB() } };
   }
 
-  // job = ours:A:n | ours:G:axb | peer:gpu|fixed:n
-  const auto c1 = job.find(':'), c2 = job.find(':', c1 + 1);
-  const std::string kind = job.substr(0, c1), mode = job.substr(c1 + 1, c2 - c1 - 1),
-                    arg = job.substr(c2 + 1);
+  // ours:SIZE:MODE:ARG, peer:SIZE:gpu|fixed:N; tris/cover:X:ours|peer (default settings / fixed 64^3)
+  const bool isOurs = kind == "ours" || (scaling && part[2] == "ours");
+  const std::string mode = scaling ? (isOurs ? "A" : "fixed") : part[2];
+  const std::string arg = scaling ? (isOurs ? "8" : "64") : part[3];
   vtkNew<vtkActor> actor;
   vtkNew<vtkVolume> volume;
   vtkSmartPointer<vtkPlumeSheetMapper> ours;
   double prep = 0.0;
   const double start = Now();
-  if (kind == "ours")
+  if (isOurs)
   {
     ours = vtkSmartPointer<vtkPlumeSheetMapper>::New();
     ours->SetInputData(mesh);
-    ours->SetDensity(Density);
-    ours->SetBlurRadius(Blur);
-    ours->SetThickness(Thick);
+    ours->SetDensity(density);
+    ours->SetBlurRadius(blur);
+    ours->SetThickness(thick);
     if (mode == "A" || mode == "F")
     {
       ours->SetQuadrature(vtkPlumeSheetMapper::QUADRATURE_ANALYTIC);
@@ -248,7 +381,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   else
   {
     const int n = std::stoi(arg);
-    auto grid = Splat(mesh, n);
+    auto grid = Splat(mesh, n, density, blur, thick);
     prep = Now() - start;
     double range[2];
     grid->GetPointData()->GetScalars()->GetRange(range);
@@ -294,47 +427,81 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   window->WaitForCompletion();
   const double first = Now() - start;
   std::vector<double> times;
-  for (int f = 0; f < frames + 2; ++f)
+  for (int f = 0; MoreFrames(times); ++f)
   {
-    SetCamera(renderer, (f % 2) ? 1.0 : -1.0); // a real re-render, as when a user rotates
+    SetCamera(renderer, (f % 2) ? 1.0 : -1.0, fire, zoom); // a real re-render, as when a user rotates
     const double t0 = Now();
     window->Render();
     window->WaitForCompletion();
-    if (f >= 2)
-    {
-      times.push_back(Now() - t0);
-    }
+    times.push_back(Now() - t0);
   }
-  SetCamera(renderer, 0);
+  SetCamera(renderer, 0, fire, zoom);
   window->Render();
   window->WaitForCompletion();
-  nlohmann::json result = { { "first_s", first }, { "render_s", Median(times) }, { "prep_s", prep },
-    { "samples", Samples(window, size, stride) }, { "peak_rss_mb", PeakRSSMB() } };
+  nlohmann::json result = { { "first_s", first }, { "render_s", Median(times) },
+    { "frames", times.size() }, { "prep_s", prep }, { "peak_rss_mb", PeakRSSMB() } };
+  if (!scaling)
+  {
+    result["samples"] = Samples(window, size, stride);
+  }
   if (ours)
   {
     result["uploads"] = ours->GetUploadCount();
+    result["triangles"] = ours->GetTriangleCount();
+    result["coverage"] = Coverage(window, size);
   }
   return result;
 }
 
-std::vector<std::string> OursJobs(bool quick)
+// the error runs: image sizes, our settings and peers per size
+std::vector<int> Sizes(bool quick)
 {
-  if (quick)
-  {
-    return { "ours:A:8", "ours:G:2x1", "ours:G:16x10" };
-  }
-  // (the paper's 16x10 grid costs minutes per 512^2 frame on llvmpipe: "quick"
-  // has it at 128^2; add "ours:G:16x10" here to measure it at full size)
-  return { "ours:A:2", "ours:A:4", "ours:A:8", "ours:F:8", "ours:G:2x1", "ours:G:8x5" };
+  return quick ? std::vector<int>{ 128 } : std::vector<int>{ 512, 1024 };
 }
 
-std::vector<std::string> PeerJobs(bool quick)
+std::vector<std::string> OursJobs(bool quick, int size)
 {
+  const std::string p = "ours:" + std::to_string(size) + ":";
   if (quick)
   {
-    return { "peer:fixed:32" };
+    return { p + "A:8", p + "G:2x1", p + "G:16x10" };
   }
-  return { "peer:fixed:64", "peer:fixed:128", "peer:gpu:64", "peer:gpu:128" };
+  if (size == 512)
+  {
+    return { p + "A:2", p + "A:4", p + "A:8", p + "F:8", p + "G:2x1", p + "G:8x5", p + "G:16x10" };
+  }
+  return { p + "A:2", p + "A:8", p + "G:2x1", p + "G:8x5" };
+}
+
+std::vector<std::string> PeerJobs(bool quick, int size)
+{
+  const std::string p = "peer:" + std::to_string(size) + ":";
+  if (quick)
+  {
+    return { p + "fixed:32" };
+  }
+  return { p + "fixed:64", p + "fixed:128", p + "fixed:256", p + "gpu:64", p + "gpu:128", p + "gpu:256" };
+}
+
+// scaling: subdivision levels of the fire isosurface, zooms of the office sheet
+std::vector<std::string> ScalingJobs(bool quick)
+{
+  std::vector<std::string> jobs;
+  const std::vector<std::string> levels = quick ? std::vector<std::string>{ "0" }
+                                                : std::vector<std::string>{ "0", "1", "2", "3", "4" };
+  const std::vector<std::string> zooms =
+    quick ? std::vector<std::string>{} : std::vector<std::string>{ "0.5", "1", "2", "4" };
+  for (const auto& l : levels)
+  {
+    jobs.push_back("tris:" + l + ":ours");
+    jobs.push_back("tris:" + l + ":peer");
+  }
+  for (const auto& z : zooms)
+  {
+    jobs.push_back("cover:" + z + ":ours");
+    jobs.push_back("cover:" + z + ":peer");
+  }
+  return jobs;
 }
 
 // RMS and max error as fractions of the reference's dynamic range
@@ -360,91 +527,125 @@ std::pair<double, double> Error(const nlohmann::json& ref, const nlohmann::json&
 
 std::string Describe(const std::string& job)
 {
-  if (job.rfind("ours:F:", 0) == 0)
+  const std::vector<std::string> part = Split(job);
+  if (part[0] == "ours")
   {
-    return "Gauss-Legendre " + job.substr(7) + " nodes/piece + closed form across, adaptive sampling off";
+    const std::string& arg = part[3];
+    if (part[2] == "F")
+    {
+      return "Gauss-Legendre " + arg + " nodes/piece + closed form across, adaptive sampling off";
+    }
+    if (part[2] == "A")
+    {
+      return "Gauss-Legendre " + arg + " nodes/piece + closed form across" + (arg == "8" ? " (default)" : "");
+    }
+    return "regular grid " + arg + " x2 (seed 000)";
   }
-  if (job.rfind("ours:A:", 0) == 0)
-  {
-    return "Gauss-Legendre " + job.substr(7) + " nodes/piece + closed form across" +
-      (job == "ours:A:8" ? " (default)" : "");
-  }
-  if (job.rfind("ours:G:", 0) == 0)
-  {
-    return "regular grid " + job.substr(7) + " x2 (seed 000)";
-  }
-  const bool gpu = job.find("gpu") != std::string::npos;
+  const bool gpu = part[2] == "gpu";
   return std::string(gpu ? "vtkGPUVolumeRayCastMapper" : "vtkFixedPointVolumeRayCastMapper") +
-    " on a splatted " + job.substr(job.rfind(':') + 1) + "^3 grid";
+    " on a splatted " + part[3] + "^3 grid";
 }
 
 std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& results, bool quick)
 {
   std::vector<nlohmann::json> lines;
-  const auto ref = results.find("reference");
-  if (ref == results.end())
+  for (int size : Sizes(quick))
   {
-    return lines;
-  }
-  const std::string where = "office stream sheet " + std::to_string(SizeOf(quick)) + "^2, ";
-  // the most accurate peer is the fair comparison
-  std::string best;
-  double bestErr = 1e300;
-  for (const auto& job : PeerJobs(quick))
-  {
-    const auto it = results.find(job);
-    if (it != results.end())
+    const auto ref = results.find("reference:" + std::to_string(size));
+    if (ref == results.end())
     {
-      const double e = Error(ref->second, it->second).first;
-      if (e < bestErr)
+      continue;
+    }
+    const std::string where = "office stream sheet " + std::to_string(size) + "^2, ";
+    // the most accurate peer is the fair comparison
+    std::string best;
+    double bestErr = 1e300;
+    for (const auto& job : PeerJobs(quick, size))
+    {
+      const auto it = results.find(job);
+      if (it != results.end())
       {
-        bestErr = e;
-        best = job;
+        const double e = Error(ref->second, it->second).first;
+        if (e < bestErr)
+        {
+          bestErr = e;
+          best = job;
+        }
       }
     }
+    for (const auto& job : OursJobs(quick, size))
+    {
+      const auto it = results.find(job);
+      if (it == results.end())
+      {
+        continue;
+      }
+      const auto err = Error(ref->second, it->second);
+      nlohmann::json line = { { "bench", "sheets" }, { "case", where + Describe(job) },
+        { "ours_s", it->second["render_s"] }, { "ours_first_s", it->second["first_s"] },
+        { "frames", it->second["frames"] }, { "error", err.first }, { "error_max", err.second },
+        { "peak_rss_mb", it->second["peak_rss_mb"] }, { "reference_s", ref->second["reference_s"] } };
+      const auto peer = results.find(best);
+      if (peer != results.end())
+      {
+        const auto perr = Error(ref->second, peer->second);
+        line["peer"] = Describe(best);
+        line["peer_s"] = peer->second["render_s"];
+        line["peer_prep_s"] = peer->second["prep_s"];
+        line["peer_error"] = perr.first;
+        line["peer_error_max"] = perr.second;
+        line["ratio"] = peer->second["render_s"].get<double>() / it->second["render_s"].get<double>();
+      }
+      lines.push_back(line);
+    }
+    // every peer on its own line (ours = the default setting)
+    const auto def = results.find("ours:" + std::to_string(size) + ":A:8");
+    for (const auto& job : PeerJobs(quick, size))
+    {
+      const auto it = results.find(job);
+      if (it == results.end() || def == results.end())
+      {
+        continue;
+      }
+      const auto perr = Error(ref->second, it->second);
+      const auto oerr = Error(ref->second, def->second);
+      lines.push_back({ { "bench", "sheets" }, { "case", where + "default vs " + Describe(job) },
+        { "ours_s", def->second["render_s"] }, { "error", oerr.first }, { "peer", Describe(job) },
+        { "peer_s", it->second["render_s"] }, { "peer_prep_s", it->second["prep_s"] },
+        { "peer_error", perr.first }, { "peer_error_max", perr.second },
+        { "ratio", it->second["render_s"].get<double>() / def->second["render_s"].get<double>() },
+        { "peak_rss_mb", def->second["peak_rss_mb"] }, { "peer_peak_rss_mb", it->second["peak_rss_mb"] } });
+    }
   }
-  for (const auto& job : OursJobs(quick))
+  // scaling: default settings against splat + fixed-point 64^3 of the same mesh and view (no error)
+  const int scaleSize = quick ? ScaleSizeQuick : ScaleSize;
+  for (const auto& job : ScalingJobs(quick))
   {
-    const auto it = results.find(job);
-    if (it == results.end())
+    if (job.size() < 5 || job.compare(job.size() - 5, 5, ":ours") != 0)
     {
       continue;
     }
-    const auto err = Error(ref->second, it->second);
-    nlohmann::json line = { { "bench", "sheets" }, { "case", where + Describe(job) },
+    const auto it = results.find(job);
+    const auto peer = results.find(job.substr(0, job.size() - 5) + ":peer");
+    if (it == results.end() || peer == results.end())
+    {
+      continue;
+    }
+    const auto part = Split(job);
+    const std::string what = part[0] == "tris"
+      ? "fire mfrac isosurface split " + part[1] + "x, " +
+        std::to_string(it->second["triangles"].get<long long>()) + " triangles"
+      : "office stream sheet zoom " + part[1];
+    char cover[64];
+    std::snprintf(cover, sizeof(cover), ", %.0f%% of the frame", 100.0 * it->second["coverage"].get<double>());
+    lines.push_back({ { "bench", "sheets" },
+      { "case", "scaling: " + what + cover + ", " + std::to_string(scaleSize) + "^2, default settings" },
       { "ours_s", it->second["render_s"] }, { "ours_first_s", it->second["first_s"] },
-      { "error", err.first }, { "error_max", err.second }, { "peak_rss_mb", it->second["peak_rss_mb"] },
-      { "reference_s", ref->second["reference_s"] } };
-    const auto peer = results.find(best);
-    if (peer != results.end())
-    {
-      const auto perr = Error(ref->second, peer->second);
-      line["peer"] = Describe(best);
-      line["peer_s"] = peer->second["render_s"];
-      line["peer_prep_s"] = peer->second["prep_s"];
-      line["peer_error"] = perr.first;
-      line["peer_error_max"] = perr.second;
-      line["ratio"] = peer->second["render_s"].get<double>() / it->second["render_s"].get<double>();
-    }
-    lines.push_back(line);
-  }
-  // every peer on its own line (ours = the default setting)
-  const auto def = results.find("ours:A:8");
-  for (const auto& job : PeerJobs(quick))
-  {
-    const auto it = results.find(job);
-    if (it == results.end() || def == results.end())
-    {
-      continue;
-    }
-    const auto perr = Error(ref->second, it->second);
-    const auto oerr = Error(ref->second, def->second);
-    lines.push_back({ { "bench", "sheets" }, { "case", where + "default vs " + Describe(job) },
-      { "ours_s", def->second["render_s"] }, { "error", oerr.first }, { "peer", Describe(job) },
-      { "peer_s", it->second["render_s"] }, { "peer_prep_s", it->second["prep_s"] },
-      { "peer_error", perr.first }, { "peer_error_max", perr.second },
-      { "ratio", it->second["render_s"].get<double>() / def->second["render_s"].get<double>() },
-      { "peak_rss_mb", def->second["peak_rss_mb"] }, { "peer_peak_rss_mb", it->second["peak_rss_mb"] } });
+      { "frames", it->second["frames"] }, { "triangles", it->second["triangles"] },
+      { "coverage", it->second["coverage"] }, { "peer", "vtkFixedPointVolumeRayCastMapper on a splatted 64^3 grid" },
+      { "peer_s", peer->second["render_s"] }, { "peer_prep_s", peer->second["prep_s"] },
+      { "ratio", peer->second["render_s"].get<double>() / it->second["render_s"].get<double>() },
+      { "peak_rss_mb", it->second["peak_rss_mb"] } });
   }
   return lines;
 }
@@ -453,15 +654,24 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
 void RegisterSheets(std::map<std::string, Benchmark>& registry)
 {
   Benchmark b;
-  b.Description = "smoke sheets on a real stream sheet: time vs error per sample setting, vs splat + "
-                  "vtkGPUVolumeRayCastMapper / vtkFixedPointVolumeRayCastMapper, errors vs the CPU reference";
+  b.Description = "smoke sheets on a real stream sheet: time vs error per sample setting (512^2, 1024^2), vs "
+                  "splat + vtkGPUVolumeRayCastMapper / vtkFixedPointVolumeRayCastMapper (64^3..256^3), errors vs "
+                  "the CPU reference; scaling with triangle count and screen coverage";
   b.Jobs = [](bool quick) {
-    std::vector<std::string> jobs = { "reference" };
-    for (const auto& j : OursJobs(quick))
+    std::vector<std::string> jobs;
+    for (int size : Sizes(quick))
     {
-      jobs.push_back(j);
+      jobs.push_back("reference:" + std::to_string(size));
+      for (const auto& j : OursJobs(quick, size))
+      {
+        jobs.push_back(j);
+      }
+      for (const auto& j : PeerJobs(quick, size))
+      {
+        jobs.push_back(j);
+      }
     }
-    for (const auto& j : PeerJobs(quick))
+    for (const auto& j : ScalingJobs(quick))
     {
       jobs.push_back(j);
     }
