@@ -77,8 +77,8 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   {
     ours = vtkSmartPointer<vtkPlumeVelocityGlyphMapper>::New();
     ours->SetInputData(image);
-    ours->SetRootMode(kind == "ours" ? vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE
-                                     : vtkPlumeVelocityGlyphMapper::ROOTS_SCREEN_ADAPTIVE);
+    ours->SetRootMode(kind == "adaptive" ? vtkPlumeVelocityGlyphMapper::ROOTS_SCREEN_ADAPTIVE
+                                         : vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
     ours->SetLatticeStride(1);
     if (kind == "small")
     {
