@@ -11,6 +11,15 @@
 #include "vtkDataObjectTypes.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetReader.h"
+#include "vtkPolyData.h"
+#include "vtkVRMLImporter.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkTransform.h"
+#include "vtkRenderer.h"
+#include "vtkRenderWindow.h"
+#include "vtkMapper.h"
+#include "vtkActorCollection.h"
+#include "vtkActor.h"
 #include "vtkExecutive.h"
 #include "vtkExodusIIReader.h"
 #include "vtkGenericEnSightReader.h"
@@ -317,6 +326,55 @@ public:
   }
 };
 
+// A VRML scene (vtkVRMLImporter) as data: one polydata block per actor,
+// named "actor N", in world coordinates (the actor's matrix applied), so that
+// scene geometry such as a room around a CFD domain loads like any dataset.
+vtkSmartPointer<vtkDataObject> ImportVRML(const std::string& path, std::string& error)
+{
+  vtkNew<vtkVRMLImporter> importer;
+  importer->SetFileName(path.c_str());
+  vtkNew<vtkRenderer> renderer; // the importer fills a renderer; nothing is drawn
+  vtkNew<vtkRenderWindow> window;
+  window->AddRenderer(renderer);
+  importer->SetRenderWindow(window);
+  importer->Update();
+  vtkActorCollection* actors = renderer->GetActors();
+  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  actors->InitTraversal();
+  unsigned int n = 0;
+  while (vtkActor* actor = actors->GetNextActor())
+  {
+    vtkMapper* mapper = actor->GetMapper();
+    if (!mapper)
+    {
+      continue;
+    }
+    mapper->Update();
+    auto* poly = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+    if (!poly || poly->GetNumberOfPoints() == 0)
+    {
+      continue;
+    }
+    vtkNew<vtkTransform> transform;
+    transform->SetMatrix(actor->GetMatrix());
+    vtkNew<vtkTransformPolyDataFilter> move;
+    move->SetTransform(transform);
+    move->SetInputData(poly);
+    move->Update();
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->DeepCopy(move->GetOutput());
+    blocks->SetBlock(n, copy);
+    blocks->GetMetaData(n)->Set(vtkCompositeDataSet::NAME(), ("actor " + std::to_string(n)).c_str());
+    ++n;
+  }
+  if (n == 0)
+  {
+    error = "the VRML importer found no geometry in " + path;
+    return nullptr;
+  }
+  return blocks;
+}
+
 // Installs a ReadWarningCatcher for its lifetime.
 class ScopedReadWarningCatcher
 {
@@ -429,12 +487,12 @@ std::vector<std::string> vtkPlumeDatasetReader::SupportedExtensions()
 {
   return { ".vtk", ".vti", ".vts", ".vtr", ".vtu", ".vtp", ".vtm", ".pvti", ".pvts", ".pvtr",
     ".pvtu", ".pvtp", ".pvd", ".xyz", ".q", ".bin", ".ex2", ".e", ".exo", ".case", ".foam",
-    ".cgns" };
+    ".cgns", ".wrl" };
 }
 
 std::vector<std::string> vtkPlumeDatasetReader::SupportedReaderNames()
 {
-  return { "legacy", "xml", "pvd", "plot3d", "exodus", "ensight", "openfoam", "cgns" };
+  return { "legacy", "xml", "pvd", "plot3d", "exodus", "ensight", "openfoam", "cgns", "vrml" };
 }
 
 std::string vtkPlumeDatasetReader::ReaderNameForFile(const std::string& fileName)
@@ -453,6 +511,10 @@ std::string vtkPlumeDatasetReader::ReaderNameForFile(const std::string& fileName
   if (ext == ".pvd")
   {
     return "pvd";
+  }
+  if (ext == ".wrl")
+  {
+    return "vrml";
   }
   if (ext == ".xyz" || ext == ".q" || ext == ".bin")
   {
@@ -595,6 +657,11 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
     if (kind.empty())
     {
       const std::string ext = vtksys::SystemTools::GetFilenameLastExtension(path);
+      if (Lower(ext) == ".nek5000")
+      {
+        return "Nek5000 output (" + path + ") has no reader in VTK 9.1 (vtkNek5000Reader came later): "
+          "convert it to VTK files (e.g. .vtu + .pvd) first";
+      }
       return "unknown file extension '" + (ext.empty() ? std::string("(none)") : ext) +
         "' of " + path + "; supported: " + Join(vtkPlumeDatasetReader::SupportedExtensions());
     }
@@ -682,7 +749,7 @@ int vtkPlumeDatasetReader::RequestDataObject(
     else if (!this->MergeBlocks && kind != "pvd")
     {
       predicted = kind == "ensight" || kind == "exodus" || kind == "openfoam" ||
-          kind == "cgns" || kind == "plot3d"
+          kind == "cgns" || kind == "plot3d" || kind == "vrml"
         ? "vtkMultiBlockDataSet"
         : predicted;
     }
@@ -747,7 +814,14 @@ int vtkPlumeDatasetReader::RequestInformation(
   in.Path = path;
   in.QPath = qPath;
 
-  if (kind == "pvd")
+  if (kind == "vrml")
+  {
+    // a scene importer, not a pipeline reader: read in RequestData
+    in.Reader = nullptr;
+    in.Key.clear();
+    this->TimeValues.clear();
+  }
+  else if (kind == "pvd")
   {
     in.Reader = nullptr;
     in.Key.clear();
@@ -974,7 +1048,7 @@ int vtkPlumeDatasetReader::RequestData(
     }
     return 0;
   };
-  if (in.Kind.empty() || (in.Kind != "pvd" && !in.Reader))
+  if (in.Kind.empty() || (in.Kind != "pvd" && in.Kind != "vrml" && !in.Reader))
   {
     return fail("no reader (RequestInformation failed)");
   }
@@ -1030,7 +1104,16 @@ int vtkPlumeDatasetReader::RequestData(
   // --- read
   vtkSmartPointer<vtkDataObject> data;
   in.Captured.clear();
-  if (in.Kind == "pvd")
+  if (in.Kind == "vrml")
+  {
+    std::string error;
+    data = ImportVRML(in.Path, error);
+    if (!data)
+    {
+      return fail(error);
+    }
+  }
+  else if (in.Kind == "pvd")
   {
     const auto& entries = in.PvdSteps[step];
     std::vector<vtkSmartPointer<vtkDataObject>> parts;

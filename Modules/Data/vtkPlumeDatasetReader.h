@@ -14,6 +14,7 @@
  * | ensight     | .case                                       | vtkGenericEnSightReader            |
  * | openfoam    | .foam                                       | vtkOpenFOAMReader (cell-to-point on)|
  * | cgns        | .cgns                                       | vtkCGNSReader (all arrays)         |
+ * | vrml        | .wrl                                        | vtkVRMLImporter (a block per actor)|
  *
  * PLOT3D: FileName is the grid (XYZ) file; the solution (Q) file is QFileName or, when that
  * is unset, guessed from the grid name (`combxyz.bin` -> `combq.bin`, `x.xyz` -> `x.q`). A
@@ -87,7 +88,7 @@ public:
   ///@{
   /**
    * Reader to use: "" or nullptr = chosen by the file extension (default); otherwise one of
-   * legacy, xml, pvd, plot3d, exodus, ensight, openfoam, cgns (see SupportedReaderNames()).
+   * legacy, xml, pvd, plot3d, exodus, ensight, openfoam, cgns, vrml (see SupportedReaderNames()).
    */
   vtkSetStringMacro(ReaderName);
   vtkGetStringMacro(ReaderName);
