@@ -1,5 +1,6 @@
 #include "vtkPlumeVelocityGlyphMapper.h"
 
+#include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeShaderVariants.h"
 #include "vtkPlumeTextureHandOver.h"
 
@@ -79,18 +80,6 @@ void DrawRoots(GLenum mode, int perRoot, vtkIdType count, vtkIdType chunk, int i
 // Offset of glyphs towards the viewer in NDC z: 1/8192 in NDC is 6.1e-5 in
 // window depth, the size of VTK's own offset for coincident lines (4 × 1.6e-5).
 constexpr double CoincidentDepthOffset = 1.0 / 8192.0;
-
-// GL wants column-major floats
-void ToGL(const double m[16], float out[16])
-{
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      out[4 * c + r] = static_cast<float>(m[4 * r + c]);
-    }
-  }
-}
 
 void Apply(const double m[16], const double p[3], double out[4])
 {
@@ -893,13 +882,9 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   }
 
   // ---- uniforms
-  float m[16];
-  ToGL(mcdcRel, m);
-  program->SetUniformMatrix4x4("MCDCRel", m);
-  ToGL(indexToRel, m);
-  program->SetUniformMatrix4x4("IndexToRel", m);
-  ToGL(relToIndex, m);
-  program->SetUniformMatrix4x4("RelToIndex", m);
+  plume::SetUniformMatrix4x4(program, "MCDCRel", mcdcRel);
+  plume::SetUniformMatrix4x4(program, "IndexToRel", indexToRel);
+  plume::SetUniformMatrix4x4(program, "RelToIndex", relToIndex);
   const float fdims[3] = { float(dims[0]), float(dims[1]), float(dims[2]) };
   program->SetUniform3f("Dims", fdims);
   program->SetUniformf("Scale", static_cast<float>(this->Scale));

@@ -1,5 +1,6 @@
 #include "vtkPlumeSheetMapper.h"
 
+#include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeShaderVariants.h"
 
@@ -46,18 +47,6 @@
 
 namespace
 {
-// row-major 4x4 (double) -> column-major floats for GL
-void ToGL(const double m[16], float out[16])
-{
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      out[4 * c + r] = static_cast<float>(m[4 * r + c]);
-    }
-  }
-}
-
 // Gauss-Legendre nodes and weights on [-1, 1] (Newton on the Legendre polynomial)
 void GaussLegendre(int n, std::vector<double>& x, std::vector<double>& w)
 {
@@ -557,14 +546,10 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
 
-    float m[16];
-    ToGL(mcvcRel, m);
-    program->SetUniformMatrix4x4("MCVCRel", m);
+    plume::SetUniformMatrix4x4(program, "MCVCRel", mcvcRel);
     program->SetUniformf("ModelToEyeScale", static_cast<float>(modelScale));
-    ToGL(vcdc, m);
-    program->SetUniformMatrix4x4("Projection", m);
-    ToGL(dcvc, m);
-    program->SetUniformMatrix4x4("InverseProjection", m);
+    plume::SetUniformMatrix4x4(program, "Projection", vcdc);
+    plume::SetUniformMatrix4x4(program, "InverseProjection", dcvc);
     const float vp[2] = { float(vpWidth), float(vpHeight) };
     program->SetUniform2f("ViewportSize", vp);
     program->SetUniformf("Cutoff", static_cast<float>(this->Cutoff));

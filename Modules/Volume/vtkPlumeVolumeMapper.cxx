@@ -1,5 +1,6 @@
 #include "vtkPlumeVolumeMapper.h"
 
+#include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeScalarTexture3D.h"
 #include "vtkPlumeShaderVariants.h"
@@ -53,29 +54,6 @@ constexpr int MaxLights = 4;
 constexpr float IsoMargin = 1e-6f;
 // fewest transparent blocks (fraction) for which composite rays look blocks up
 constexpr double MinSkipFraction = 0.1;
-
-// GL wants column-major floats (VTK matrices are row-major)
-void ToGL(const double m[16], float out[16])
-{
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      out[4 * c + r] = static_cast<float>(m[4 * r + c]);
-    }
-  }
-}
-
-void ToGL3(const double m[9], float out[9])
-{
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      out[3 * c + r] = static_cast<float>(m[3 * r + c]);
-    }
-  }
-}
 
 constexpr double Megabyte = 1024.0 * 1024.0;
 
@@ -677,19 +655,14 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // ---- uniforms
-  float m[16];
-  ToGL(indexToClip, m);
-  program->SetUniformMatrix4x4("IndexToClip", m);
-  ToGL(clipToIndex, m);
-  program->SetUniformMatrix4x4("ClipToIndex", m);
+  plume::SetUniformMatrix4x4(program, "IndexToClip", indexToClip);
+  plume::SetUniformMatrix4x4(program, "ClipToIndex", clipToIndex);
   program->SetUniform3f("BoxMin", boxMin);
   program->SetUniform3f("BoxMax", boxMax);
   program->SetUniform3f("DrawMin", drawMin);
   program->SetUniform3f("DrawMax", drawMax);
   program->SetUniform3f("Dims", fdims);
-  float m3[9];
-  ToGL3(linear, m3);
-  program->SetUniformMatrix3x3("IndexToWorld", m3);
+  plume::SetUniformMatrix3x3(program, "IndexToWorld", linear);
   int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
   ren->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &vpX, &vpY);
   const float vpOrigin[2] = { float(vpX), float(vpY) };
@@ -739,8 +712,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   if (mode == "PLUME_ISO" || shade)
   {
-    ToGL3(normal, m3);
-    program->SetUniformMatrix3x3("NormalToWorld", m3);
+    plume::SetUniformMatrix3x3(program, "NormalToWorld", normal);
     program->SetUniformf("Specular", static_cast<float>(property->GetSpecular(0)));
     program->SetUniformf("SpecularPower", static_cast<float>(property->GetSpecularPower(0)));
   }
