@@ -182,40 +182,44 @@ vec3 AcrossIntegral(float a)
   float L = exp(-0.5 * ma) / (2.0 * PI * sb * sqrtD) * frac;
   return across * min(L, 1e30);
 }
-//PLUME::IF ADAPTIVE
-// d(p) times the bounded line integral of the Gaussian at p (triangle space
-// point p, barycentric coordinates l), the general formula of the header
-vec3 PointIntegral(vec2 p, vec3 l)
+//PLUME::ENDIF
+//PLUME::IF GRID ADAPTIVE
+// d(p) times the line integral of the Gaussian at p (triangle space point p,
+// barycentric coordinates l) along the ray ot + t vt, t in [tStart, tEnd]:
+// the general formula of the header, shared by the grid quadrature and the
+// adaptive small-triangle rule
+vec3 PointIntegral(vec2 p, vec3 l, vec3 ot, vec3 vt, float tStart, float tEnd)
 {
   vec3 d = l.x * triD0 + l.y * triD1 + l.z * triD2;
   float sb = dot(l, triSigmaB);
   float st = dot(l, triSigmaT);
-  vec3 w = vec3(Ot.xy - p, Ot.z);
+  vec3 w = vec3(ot.xy - p, ot.z);
   float sb2 = sb * sb;
   float st2 = st * st;
-  float D = max(st2 * dot(Vt.xy, Vt.xy) + sb2 * Vt.z * Vt.z, 1e-30 * sb2);
-  float cx = w.y * Vt.z - w.z * Vt.y;
-  float cy = w.z * Vt.x - w.x * Vt.z;
-  float cz = w.x * Vt.y - w.y * Vt.x;
+  float D = max(st2 * dot(vt.xy, vt.xy) + sb2 * vt.z * vt.z, 1e-30 * sb2);
+  float cx = w.y * vt.z - w.z * vt.y;
+  float cy = w.z * vt.x - w.x * vt.z;
+  float cz = w.x * vt.y - w.y * vt.x;
   float m2 = (sb2 * (cx * cx + cy * cy) + st2 * cz * cz) / (sb2 * D);
   if (m2 > 2.0 * Cutoff * Cutoff)
   {
-    return vec3(0.0);
+    return vec3(0.0); // beyond the cutoff (and keeps exp() away from underflow noise)
   }
   float sqrtD = sqrt(D);
   float L = exp(-0.5 * m2) / (2.0 * PI * sb * sqrtD);
-  float tc = -(st2 * dot(w.xy, Vt.xy) + sb2 * w.z * Vt.z) / D;
+  // bounded ray: the fraction of the 1D Gaussian in t that lies in [tStart, tEnd]
+  float tc = -(st2 * dot(w.xy, vt.xy) + sb2 * w.z * vt.z) / D;
   float frac;
   if (st > 0.0)
   {
     float k = sqrtD / (1.41421356 * sb * st);
-    float lo = k * (TStart - tc);
-    float hi = k * (TEnd - tc);
+    float lo = k * (tStart - tc);
+    float hi = k * (tEnd - tc);
     frac = (lo < -4.5 && hi > 4.5) ? 1.0 : 0.5 * (Erf(hi) - Erf(lo));
   }
   else
   {
-    frac = (tc >= TStart && tc <= TEnd) ? 1.0 : 0.0;
+    frac = (tc >= tStart && tc <= tEnd) ? 1.0 : 0.0;
   }
   return d * min(L * frac, 1e30);
 }
@@ -318,38 +322,7 @@ void main()
         {
           continue;
         }
-        vec3 d = l0 * triD0 + l1 * triD1 + l2 * triD2;
-        float sb = l0 * triSigmaB.x + l1 * triSigmaB.y + l2 * triSigmaB.z;
-        float st = l0 * triSigmaT.x + l1 * triSigmaT.y + l2 * triSigmaT.z;
-        vec3 w = vec3(ot.xy - p, ot.z);
-        float sb2 = sb * sb;
-        float st2 = st * st;
-        float D = max(st2 * dot(vt.xy, vt.xy) + sb2 * vt.z * vt.z, 1e-30 * sb2);
-        float cx = w.y * vt.z - w.z * vt.y;
-        float cy = w.z * vt.x - w.x * vt.z;
-        float cz = w.x * vt.y - w.y * vt.x;
-        float m2 = (sb2 * (cx * cx + cy * cy) + st2 * cz * cz) / (sb2 * D);
-        if (m2 > 2.0 * Cutoff * Cutoff)
-        {
-          continue; // beyond the cutoff (and keeps exp() away from underflow noise)
-        }
-        float sqrtD = sqrt(D);
-        float L = exp(-0.5 * m2) / (2.0 * PI * sb * sqrtD);
-        // bounded ray: the fraction of the 1D Gaussian in t that lies in [tStart, tEnd]
-        float tc = -(st2 * dot(w.xy, vt.xy) + sb2 * w.z * vt.z) / D;
-        float frac;
-        if (st > 0.0)
-        {
-          float k = sqrtD / (1.41421356 * sb * st);
-          float lo = k * (tStart - tc);
-          float hi = k * (tEnd - tc);
-          frac = (lo < -4.5 && hi > 4.5) ? 1.0 : 0.5 * (Erf(hi) - Erf(lo));
-        }
-        else
-        {
-          frac = (tc >= tStart && tc <= tEnd) ? 1.0 : 0.0;
-        }
-        sum += d * min(L * frac, 1e30);
+        sum += PointIntegral(p, vec3(l0, l1, l2), ot, vt, tStart, tEnd);
       }
     }
   }
@@ -385,9 +358,9 @@ void main()
     {
       vec2 p1 = vec2(triCorners.x, 0.0);
       vec2 p2 = triCorners.yz;
-      vec3 acc = PointIntegral(0.5 * p1, vec3(0.5, 0.5, 0.0)) +
-        PointIntegral(0.5 * (p1 + p2), vec3(0.0, 0.5, 0.5)) +
-        PointIntegral(0.5 * p2, vec3(0.5, 0.0, 0.5));
+      vec3 acc = PointIntegral(0.5 * p1, vec3(0.5, 0.5, 0.0), ot, vt, tStart, tEnd) +
+        PointIntegral(0.5 * (p1 + p2), vec3(0.0, 0.5, 0.5), ot, vt, tStart, tEnd) +
+        PointIntegral(0.5 * p2, vec3(0.5, 0.0, 0.5), ot, vt, tStart, tEnd);
       float area = 0.5 * abs(triCorners.x * triCorners.z);
       gl_FragData[0] = vec4(min(acc * area / 3.0, vec3(1e30)), 0.0);
       return;
