@@ -6,11 +6,8 @@
 #include "plumeSheetMeshes.h"
 #include "plumeSheetTestUtil.h"
 
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkSphereSource.h"
 
 int TestSheetMultisample(int, char*[])
 {
@@ -23,19 +20,7 @@ int TestSheetMultisample(int, char*[])
   s.Mapper->SetDensityScale(0.6);
   s.Mapper->SetBlurRadius(0.08);
   s.Mapper->SetThickness(0.12);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(0.2, -0.1, 0.0);
-  sphere->SetRadius(0.45);
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> sm;
-  sm->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> ball;
-  ball->SetMapper(sm);
-  ball->GetProperty()->SetColor(0.9, 0.6, 0.3);
-  s.Renderer->RemoveActor(s.Actor);
-  s.Renderer->AddActor(ball);
-  s.Renderer->AddActor(s.Actor);
+  s.AddOpaqueSphere(0.2, -0.1, 0.0, 0.45, 0.9, 0.6, 0.3);
   s.Camera(1.6, 1.2, 4.0, 0, 0, 0, 35);
   s.Window->Render();
   // VTK draws into its render framebuffer: that is what must be multisampled

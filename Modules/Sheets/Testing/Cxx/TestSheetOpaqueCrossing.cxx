@@ -6,9 +6,6 @@
 #include "plumeSheetMeshes.h"
 #include "plumeSheetTestUtil.h"
 
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
-#include "vtkSphereSource.h"
 
 int TestSheetOpaqueCrossing(int, char*[])
 {
@@ -20,20 +17,7 @@ int TestSheetOpaqueCrossing(int, char*[])
   s.Mapper->SetDensityScale(0.6);
   s.Mapper->SetBlurRadius(0.08);
   s.Mapper->SetThickness(0.12); // thick: the sphere cuts through the smoke
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(0.2, -0.1, 0.0);
-  sphere->SetRadius(0.45);
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> sm;
-  sm->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> ball;
-  ball->SetMapper(sm);
-  ball->GetProperty()->SetColor(0.9, 0.6, 0.3);
-  // opaque actors first: the sheet sees their depth
-  s.Renderer->RemoveActor(s.Actor);
-  s.Renderer->AddActor(ball);
-  s.Renderer->AddActor(s.Actor);
+  s.AddOpaqueSphere(0.2, -0.1, 0.0, 0.45, 0.9, 0.6, 0.3);
   s.Camera(1.6, 1.2, 4.0, 0, 0, 0, 35);
   const sheettest::Result r = sheettest::CompareWithReference(s, sheet, "sheet across a sphere");
   failures += sheettest::CheckGoal(r, "opaque crossing");

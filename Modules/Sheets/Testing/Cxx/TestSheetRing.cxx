@@ -6,10 +6,7 @@
 
 #include "vtkDoubleArray.h"
 #include "vtkPointData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
-#include "vtkSphereSource.h"
 
 int TestSheetRing(int argc, char* argv[])
 {
@@ -33,19 +30,7 @@ int TestSheetRing(int argc, char* argv[])
   s.Mapper->SetBlurRadius(0.05);
   s.Mapper->SetThickness(0.03);
   s.Mapper->SetSmokeColor(0.1, 0.15, 0.35);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(0.7, 0.3, 0.0);
-  sphere->SetRadius(0.3);
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> sm;
-  sm->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> ball;
-  ball->SetMapper(sm);
-  ball->GetProperty()->SetColor(0.8, 0.3, 0.2);
-  s.Renderer->RemoveActor(s.Actor);
-  s.Renderer->AddActor(ball);
-  s.Renderer->AddActor(s.Actor);
+  s.AddOpaqueSphere(0.7, 0.3, 0.0, 0.3, 0.8, 0.3, 0.2);
   s.Camera(1.2, 2.6, 3.4, 0.1, 0, 0, 38);
   s.Renderer->ResetCameraClippingRange();
   s.Window->Render();

@@ -14,9 +14,12 @@
 #include "vtkCamera.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
+#include "vtkSphereSource.h"
 
 #include <algorithm>
 #include <chrono>
@@ -46,6 +49,7 @@ struct Scene
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkPlumeSheetMapper> Mapper;
   vtkNew<vtkActor> Actor;
+  vtkNew<vtkActor> Ball; // see AddOpaqueSphere
 
   Scene(vtkPolyData* mesh, int w, int h)
   {
@@ -55,6 +59,27 @@ struct Scene
     this->Mapper->SetInputData(mesh);
     this->Actor->SetMapper(this->Mapper);
     this->Renderer->AddActor(this->Actor);
+  }
+
+  /**
+   * Adds an opaque sphere, drawn before the sheet (the sheet integrates up to
+   * the depth of the opaque actors drawn before it). Returns the sphere's actor.
+   */
+  vtkActor* AddOpaqueSphere(double cx, double cy, double cz, double radius, double r, double g, double b)
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetCenter(cx, cy, cz);
+    sphere->SetRadius(radius);
+    sphere->SetThetaResolution(48);
+    sphere->SetPhiResolution(24);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(sphere->GetOutputPort());
+    this->Ball->SetMapper(mapper);
+    this->Ball->GetProperty()->SetColor(r, g, b);
+    this->Renderer->RemoveActor(this->Actor);
+    this->Renderer->AddActor(this->Ball);
+    this->Renderer->AddActor(this->Actor);
+    return this->Ball;
   }
 
   void Camera(double px, double py, double pz, double fx, double fy, double fz, double angle = 30)
