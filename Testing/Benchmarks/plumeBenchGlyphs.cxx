@@ -158,49 +158,32 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
   for (int n : Grids(quick))
   {
     const std::string grid = std::to_string(n);
-    const auto ours = results.find("ours:" + grid);
-    if (ours == results.end())
-    {
-      continue;
-    }
-    for (const std::string peer : { "hedgehog", "glyph3d" })
-    {
+    // one line per metric: our job `kind` against `peer`, `label` naming the configuration
+    auto compare = [&](const std::string& kind, const std::string& peer, const std::string& label) {
+      const auto ours = results.find(kind + ":" + grid);
       const auto other = results.find(peer + ":" + grid);
-      if (other == results.end())
+      if (ours == results.end() || other == results.end())
       {
-        continue;
+        return;
       }
       for (const std::string metric : { "first", "rerender" })
       {
         const double o = ours->second[metric + "_s"].get<double>();
         const double p = other->second[metric + "_s"].get<double>();
         lines.push_back({ { "bench", "glyphs" },
-          { "case", "vortex " + grid + "^3 one glyph per node, " + (metric == "first" ? "first frame" : "re-render") },
+          { "case", "vortex " + grid + "^3 one glyph per node, " + label +
+              (metric == "first" ? "first frame" : "re-render") },
           { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o },
           { "glyphs", ours->second["glyphs"] }, { "peak_rss_mb", ours->second["peak_rss_mb"] },
           { "peer_peak_rss_mb", other->second["peak_rss_mb"] },
           { "memory_ratio",
             other->second["peak_rss_mb"].get<double>() / ours->second["peak_rss_mb"].get<double>() } });
       }
-    }
+    };
+    compare("ours", "hedgehog", "");
+    compare("ours", "glyph3d", "");
     // the same glyphs in 16k draws: the driver's memory bounded tighter
-    const auto small = results.find("small:" + grid);
-    const auto peer = results.find("hedgehog:" + grid);
-    if (small != results.end() && peer != results.end())
-    {
-      for (const std::string metric : { "first", "rerender" })
-      {
-        const double o = small->second[metric + "_s"].get<double>();
-        const double p = peer->second[metric + "_s"].get<double>();
-        lines.push_back({ { "bench", "glyphs" },
-          { "case", "vortex " + grid + "^3 one glyph per node, 16k glyphs per draw, " +
-              (metric == "first" ? "first frame" : "re-render") },
-          { "ours_s", o }, { "peer", PeerName("hedgehog") }, { "peer_s", p }, { "ratio", p / o },
-          { "glyphs", small->second["glyphs"] }, { "peak_rss_mb", small->second["peak_rss_mb"] },
-          { "peer_peak_rss_mb", peer->second["peak_rss_mb"] },
-          { "memory_ratio", peer->second["peak_rss_mb"].get<double>() / small->second["peak_rss_mb"].get<double>() } });
-      }
-    }
+    compare("small", "hedgehog", "16k glyphs per draw, ");
     const auto adaptive = results.find("adaptive:" + grid);
     const auto hedgehog = results.find("hedgehog:" + grid);
     if (adaptive != results.end() && hedgehog != results.end())
