@@ -222,7 +222,7 @@ public:
   }
 
   // Velocity texture (internal format `internalFormat`) filled from whole
-  // z-slabs of the image converted on the fly; also updates SpeedRange.
+  // z-slabs of the image converted on the fly (the ranges are BuildStatistics').
   bool UploadVelocity(vtkOpenGLRenderWindow* renWin, vtkDataArray* vectors, vtkDataArray* mask,
     const int dims[3], unsigned int internalFormat)
   {
@@ -241,7 +241,7 @@ public:
     const vtkIdType slice = vtkIdType(dims[0]) * dims[1];
     const int slabSlices = static_cast<int>(std::max<vtkIdType>(1, SlabPoints / slice));
     std::vector<float> slab(4 * static_cast<size_t>(slice) * std::min(slabSlices, dims[2]));
-    double range[2] = { VTK_DOUBLE_MAX, -1.0 };
+    double range[2] = { VTK_DOUBLE_MAX, -1.0 }; // ConvertVelocity's by-product, not needed here
     texture->Activate();
     // rows are 16·dims[0] bytes: any GL_UNPACK_ALIGNMENT fits
     for (int z = 0; z < dims[2]; z += slabSlices)
@@ -251,9 +251,6 @@ public:
       glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, z, dims[0], dims[1], nz, GL_RGBA, GL_FLOAT, slab.data());
     }
     texture->Deactivate();
-    const bool any = range[1] >= 0.0;
-    this->SpeedRange[0] = any ? range[0] : 0.0;
-    this->SpeedRange[1] = any ? range[1] : 0.0;
     return true;
   }
 
@@ -555,6 +552,12 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   // ---- velocity texture: only when the data changed
   Internals::Signature sig{ image, vectors, mask,
     std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 }) };
+  // speed and component ranges (usually already computed by GetBounds)
+  if (sig != impl.StatsSignature)
+  {
+    impl.BuildStatistics(image, vectors, mask);
+    impl.StatsSignature = sig;
+  }
   // A GPU copy handed over by the filter that computed the array (same
   // context, array unchanged since, our layout) replaces our own upload.
   vtkTextureObject* handed = mask ? nullptr : vtkPlumeTextureHandOver::Find(vectors, renWin);
@@ -573,11 +576,6 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
       impl.VelocityTexture->ReleaseGraphicsResources(renWin); // not needed meanwhile
     }
     impl.Uploaded = Internals::Signature();
-    if (sig != impl.StatsSignature)
-    {
-      impl.BuildStatistics(image, vectors, mask);
-      impl.StatsSignature = sig;
-    }
     handed->SetWrapS(vtkTextureObject::ClampToEdge);
     handed->SetWrapT(vtkTextureObject::ClampToEdge);
     handed->SetWrapR(vtkTextureObject::ClampToEdge);
@@ -592,7 +590,6 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   else if (sig != impl.Uploaded || !impl.VelocityTexture->GetHandle())
   {
     const bool uploaded = impl.UploadVelocity(renWin, vectors, mask, dims, GL_RGBA32F);
-    impl.StatsSignature = sig;
     if (!uploaded)
     {
       vtkErrorMacro(<< "could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
