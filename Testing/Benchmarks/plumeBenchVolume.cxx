@@ -13,7 +13,8 @@
 // Sparsity report: ours at step 1 with empty-space skipping and/or early ray
 // termination switched off, on the sparse smoke, the dense field and an
 // "opaque" one (the dense field with the smoke's opacity, where rays saturate
-// early), composite at both sizes, MIP and isosurface at 128³. --quick: 32³ only
+// early), composite at both sizes, MIP and isosurface at 128³. Per-ray floor:
+// see FloorStep. --quick: 32³ only
 // (errors on every 2nd pixel), sparsity for the smoke composite and isosurface.
 #include "plumeBenchmarks.h"
 
@@ -64,6 +65,12 @@ std::vector<double> Steps(bool quick, int n)
   }
   return n >= 256 ? std::vector<double>{ 1.0, 2.0, 4.0 } : std::vector<double>{ 0.5, 1.0, 2.0, 4.0 };
 }
+
+// Per-ray floor: ours at 100-voxel steps (the longest SampleDistance; 1-3
+// samples per ray) costs what every ray costs before sampling (set-up, box
+// and block clipping, the first look-ups). A peer time divided by it bounds
+// the ratio any saving in samples could reach.
+const double FloorStep = 100.0;
 
 // the reference at every stride-th pixel along x and y (a full 512² reference at 256³ is too slow)
 int Stride(bool quick, int n)
@@ -376,6 +383,7 @@ std::vector<std::string> Jobs(bool quick)
           jobs.push_back(JobId(kind, field, n, step));
         }
       }
+      jobs.push_back(JobId("ours", field, n, FloorStep));
     }
   }
   for (const auto& c : SparsityCases(quick))
@@ -411,13 +419,18 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
     for (const char* field : Fields)
     {
       std::remove(ReferencePath(field, n, quick, getpid()).c_str()); // (same parent: this process)
-      for (double ourStep : steps)
+      // every step, and the per-ray floor: against it, ratio = the most that
+      // fewer or cheaper samples could give (one ray per pixel)
+      std::vector<double> ourSteps = steps;
+      ourSteps.push_back(FloorStep);
+      for (double ourStep : ourSteps)
       {
         const nlohmann::json* ours = find(JobId("ours", field, n, ourStep));
         if (!ours)
         {
           continue;
         }
+        const bool floor = ourStep == FloorStep;
         for (const std::string peer : { "gpu", "fixed" })
         {
           for (double peerStep : steps)
@@ -430,12 +443,18 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
             const double o = (*ours)["render_s"].get<double>();
             const double p = (*other)["render_s"].get<double>();
             nlohmann::json line = { { "bench", "volume" },
-              { "case", CaseName(field, n, size) + ", ours step " + StepText(ourStep) + " voxel, peer step " +
-                  StepText(peerStep) + " voxel" },
+              { "case", CaseName(field, n, size) +
+                  (floor ? ", per-ray floor: ours at " + StepText(ourStep) + "-voxel steps (1-3 samples per ray)"
+                         : ", ours step " + StepText(ourStep) + " voxel") +
+                  ", peer step " + StepText(peerStep) + " voxel" },
               { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o },
               { "grid", n }, { "ours_step", ourStep }, { "peer_step", peerStep },
               { "peak_rss_mb", (*ours)["peak_rss_mb"] }, { "peer_peak_rss_mb", (*other)["peak_rss_mb"] },
               { "empty_block_fraction", (*ours)["empty_block_fraction"] } };
+            if (floor)
+            {
+              line["floor"] = true;
+            }
             if (ours->contains("rms_error") && other->contains("rms_error"))
             {
               line["error"] = (*ours)["rms_error"];
