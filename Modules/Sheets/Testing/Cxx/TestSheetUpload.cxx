@@ -1,8 +1,12 @@
 // Test (no baseline): camera moves upload nothing; density/sigma changes
 // re-upload; zero-density triangles are culled on the CPU and off-screen
-// ones draw nothing.
+// ones draw nothing; the bounds cover the smoke, not just the mesh (VTK sets
+// the clipping range from them, and the sheet, like VTK's volume mappers,
+// integrates from the near plane).
 #include "plumeSheetMeshes.h"
 #include "plumeSheetTestUtil.h"
+
+#include <cmath>
 
 int TestSheetUpload(int, char*[])
 {
@@ -29,6 +33,17 @@ int TestSheetUpload(int, char*[])
   s.Mapper->SetBlurRadius(0.07);
   s.Window->Render();
   PLUME_CHECK(s.Mapper->GetUploadCount() == 2);
+  {
+    // mesh bounds padded by Cutoff x the largest sigma (0.07 blur, 0.05 thickness)
+    double mesh[6];
+    ring->GetBounds(mesh);
+    const double* b = s.Mapper->GetBounds();
+    const double pad = s.Mapper->GetCutoff() * 0.07;
+    for (int a = 0; a < 6; ++a)
+    {
+      PLUME_CHECK(std::fabs(b[a] - (mesh[a] + (a % 2 ? pad : -pad))) < 1e-9);
+    }
+  }
   // zero density on one ring column: those triangles are culled
   auto* d = ring->GetPointData()->GetArray("density");
   for (vtkIdType i = 0; i < ring->GetNumberOfPoints(); ++i)
