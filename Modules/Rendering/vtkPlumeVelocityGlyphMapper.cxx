@@ -3,6 +3,7 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeShaderVariants.h"
 #include "vtkPlumeTextureHandOver.h"
+#include "vtkPlumeThrottledDraw.h"
 
 #include "vtkPlumeGlyphFS.h"
 #include "vtkPlumeGlyphGS.h"
@@ -47,36 +48,6 @@
 
 namespace
 {
-// Draw `count` roots, `perRoot` vertices each, in draws of at most `chunk` roots
-// (gl_VertexID keeps counting across draws: it includes `first`). With
-// `inFlight` > 0, a fence after each draw and a wait for the draw `inFlight`
-// draws back bound how much work the driver has queued: llvmpipe bins a whole
-// draw before its threads rasterize it, and queues binned scenes while the
-// rasterizer is behind, so without the wait a 2M-line draw holds hundreds of MB.
-void DrawRoots(GLenum mode, int perRoot, vtkIdType count, vtkIdType chunk, int inFlight)
-{
-  std::vector<GLsync> fences;
-  for (vtkIdType first = 0; first < count; first += chunk)
-  {
-    const vtkIdType n = std::min(chunk, count - first);
-    glDrawArrays(mode, static_cast<GLint>(first * perRoot), static_cast<GLsizei>(n * perRoot));
-    if (inFlight > 0 && first + n < count)
-    {
-      fences.push_back(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0));
-      if (fences.size() > static_cast<size_t>(inFlight))
-      {
-        glClientWaitSync(fences.front(), GL_SYNC_FLUSH_COMMANDS_BIT, GL_TIMEOUT_IGNORED);
-        glDeleteSync(fences.front());
-        fences.erase(fences.begin());
-      }
-    }
-  }
-  for (GLsync fence : fences)
-  {
-    glDeleteSync(fence);
-  }
-}
-
 // Offset of glyphs towards the viewer in NDC z: 1/8192 in NDC is 6.1e-5 in
 // window depth, the size of VTK's own offset for coincident lines (4 × 1.6e-5).
 constexpr double CoincidentDepthOffset = 1.0 / 8192.0;
@@ -958,8 +929,8 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     }
   };
 
-  // chunked draws keep at most two draws queued in the driver (see DrawRoots)
-  const vtkIdType chunk = this->MaximumGlyphsPerDraw > 0 ? this->MaximumGlyphsPerDraw : VTK_ID_MAX;
+  // chunked draws keep at most two draws queued in the driver (see vtkPlumeThrottledDraw.h)
+  const vtkIdType chunk = this->MaximumGlyphsPerDraw;
   const int inFlight = 2;
   if (seedMode)
   {
@@ -977,14 +948,14 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
       impl.SeedUploadChanged = false;
     }
     passParameters(impl.SeedVAO);
-    DrawRoots(GL_POINTS, 1, rootCount, chunk, inFlight);
+    plume::DrawArraysThrottled(GL_POINTS, 1, rootCount, chunk, inFlight);
     impl.SeedVAO->Release();
   }
   else
   {
     impl.EmptyVAO->Bind();
     passParameters(impl.EmptyVAO);
-    DrawRoots(lineVS ? GL_LINES : GL_POINTS, lineVS ? 2 : 1, rootCount, chunk, inFlight);
+    plume::DrawArraysThrottled(lineVS ? GL_LINES : GL_POINTS, lineVS ? 2 : 1, rootCount, chunk, inFlight);
     impl.EmptyVAO->Release();
   }
 
