@@ -3,6 +3,7 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeShaderVariants.h"
+#include "vtkPlumeThrottledDraw.h"
 
 #include "vtkPlumeSheetCompositeFS.h"
 #include "vtkPlumeSheetCompositeVS.h"
@@ -578,7 +579,8 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
       impl.VAOProgram = program;
       impl.BufferChanged = false;
     }
-    glDrawArrays(GL_TRIANGLES, 0, impl.VertexCount);
+    // chunked draws keep at most two draws queued in the driver (vtkPlumeThrottledDraw.h)
+    plume::DrawArraysThrottled(GL_TRIANGLES, 3, impl.VertexCount / 3, this->MaximumTrianglesPerDraw, 2);
     impl.VAO->Release();
     impl.FBO->RemoveColorAttachment(0);
     state->PopFramebufferBindings();
@@ -651,6 +653,7 @@ void vtkPlumeSheetMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridB: " << this->GridB << "\n";
   os << indent << "Quadrature: " << this->Quadrature << "\n";
   os << indent << "AdaptiveSampling: " << this->AdaptiveSampling << "\n";
+  os << indent << "MaximumTrianglesPerDraw: " << this->MaximumTrianglesPerDraw << "\n";
   os << indent << "UploadCount: " << this->UploadCount << "\n";
   os << indent << "TriangleCount: " << this->TriangleCount << "\n";
 }

@@ -13,6 +13,7 @@ layout(triangle_strip, max_vertices = 4) out;
 in vec3 cornerEye[];
 in vec3 cornerDensity[];
 in vec2 cornerSigma[];
+flat in int cornerTriangle[];
 
 uniform mat4 Projection;      // eye -> clip
 uniform vec2 ViewportSize;    // pixels
@@ -54,7 +55,7 @@ void EmitCorner(Flat f, vec2 ndc)
   triD2 = cornerDensity[2];
   triSigmaB = f.sigmaB;
   triSigmaT = f.sigmaT;
-  gl_PrimitiveID = gl_PrimitiveIDIn;
+  gl_PrimitiveID = cornerTriangle[0]; // not gl_PrimitiveIDIn: it restarts with every draw
   gl_Position = vec4(ndc, 0.0, 1.0);
   EmitVertex();
 }

@@ -14,11 +14,13 @@ uniform float ModelToEyeScale; // length scale of the actor matrix (sigmas are l
 out vec3 cornerEye;
 out vec3 cornerDensity;
 out vec2 cornerSigma;
+flat out int cornerTriangle; // the triangle's index in the whole mesh, whatever the draw it is in
 
 void main()
 {
   cornerEye = (MCVCRel * vec4(sheetPosition, 1.0)).xyz;
   cornerDensity = sheetDensity;
   cornerSigma = sheetSigma * ModelToEyeScale;
+  cornerTriangle = gl_VertexID / 3; // gl_VertexID counts from the draw's first vertex
   gl_Position = vec4(cornerEye, 1.0);
 }
