@@ -8,10 +8,8 @@
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkOutlineSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
@@ -58,13 +56,7 @@ int TestVelocityGlyphCarotid(int argc, char* argv[])
     sphereActor->SetMapper(sphereMapper);
     sphereActor->GetProperty()->SetColor(0.35, 0.45, 0.9);
 
-    vtkNew<vtkOutlineSource> outline;
-    outline->SetBounds(reader->GetOutput()->GetBounds());
-    vtkNew<vtkPolyDataMapper> outlineMapper;
-    outlineMapper->SetInputConnection(outline->GetOutputPort());
-    vtkNew<vtkActor> outlineActor;
-    outlineActor->SetMapper(outlineMapper);
-    outlineActor->GetProperty()->SetColor(0.8, 0.8, 0.8);
+    auto outlineActor = plumetest::OutlineActor(reader->GetOutput()->GetBounds(), 0.8);
 
     vtkNew<vtkRenderer> ren;
     ren->SetViewport(0.5 * side, 0, 0.5 * side + 0.5, 1);
@@ -80,13 +72,5 @@ int TestVelocityGlyphCarotid(int argc, char* argv[])
     cam->Zoom(1.6);
     window->AddRenderer(ren);
   }
-  window->Render();
-  const std::string errors = plume::test::GLErrors(window);
-  if (!errors.empty())
-  {
-    std::cerr << errors << "\n";
-    return EXIT_FAILURE;
-  }
-  const int result = vtkRegressionTestImage(window);
-  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+  return plumetest::RenderAndCompare(window, argc, argv);
 }

@@ -6,10 +6,8 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkNew.h"
-#include "vtkOutlineSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
@@ -37,13 +35,8 @@ int TestVelocityGlyphVortex(int argc, char* argv[])
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
 
-    vtkNew<vtkOutlineSource> outline;
-    outline->SetBounds(-1, 1, -1, 1, -0.5, 0.5);
-    vtkNew<vtkPolyDataMapper> outlineMapper;
-    outlineMapper->SetInputConnection(outline->GetOutputPort());
-    vtkNew<vtkActor> outlineActor;
-    outlineActor->SetMapper(outlineMapper);
-    outlineActor->GetProperty()->SetColor(0.9, 0.9, 0.9);
+    const double box[6] = { -1, 1, -1, 1, -0.5, 0.5 };
+    auto outlineActor = plumetest::OutlineActor(box, 0.9);
 
     vtkNew<vtkRenderer> ren;
     ren->SetViewport(0.5 * side, 0, 0.5 * side + 0.5, 1);
@@ -57,13 +50,5 @@ int TestVelocityGlyphVortex(int argc, char* argv[])
     ren->GetActiveCamera()->Zoom(1.3);
     window->AddRenderer(ren);
   }
-  window->Render();
-  const std::string errors = plume::test::GLErrors(window);
-  if (!errors.empty())
-  {
-    std::cerr << errors << "\n";
-    return EXIT_FAILURE;
-  }
-  const int result = vtkRegressionTestImage(window);
-  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+  return plumetest::RenderAndCompare(window, argc, argv);
 }

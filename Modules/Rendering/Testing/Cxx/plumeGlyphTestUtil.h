@@ -1,18 +1,25 @@
 // Glyph-specific helpers for the Plume::Rendering tests: projection of world
 // points in double precision, where a drawn glyph ends (MeasureTip), a PNG
-// dump for debugging, and PLUME_CHECK. Windows, float read-back, image metrics
+// dump for debugging, the image tests' outline and ending (OutlineActor,
+// RenderAndCompare), and PLUME_CHECK. Windows, float read-back, image metrics
 // and GL error checks come from PlumeTestSupport (Testing/Support).
 #ifndef plumeGlyphTestUtil_h
 #define plumeGlyphTestUtil_h
 
 #include "plumeTestSupport.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkOutlineSource.h"
 #include "vtkPNGWriter.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -48,6 +55,36 @@ inline void DumpPNG(vtkRenderWindow* window, const std::string& name)
   writer->SetInputConnection(grab->GetOutputPort());
   writer->SetFileName((std::string(dir) + "/" + name + ".png").c_str());
   writer->Write();
+}
+
+/** A wireframe box around `bounds` in grey level `grey`: the image tests' frame of reference. */
+inline vtkSmartPointer<vtkActor> OutlineActor(const double bounds[6], double grey)
+{
+  vtkNew<vtkOutlineSource> outline;
+  outline->SetBounds(bounds);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(outline->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(grey, grey, grey);
+  return actor;
+}
+
+/**
+ * The end of an image test: render `window`; any GL error fails, otherwise
+ * the comparison with the test's baseline decides (EXIT_SUCCESS / EXIT_FAILURE).
+ */
+inline int RenderAndCompare(vtkRenderWindow* window, int argc, char* argv[])
+{
+  window->Render();
+  const std::string errors = plume::test::GLErrors(window);
+  if (!errors.empty())
+  {
+    std::cerr << errors << "\n";
+    return EXIT_FAILURE;
+  }
+  const int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
 }
 
 /**
