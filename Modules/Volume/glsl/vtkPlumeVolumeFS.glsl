@@ -75,14 +75,16 @@ uniform vec3 LightColor[PLUME_LIGHTS];     // colour x intensity
 
 //VTK::Output::Dec
 
+// textureLod: the look-ups run in non-uniform control flow (the ray loop),
+// where implicit derivatives are undefined; the textures have no mipmaps
 float sampleU(vec3 p)
 {
-  return texture(Volume, (p + 0.5) / Dims).r;
+  return textureLod(Volume, (p + 0.5) / Dims, 0.0).r;
 }
 
 vec4 transfer(float u)
 {
-  return texture(TransferFunction, vec2((u * (TFSize - 1.0) + 0.5) / TFSize, 0.5));
+  return textureLod(TransferFunction, vec2((u * (TFSize - 1.0) + 0.5) / TFSize, 0.5), 0.0);
 }
 
 // extinction per world unit at u (tabulated as -ln(1 - min(alpha, 1 - 1e-6)) / UnitDistance)
