@@ -7,8 +7,9 @@
 
 namespace plume
 {
-void DrawArraysThrottled(unsigned int mode, int perPrimitive, vtkIdType count, vtkIdType chunk, int inFlight)
+int DrawArraysThrottled(unsigned int mode, int perPrimitive, vtkIdType count, vtkIdType chunk, int inFlight)
 {
+  int draws = 0;
   if (chunk <= 0)
   {
     chunk = std::max<vtkIdType>(count, 1);
@@ -19,6 +20,7 @@ void DrawArraysThrottled(unsigned int mode, int perPrimitive, vtkIdType count, v
     const vtkIdType n = std::min(chunk, count - first);
     glDrawArrays(static_cast<GLenum>(mode), static_cast<GLint>(first * perPrimitive),
       static_cast<GLsizei>(n * perPrimitive));
+    ++draws;
     if (inFlight > 0 && first + n < count)
     {
       fences.push_back(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0));
@@ -34,5 +36,6 @@ void DrawArraysThrottled(unsigned int mode, int perPrimitive, vtkIdType count, v
   {
     glDeleteSync(fence);
   }
+  return draws;
 }
 }

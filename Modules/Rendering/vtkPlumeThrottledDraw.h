@@ -19,9 +19,11 @@ namespace plume
  * draw). gl_VertexID keeps counting across the draws (it includes their
  * first vertex), so shaders see the same vertex ids as in one draw. With
  * `inFlight` > 0, at most that many earlier chunks are unfinished when the
- * next one is submitted. The image is the same as one draw's.
+ * next one is submitted. The image is the same as one draw's. Vertex
+ * indices are GLint: count x perPrimitive must stay below 2^31 (a GL limit
+ * of glDrawArrays itself). Returns the number of draw calls made.
  */
-PLUMERENDERING_EXPORT void DrawArraysThrottled(
+PLUMERENDERING_EXPORT int DrawArraysThrottled(
   unsigned int mode, int perPrimitive, vtkIdType count, vtkIdType chunk, int inFlight);
 }
 

@@ -247,6 +247,7 @@ double* vtkPlumeSheetMapper::GetBounds()
 void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
 {
   Internals& impl = *this->Impl;
+  this->LastDrawCount = 0;
   if (!this->Static && this->GetNumberOfInputConnections(0) > 0)
   {
     this->GetInputAlgorithm()->Update();
@@ -580,7 +581,8 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
       impl.BufferChanged = false;
     }
     // chunked draws keep at most two draws queued in the driver (vtkPlumeThrottledDraw.h)
-    plume::DrawArraysThrottled(GL_TRIANGLES, 3, impl.VertexCount / 3, this->MaximumTrianglesPerDraw, 2);
+    this->LastDrawCount =
+      plume::DrawArraysThrottled(GL_TRIANGLES, 3, impl.VertexCount / 3, this->MaximumTrianglesPerDraw, 2);
     impl.VAO->Release();
     impl.FBO->RemoveColorAttachment(0);
     state->PopFramebufferBindings();

@@ -226,6 +226,9 @@ public:
   vtkGetMacro(MaximumTrianglesPerDraw, vtkIdType);
   ///@}
 
+  /** Draw calls of the sheet's triangles in the last render (MaximumTrianglesPerDraw splits them). */
+  vtkGetMacro(LastDrawCount, int);
+
   /** Number of triangle uploads so far (camera moves must not add any). */
   vtkGetMacro(UploadCount, int);
   /** Triangles drawn by the last upload (after culling zero density, bad and zero-area input). */
@@ -266,6 +269,7 @@ protected:
   int Quadrature = QUADRATURE_ANALYTIC;
   bool AdaptiveSampling = true;
   vtkIdType MaximumTrianglesPerDraw = 16384;
+  int LastDrawCount = 0;
   int UploadCount = 0;
   vtkIdType TriangleCount = 0;
   vtkIdType SkippedTriangles = 0;

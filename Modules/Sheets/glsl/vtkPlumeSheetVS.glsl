@@ -21,6 +21,6 @@ void main()
   cornerEye = (MCVCRel * vec4(sheetPosition, 1.0)).xyz;
   cornerDensity = sheetDensity;
   cornerSigma = sheetSigma * ModelToEyeScale;
-  cornerTriangle = gl_VertexID / 3; // gl_VertexID counts from the draw's first vertex
+  cornerTriangle = gl_VertexID / 3; // gl_VertexID includes the draw's first: the index in the whole buffer
   gl_Position = vec4(cornerEye, 1.0);
 }

@@ -54,8 +54,10 @@ int TestSheetUpload(int, char*[])
     s.Mapper->SetGridB(1);
     s.Mapper->SetMaximumTrianglesPerDraw(0);
     const auto one = plume::test::ReadBack(s.Window);
+    PLUME_CHECK(s.Mapper->GetLastDrawCount() == 1);
     s.Mapper->SetMaximumTrianglesPerDraw(5); // 144 triangles: 29 draws
     const auto chunked = plume::test::ReadBack(s.Window);
+    PLUME_CHECK(s.Mapper->GetLastDrawCount() == 29);
     const auto err = plume::test::Compare(one, chunked);
     std::printf("one draw vs 5 triangles per draw: max difference %g\n", err.Max);
     PLUME_CHECK(err.Max == 0.0);
