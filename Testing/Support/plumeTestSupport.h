@@ -1,10 +1,12 @@
 // Shared helpers for Plume's tests and benchmarks: datasets by name, offscreen
-// windows, float read-back of colour and depth, image error metrics.
+// windows, float read-back of colour and depth, image error metrics, and
+// PLUME_CHECK (counts a failed condition in the caller's `int failures`).
 #ifndef plumeTestSupport_h
 #define plumeTestSupport_h
 
 #include "vtkSmartPointer.h"
 
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -65,5 +67,16 @@ size_t CountForeground(const FloatImage& image, const double background[3], doub
 std::string GLErrors(vtkRenderWindow* window);
 }
 }
+
+/** Report a failed condition (file:line and the condition) and count it in the caller's `failures`. */
+#define PLUME_CHECK(cond)                                                                          \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(cond))                                                                                   \
+    {                                                                                              \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << std::endl;           \
+      ++failures;                                                                                  \
+    }                                                                                              \
+  } while (false)
 
 #endif

@@ -1,8 +1,8 @@
 // Glyph-specific helpers for the Plume::Rendering tests: projection of world
 // points in double precision, where a drawn glyph ends (MeasureTip), a PNG
 // dump for debugging, the image tests' outline and ending (OutlineActor,
-// RenderAndCompare), and PLUME_CHECK. Windows, float read-back, image metrics
-// and GL error checks come from PlumeTestSupport (Testing/Support).
+// RenderAndCompare). Windows, float read-back, image metrics, GL error checks
+// and PLUME_CHECK come from PlumeTestSupport (Testing/Support).
 #ifndef plumeGlyphTestUtil_h
 #define plumeGlyphTestUtil_h
 
@@ -192,16 +192,6 @@ inline TipResult MeasureTip(vtkRenderer* ren, const FloatImage& img, const doubl
   res.Reach = reach - len;
   return res;
 }
-
-#define PLUME_CHECK(cond)                                                                          \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond "\n";                   \
-      ++failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
 }
 
 #endif

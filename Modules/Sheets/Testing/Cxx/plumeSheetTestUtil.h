@@ -29,16 +29,6 @@
 #include <cstdlib>
 #include <string>
 
-#define PLUME_CHECK(cond)                                                                          \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << "\n";              \
-      ++failures;                                                                                  \
-    }                                                                                              \
-  } while (0)
-
 namespace sheettest
 {
 using plume::test::FloatImage;

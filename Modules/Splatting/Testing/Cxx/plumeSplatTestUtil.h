@@ -1,8 +1,10 @@
-// Helpers for the Plume::Splatting tests: a check macro, random splat inputs,
-// and the error of a splatter output against the double-precision reference.
+// Helpers for the Plume::Splatting tests: random splat inputs and the error
+// of a splatter output against the double-precision reference (PLUME_CHECK
+// comes from PlumeTestSupport).
 #ifndef plumeSplatTestUtil_h
 #define plumeSplatTestUtil_h
 
+#include "plumeTestSupport.h"
 #include "vtkPlumeGaussianSplatter.h"
 #include "vtkPlumeSplatReference.h"
 
@@ -18,16 +20,6 @@
 
 #include <cmath>
 #include <iostream>
-
-#define PLUME_CHECK(cond)                                                                         \
-  do                                                                                              \
-  {                                                                                               \
-    if (!(cond))                                                                                  \
-    {                                                                                             \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << std::endl;          \
-      ++failures;                                                                                 \
-    }                                                                                             \
-  } while (false)
 
 namespace splattest
 {
