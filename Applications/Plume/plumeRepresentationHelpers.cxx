@@ -13,6 +13,9 @@
 #include "vtkPointData.h"
 #include "vtkScalarsToColors.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace plume
 {
 
@@ -104,10 +107,46 @@ void Coloring::Read(Parameters& p, const std::array<double, 3>& defaultColor)
   }
 }
 
-vtkSmartPointer<vtkScalarsToColors> Coloring::Table(vtkDataArray* array, int component) const
+vtkSmartPointer<vtkScalarsToColors> Coloring::Table(vtkDataArray* array, int component, vtkDataArray* mask) const
 {
   double r[2] = { this->Range[0], this->Range[1] };
-  if (!this->HasRange)
+  if (!this->HasRange && mask && mask->GetNumberOfTuples() == array->GetNumberOfTuples())
+  {
+    // nodes outside the data (resampled: stored as 0) must not widen the range
+    r[0] = VTK_DOUBLE_MAX;
+    r[1] = -VTK_DOUBLE_MAX;
+    const int comps = array->GetNumberOfComponents();
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      if (mask->GetComponent(i, 0) == 0.0)
+      {
+        continue;
+      }
+      double v = 0.0;
+      if (component >= 0)
+      {
+        v = array->GetComponent(i, component);
+      }
+      else
+      {
+        for (int c = 0; c < comps; ++c)
+        {
+          v += array->GetComponent(i, c) * array->GetComponent(i, c);
+        }
+        v = std::sqrt(v);
+      }
+      if (std::isfinite(v))
+      {
+        r[0] = std::min(r[0], v);
+        r[1] = std::max(r[1], v);
+      }
+    }
+    if (r[0] > r[1])
+    {
+      r[0] = r[1] = 0.0;
+    }
+  }
+  else if (!this->HasRange)
   {
     array->GetRange(r, component);
   }

@@ -48,8 +48,11 @@ struct Coloring
 
   /** Reads color, colormap and range. */
   void Read(Parameters& p, const std::array<double, 3>& defaultColor);
-  /** The colour map over `range`, or over the array's range (component -1: magnitude). */
-  vtkSmartPointer<vtkScalarsToColors> Table(vtkDataArray* array, int component) const;
+  /**
+   * The colour map over `range`, or over the array's range (component -1:
+   * magnitude), taken over the points where `mask` (if given) is not 0.
+   */
+  vtkSmartPointer<vtkScalarsToColors> Table(vtkDataArray* array, int component, vtkDataArray* mask = nullptr) const;
 };
 }
 

@@ -12,6 +12,7 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
 #include "vtkVolume.h"
@@ -59,7 +60,8 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   {
     int dims[3];
     image->GetDimensions(dims);
-    const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims);
+    const double bytes =
+      vtkPlumeVolumeMapper::GetTextureBytes(dims, image->GetPointData()->GetArray("vtkValidPointMask") != nullptr);
     if (bytes > budget)
     {
       std::ostringstream message;
@@ -78,7 +80,8 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
       std::to_string(array->GetNumberOfComponents()) + " component(s)");
   }
   const int rangeComponent = component >= 0 ? component : (array->GetNumberOfComponents() == 1 ? 0 : -1);
-  auto table = coloring.Table(array, rangeComponent);
+  // resampled data: the nodes outside it are left out of the range (the mapper draws nothing there)
+  auto table = coloring.Table(array, rangeComponent, image->GetPointData()->GetArray("vtkValidPointMask"));
   const double* range = table->GetRange();
 
   vtkNew<vtkVolume> volume;

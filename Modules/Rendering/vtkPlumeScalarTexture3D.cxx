@@ -64,10 +64,11 @@ void vtkPlumeScalarTexture3D::ReleaseGraphicsResources(vtkWindow* window)
   this->UploadedArray = nullptr;
   this->UploadedComponent = -2;
   this->UploadedTime = 0;
+  this->UploadedMask = nullptr;
 }
 
-bool vtkPlumeScalarTexture3D::Update(
-  vtkOpenGLRenderWindow* window, vtkImageData* image, vtkDataArray* array, int component)
+bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData* image,
+  vtkDataArray* array, int component, vtkDataArray* mask)
 {
   this->LastError.clear();
   if (!window || !image || !array)
@@ -96,10 +97,19 @@ bool vtkPlumeScalarTexture3D::Update(
     return false;
   }
 
-  const vtkMTimeType time = std::max(image->GetMTime(), array->GetMTime());
+  if (mask && (mask->GetNumberOfTuples() != n || mask->GetNumberOfComponents() != 1))
+  {
+    std::ostringstream msg;
+    msg << "valid-point mask '" << (mask->GetName() ? mask->GetName() : "") << "' must have one component and "
+        << n << " tuples (has " << mask->GetNumberOfComponents() << " and " << mask->GetNumberOfTuples() << ")";
+    this->LastError = msg.str();
+    return false;
+  }
+  const vtkMTimeType time =
+    std::max({ image->GetMTime(), array->GetMTime(), mask ? mask->GetMTime() : vtkMTimeType(0) });
   if (this->Texture->GetContext() == window && this->Texture->GetHandle() &&
     this->UploadedImage == image && this->UploadedArray == array &&
-    this->UploadedComponent == component && this->UploadedTime == time)
+    this->UploadedComponent == component && this->UploadedTime == time && this->UploadedMask == mask)
   {
     return true;
   }
@@ -138,11 +148,32 @@ bool vtkPlumeScalarTexture3D::Update(
     }
   }
 
-  // finite range in double
+  // nodes outside the data (mask 0)
+  std::vector<bool> outside;
+  if (mask)
+  {
+    outside.resize(static_cast<size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      outside[i] = mask->GetComponent(i, 0) == 0.0;
+    }
+    if (std::find(outside.begin(), outside.end(), true) == outside.end())
+    {
+      outside.clear(); // nothing masked: plain u
+    }
+  }
+  const bool masked = !outside.empty();
+
+  // finite range in double (of the valid nodes)
   double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
   long long nonFinite = 0;
-  for (double v : values)
+  for (vtkIdType i = 0; i < n; ++i)
   {
+    const double v = values[i];
+    if (masked && outside[i])
+    {
+      continue;
+    }
     if (std::isfinite(v))
     {
       lo = std::min(lo, v);
@@ -192,18 +223,31 @@ bool vtkPlumeScalarTexture3D::Update(
       }
     }
   }
+  if (masked)
+  {
+    // (u w, w): see the class documentation
+    std::vector<float> uw(2 * static_cast<size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      uw[2 * i] = outside[i] ? 0.0f : u[i];
+      uw[2 * i + 1] = outside[i] ? 0.0f : 1.0f;
+    }
+    u.swap(uw);
+  }
 
   this->Texture->SetContext(window);
+  // the format is cached by the texture object: one or two channels per upload
+  this->Texture->ResetFormatAndType();
   this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
   this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
   this->Texture->SetWrapR(vtkTextureObject::ClampToEdge);
   this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
   this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  if (!this->Texture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_FLOAT, u.data()))
+  if (!this->Texture->Create3DFromRaw(dims[0], dims[1], dims[2], masked ? 2 : 1, VTK_FLOAT, u.data()))
   {
     std::ostringstream msg;
     msg << "could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
-        << " R32F 3D texture";
+        << (masked ? " RG32F" : " R32F") << " 3D texture";
     this->LastError = msg.str();
     this->UploadedImage = nullptr;
     return false;
@@ -220,6 +264,7 @@ bool vtkPlumeScalarTexture3D::Update(
     const size_t blocks =
       static_cast<size_t>(this->BlockDimensions[0]) * this->BlockDimensions[1] * this->BlockDimensions[2];
     this->BlockRanges.resize(2 * blocks);
+    const size_t ch = masked ? 2 : 1; // channels per node in u
     for (int bk = 0; bk < this->BlockDimensions[2]; ++bk)
     {
       for (int bj = 0; bj < this->BlockDimensions[1]; ++bj)
@@ -231,11 +276,15 @@ bool vtkPlumeScalarTexture3D::Update(
           {
             for (int j = bj * b; j <= std::min((bj + 1) * b, dims[1] - 1); ++j)
             {
-              const float* row = &u[static_cast<size_t>(dims[0]) * (j + static_cast<size_t>(dims[1]) * k)];
+              const float* row = &u[ch * static_cast<size_t>(dims[0]) * (j + static_cast<size_t>(dims[1]) * k)];
               for (int i = bi * b; i <= std::min((bi + 1) * b, dims[0] - 1); ++i)
               {
-                mn = std::min(mn, row[i]);
-                mx = std::max(mx, row[i]);
+                if (masked && row[ch * i + 1] == 0.0f)
+                {
+                  continue; // outside the data
+                }
+                mn = std::min(mn, row[ch * i]);
+                mx = std::max(mx, row[ch * i]);
               }
             }
           }
@@ -254,6 +303,8 @@ bool vtkPlumeScalarTexture3D::Update(
   this->UploadedArray = array;
   this->UploadedComponent = component;
   this->UploadedTime = time;
+  this->UploadedMask = mask;
+  this->Masked = masked;
   ++this->UploadCount;
   return true;
 }

@@ -19,6 +19,16 @@
  *  - -Inf -> range[0] (u = 0)
  * An array with no finite value at all gives range (0, 0) and u = 0.
  *
+ * Valid-point mask (optional, e.g. vtkResampleToImage's vtkValidPointMask):
+ * nodes whose mask is 0 lie outside the data and are left out of the range.
+ * If there are any (GetMasked()), the texture has two channels, GL_RG32F:
+ * r = u w and g = w, w = 1 at valid nodes and 0 outside. Linear filtering
+ * then gives, at any point, the interpolation weight of valid nodes (g) and
+ * r / g = the value interpolated over the valid nodes only, so a shader can
+ * fade the data out over the last voxel (weight g) without ever blending in
+ * the values of nodes outside it. Block ranges cover valid nodes only (a
+ * block with none has min 1 > max 0).
+ *
  * Re-upload happens only when the image, the array, the component choice or
  * their MTimes change, or after ReleaseGraphicsResources; GetUploadCount()
  * lets tests check that. Grids larger than GL_MAX_3D_TEXTURE_SIZE along an
@@ -59,8 +69,14 @@ public:
    * `window`. `component`: -1 (default) = the only component, or the magnitude
    * when the array has several; k >= 0 = component k. Uploads only if needed.
    * Returns false (and sets GetLastError()) on bad input or a GL failure.
+   * `mask` (optional): one-component point array, 0 = node outside the data
+   * (see the class documentation).
    */
-  bool Update(vtkOpenGLRenderWindow* window, vtkImageData* image, vtkDataArray* array, int component = -1);
+  bool Update(vtkOpenGLRenderWindow* window, vtkImageData* image, vtkDataArray* array, int component = -1,
+    vtkDataArray* mask = nullptr);
+
+  /** True if the last upload had masked nodes: a two-channel (u w, w) texture. */
+  bool GetMasked() const { return this->Masked; }
 
   /** The GL texture (valid after a successful Update). */
   vtkTextureObject* GetTextureObject();
@@ -119,6 +135,8 @@ protected:
   vtkDataArray* UploadedArray = nullptr;
   int UploadedComponent = -2;
   vtkMTimeType UploadedTime = 0;
+  vtkDataArray* UploadedMask = nullptr;
+  bool Masked = false;
 
 private:
   vtkPlumeScalarTexture3D(const vtkPlumeScalarTexture3D&) = delete;

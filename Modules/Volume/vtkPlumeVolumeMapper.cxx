@@ -24,6 +24,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -158,16 +159,17 @@ int vtkPlumeVolumeMapper::GetUploadCount()
 }
 
 //------------------------------------------------------------------------------
-double vtkPlumeVolumeMapper::GetTextureBytes(const int dimensions[3])
+double vtkPlumeVolumeMapper::GetTextureBytes(const int dimensions[3], bool masked)
 {
-  // R32F scalars + the 8-bit block occupancy and RG32F block ranges (8³ blocks)
+  // R32F scalars (RG32F with a valid-point mask) + the 8-bit block occupancy
+  // and RG32F block ranges (8³ blocks)
   const double nodes = double(std::max(dimensions[0], 1)) * std::max(dimensions[1], 1) * std::max(dimensions[2], 1);
   double blocks = 1;
   for (int a = 0; a < 3; ++a)
   {
     blocks *= std::max(1, (dimensions[a] - 1 + 7) / 8);
   }
-  return 4.0 * nodes + 9.0 * blocks;
+  return (masked ? 8.0 : 4.0) * nodes + 9.0 * blocks;
 }
 
 //------------------------------------------------------------------------------
@@ -278,7 +280,9 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     int dims[3];
     image->GetDimensions(dims);
-    const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims);
+    // (a mask array present: counted as masked, two channels)
+    const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims,
+      !this->ValidMaskArrayName.empty() && image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str()));
     if (bytes > this->EffectiveTextureMemoryBudgetMB * Megabyte)
     {
       std::ostringstream msg;
@@ -291,7 +295,15 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // ---- 3D texture (only when the data changed)
-  if (!impl.Scalars->Update(renWin, image, scalars, this->ScalarComponent))
+  // nodes outside the data (valid-point mask): a (u w, w) texture, see vtkPlumeScalarTexture3D
+  vtkDataArray* mask = this->ValidMaskArrayName.empty()
+    ? nullptr
+    : image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str());
+  if (mask && mask->GetNumberOfComponents() != 1)
+  {
+    mask = nullptr;
+  }
+  if (!impl.Scalars->Update(renWin, image, scalars, this->ScalarComponent, mask))
   {
     vtkErrorMacro(<< impl.Scalars->GetLastError());
     return;
@@ -612,6 +624,11 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     enabled.insert("DEPTH");
   }
+  {
+    const std::string maskFeature = impl.Scalars->GetMasked() ? "MASK" : "NOMASK";
+    enabled.insert(maskFeature);
+    enabled.insert(mode.substr(6) + "_" + maskFeature); // e.g. SMOKE_MASK
+  }
   if (skipTransparent || rangeSkipping)
   {
     enabled.insert("SKIP");
@@ -839,6 +856,7 @@ void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << ", seed " << this->JitterSeed << ")\n";
   os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "ValidMaskArrayName: " << this->ValidMaskArrayName << "\n";
   os << indent << "Smoke: " << this->Smoke << "\n";
   os << indent << "ShadowSampleDistance: " << this->ShadowSampleDistance << "\n";
   os << indent << "UseOpaqueDepth: " << this->UseOpaqueDepth << "\n";

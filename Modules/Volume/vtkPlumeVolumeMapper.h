@@ -73,6 +73,7 @@
 #include "vtkVolumeMapper.h"
 
 #include <memory> // For std::unique_ptr
+#include <string> // For std::string
 
 class vtkImageData;
 
@@ -87,6 +88,20 @@ public:
   /** Component of a multi-component array to render; -1 (default) = the only one or the magnitude. */
   vtkSetClampMacro(ScalarComponent, int, -1, VTK_INT_MAX);
   vtkGetMacro(ScalarComponent, int);
+  ///@}
+
+  ///@{
+  /**
+   * Point array whose zeros mark nodes outside the data (vtkResampleToImage
+   * writes one when it resamples unstructured data). Those nodes draw nothing
+   * and are left out of the scalar range; the volume fades to nothing over
+   * the last voxel at the data's boundary (the first transfer-function table
+   * entry is transparent). Ignored when the input has no such array. Default
+   * "vtkValidPointMask". (The isosurface mode treats them as below every
+   * value, so a surface may close where the data ends.)
+   */
+  vtkSetStdStringFromCharMacro(ValidMaskArrayName);
+  vtkGetCharFromStdStringMacro(ValidMaskArrayName);
   ///@}
 
   ///@{
@@ -201,8 +216,8 @@ public:
   /** The budget that applied at the last render, MB (the automatic value when TextureMemoryBudgetMB is 0). */
   vtkGetMacro(EffectiveTextureMemoryBudgetMB, double);
 
-  /** Bytes of GPU texture memory the mapper needs for an image of these point dimensions. */
-  static double GetTextureBytes(const int dimensions[3]);
+  /** Bytes of GPU texture memory the mapper needs for an image of these point dimensions (masked: with a valid-point mask). */
+  static double GetTextureBytes(const int dimensions[3], bool masked = false);
 
   /** Number of 3D-texture uploads so far (tests check re-renders do not upload). */
   int GetUploadCount();
@@ -222,6 +237,7 @@ protected:
   ~vtkPlumeVolumeMapper() override;
 
   int ScalarComponent = -1;
+  std::string ValidMaskArrayName = "vtkValidPointMask";
   double SampleDistance = 0.5;
   bool Jitter = true;
   bool AnimatedJitter = false;

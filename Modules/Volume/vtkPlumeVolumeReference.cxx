@@ -45,6 +45,7 @@ struct Setup
 {
   int Dims[3];
   std::vector<double> Values; // sanitised scalars, data units
+  std::vector<unsigned char> Valid; // valid-point mask (1 inside the data); empty: all valid
   double Range[2];
   double BoxMin[3], BoxMax[3];
   double ClipToIndex[16];
@@ -66,8 +67,12 @@ struct Setup
   int Width, Height;
   const std::vector<float>* Depth;
 
-  double Field(const Vec3& p) const
+  // the scalar at p, interpolated over the valid nodes only; `weight` (if
+  // given): their total trilinear weight (1 without a mask), which scales the
+  // extinction so the data fades out over its last voxel
+  double Field(const Vec3& p, double* weight = nullptr) const
   {
+    const bool masked = !this->Valid.empty();
     if (this->Nearest)
     {
       size_t id = 0, stride = 1;
@@ -77,7 +82,11 @@ struct Setup
         id += stride * static_cast<size_t>(std::floor(x + 0.5));
         stride *= this->Dims[a];
       }
-      return this->Values[id];
+      if (weight)
+      {
+        *weight = masked ? this->Valid[id] : 1.0;
+      }
+      return masked && !this->Valid[id] ? 0.0 : this->Values[id];
     }
     int i0[3];
     double f[3];
@@ -87,7 +96,7 @@ struct Setup
       i0[a] = std::min(static_cast<int>(std::floor(x)), std::max(this->Dims[a] - 2, 0));
       f[a] = x - i0[a];
     }
-    double v = 0;
+    double v = 0, sum = 0;
     for (int c = 0; c < 8; ++c)
     {
       int ijk[3];
@@ -98,13 +107,19 @@ struct Setup
         ijk[a] = std::min(i0[a] + bit, this->Dims[a] - 1);
         w *= bit ? f[a] : 1.0 - f[a];
       }
-      if (w != 0)
+      const size_t id =
+        ijk[0] + static_cast<size_t>(this->Dims[0]) * (ijk[1] + static_cast<size_t>(this->Dims[1]) * ijk[2]);
+      if (w != 0 && (!masked || this->Valid[id]))
       {
-        v += w *
-          this->Values[ijk[0] + static_cast<size_t>(this->Dims[0]) * (ijk[1] + static_cast<size_t>(this->Dims[1]) * ijk[2])];
+        v += w * this->Values[id];
+        sum += w;
       }
     }
-    return v;
+    if (weight)
+    {
+      *weight = masked ? sum : 1.0;
+    }
+    return masked ? (sum > 0 ? v / sum : 0.0) : v;
   }
 
   // colour and opacity at scalar s
@@ -167,9 +182,9 @@ struct Setup
     double tau = 0;
     for (int k = 0; k < n; ++k)
     {
-      double rgb[3], a;
-      this->Transfer(this->Field(Add(p, Mul(e, (k + 0.5) * h))), rgb, a);
-      tau += this->Sigma(a) * h * worldPerIndex;
+      double rgb[3], a, w;
+      this->Transfer(this->Field(Add(p, Mul(e, (k + 0.5) * h)), &w), rgb, a);
+      tau += this->Sigma(a) * w * h * worldPerIndex;
     }
     return std::exp(-tau);
   }
@@ -243,7 +258,16 @@ struct Setup
       double best = -std::numeric_limits<double>::infinity();
       for (int k = 0; k <= n; ++k)
       {
-        best = std::max(best, this->Field(Add(p0, Mul(d, t0 + k * h))));
+        double w;
+        const double v = this->Field(Add(p0, Mul(d, t0 + k * h)), &w);
+        if (w > 0.0) // samples with no valid node around do not count
+        {
+          best = std::max(best, v);
+        }
+      }
+      if (!std::isfinite(best))
+      {
+        return;
       }
       double rgb[3], a;
       this->Transfer(best, rgb, a);
@@ -256,13 +280,15 @@ struct Setup
     }
     if (this->Mode == vtkPlumeVolumeReference::ISOSURFACE)
     {
-      double tPrev = t0;
-      double fPrev = this->Field(Add(p0, Mul(d, t0))) - this->Iso;
+      double tPrev = t0, w;
+      double fPrev = this->Field(Add(p0, Mul(d, t0)), &w) - this->Iso;
+      bool prevInside = w > 0.0;
       for (int k = 1; k <= n; ++k)
       {
         const double t = t0 + k * h;
-        const double f = this->Field(Add(p0, Mul(d, t))) - this->Iso;
-        if ((fPrev < 0) != (f < 0))
+        const double f = this->Field(Add(p0, Mul(d, t)), &w) - this->Iso;
+        const bool inside = w > 0.0; // a crossing needs two samples with valid nodes around
+        if (inside && prevInside && (fPrev < 0) != (f < 0))
         {
           double ta = tPrev, tb = t;
           for (int it = 0; it < 40; ++it)
@@ -282,8 +308,12 @@ struct Setup
           out[3] = 1.0f;
           return;
         }
-        tPrev = t;
-        fPrev = f;
+        if (inside)
+        {
+          tPrev = t;
+          fPrev = f;
+        }
+        prevInside = inside;
       }
       return;
     }
@@ -307,9 +337,9 @@ struct Setup
     for (int k = 0; k < n; ++k)
     {
       const Vec3 p = Add(p0, Mul(d, t0 + (k + 0.5) * h));
-      double rgb[3], a;
-      this->Transfer(this->Field(p), rgb, a);
-      const double sigma = this->Sigma(a);
+      double rgb[3], a, w;
+      this->Transfer(this->Field(p, &w), rgb, a);
+      const double sigma = this->Sigma(a) * w;
       if (sigma <= 0)
       {
         continue;
@@ -421,9 +451,32 @@ bool vtkPlumeVolumeReference::Compute(int width, int height)
     }
     s.Values[i] = v;
   }
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (double v : s.Values)
+  // valid-point mask: nodes outside the data are left out of everything
+  vtkDataArray* mask = this->ValidMaskArrayName.empty()
+    ? nullptr
+    : image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str());
+  if (mask && mask->GetNumberOfComponents() == 1 && mask->GetNumberOfTuples() == n)
   {
+    s.Valid.resize(n);
+    bool any = false;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      s.Valid[i] = mask->GetComponent(i, 0) != 0.0 ? 1 : 0;
+      any = any || !s.Valid[i];
+    }
+    if (!any)
+    {
+      s.Valid.clear();
+    }
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = s.Values[i];
+    if (!s.Valid.empty() && !s.Valid[i])
+    {
+      continue;
+    }
     if (std::isfinite(v))
     {
       lo = std::min(lo, v);

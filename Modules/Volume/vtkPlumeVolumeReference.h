@@ -19,7 +19,10 @@
  * central-difference normal (one voxel) and Phong lighting; smoke =
  * ∫ c (ka + kd Σ I_l T_l) σ T dt with T_l the transmittance towards light l
  * (ShadowStep voxels). NaN scalars count as the finite minimum, ±Inf as the
- * finite ends; a one-node axis is a slab one spacing thick.
+ * finite ends; a one-node axis is a slab one spacing thick. With a valid-point
+ * mask (ValidMaskArrayName), values are interpolated over the valid nodes
+ * only, extinction is scaled by their total trilinear weight w, and MIP and
+ * isosurface use only samples with w > 0; the range covers valid nodes.
  *
  * Optionally the rays stop at an opaque depth image (window depth 0..1 per
  * pixel, as read back from the scene without the volume).
@@ -62,6 +65,8 @@ public:
   void SetArrayName(const std::string& name) { this->ArrayName = name; }
   /** Component; -1 (default) = the only component or the magnitude. */
   void SetScalarComponent(int c) { this->ScalarComponent = c; }
+  /** Point array whose zeros mark nodes outside the data (as the mapper's); default "vtkValidPointMask", "" = none. */
+  void SetValidMaskArrayName(const std::string& name) { this->ValidMaskArrayName = name; }
   /** The volume: its property (transfer functions, lighting) and transform. */
   void SetVolume(vtkVolume* volume);
   /** The renderer: active camera and lights. */
@@ -103,6 +108,7 @@ protected:
   vtkSmartPointer<vtkRenderer> Renderer;
   std::string ArrayName;
   int ScalarComponent = -1;
+  std::string ValidMaskArrayName = "vtkValidPointMask";
   int Mode = COMPOSITE;
   double IsoValue;
   double Step = 0.125;

@@ -15,11 +15,15 @@
 //                    (blocks whose range misses the iso value by PLUME_ISO_MARGIN
 //                    on the side the ray already is)
 //   SHADE            composite with gradient (Phong) shading of every sample
+//   MASK | NOMASK    the volume texture is (u w, w), w = 1 at nodes inside the
+//                    data (valid-point mask), 0 outside: values are r / g, over
+//                    the valid nodes only, and extinction is weighted by g, so
+//                    the data fades out over its last voxel | a plain u texture
 // Values (#define): PLUME_LIGHTS n (lit modes), PLUME_ISO_MARGIN (SKIP_ISO).
 
 //PLUME::Defines
 
-uniform sampler3D Volume;           // normalised scalar u in [0, 1]
+uniform sampler3D Volume;           // normalised scalar u in [0, 1] (MASK: u w, w)
 uniform sampler2D TransferFunction; // 1 row: rgb = colour, a = extinction per world unit, over u
 uniform float TFSize;
 uniform vec3 Dims;
@@ -77,10 +81,25 @@ uniform vec3 LightColor[PLUME_LIGHTS];     // colour x intensity
 
 // textureLod: the look-ups run in non-uniform control flow (the ray loop),
 // where implicit derivatives are undefined; the textures have no mipmaps
+//PLUME::IF NOMASK
 float sampleU(vec3 p)
 {
   return textureLod(Volume, (p + 0.5) / Dims, 0.0).r;
 }
+//PLUME::ENDIF
+//PLUME::IF MASK
+// (u over the valid nodes, their interpolation weight w); no valid node: (0, 0)
+vec2 sampleUW(vec3 p)
+{
+  vec2 s = textureLod(Volume, (p + 0.5) / Dims, 0.0).rg;
+  return vec2(s.g > 0.0 ? s.r / s.g : 0.0, s.g);
+}
+
+float sampleU(vec3 p)
+{
+  return sampleUW(p).x;
+}
+//PLUME::ENDIF
 
 vec4 transfer(float u)
 {
@@ -121,6 +140,20 @@ float jitter()
 //PLUME::ENDIF
 
 //PLUME::IF SMOKE
+// extinction per world unit at p (index space), weighted by the valid nodes with MASK
+float sampleExtinction(vec3 p)
+{
+//PLUME::ENDIF
+//PLUME::IF SMOKE_NOMASK
+  return extinction(sampleU(p));
+//PLUME::ENDIF
+//PLUME::IF SMOKE_MASK
+  vec2 uw = sampleUW(p);
+  return extinction(uw.x) * uw.y;
+//PLUME::ENDIF
+//PLUME::IF SMOKE
+}
+
 // transmittance from p (index space) towards light l, through the box
 float lightTransmittance(vec3 p, int l)
 {
@@ -136,7 +169,7 @@ float lightTransmittance(vec3 p, int l)
   float tau = 0.0;
   for (int k = 0; k < n; ++k)
   {
-    tau += extinction(sampleU(p + (float(k) + 0.5) * h * e));
+    tau += sampleExtinction(p + (float(k) + 0.5) * h * e);
     if (tau * h * LightWorldPerIndex[l] > 10.0)
     {
       return 0.0;
@@ -218,6 +251,12 @@ void main()
 //PLUME::IF ISO
   float tPrev = t.x;
   float fPrev = sampleU(p0 + t.x * d) - IsoValue;
+  bool prevInside = true; // the previous sample is inside the data
+//PLUME::ENDIF
+//PLUME::IF ISO_MASK
+  prevInside = sampleUW(p0 + t.x * d).y > 0.0;
+//PLUME::ENDIF
+//PLUME::IF ISO
   bool hit = false;
   float tHit = 0.0;
 //PLUME::ENDIF
@@ -295,10 +334,18 @@ void main()
       occupiedUntil = max(te, tm); // no more look-ups until the ray leaves the block
     }
 //PLUME::ENDIF
+//PLUME::IF NOMASK
     float u = sampleU(p);
+    float w = 1.0;
+//PLUME::ENDIF
+//PLUME::IF MASK
+    vec2 uw = sampleUW(p);
+    float u = uw.x;
+    float w = uw.y; // weight of the valid nodes: the data fades out over its last voxel
+//PLUME::ENDIF
 //PLUME::IF COMPOSITE
     vec4 c = transfer(u);
-    float alpha = 1.0 - exp(-c.a * (s1 - s0) * worldPerT);
+    float alpha = 1.0 - exp(-c.a * w * (s1 - s0) * worldPerT);
 //PLUME::ENDIF
 //PLUME::IF SHADE
     if (alpha > 0.0)
@@ -316,7 +363,7 @@ void main()
 //PLUME::ENDIF
 //PLUME::IF SMOKE
     vec4 c = transfer(u);
-    float sigma = c.a;
+    float sigma = c.a * w;
     if (sigma > 0.0)
     {
       float alpha = 1.0 - exp(-sigma * (s1 - s0) * worldPerT);
@@ -334,11 +381,12 @@ void main()
     }
 //PLUME::ENDIF
 //PLUME::IF MIP
-    uMax = max(uMax, u);
+    uMax = w > 0.0 ? max(uMax, u) : uMax; // samples with no valid node around do not count
 //PLUME::ENDIF
 //PLUME::IF ISO
     float f = u - IsoValue;
-    if ((fPrev < 0.0) != (f < 0.0))
+    bool inside = w > 0.0; // a crossing needs two samples with valid nodes around
+    if (inside && prevInside && (fPrev < 0.0) != (f < 0.0))
     {
       // bisection between the previous sample and this one
       float ta = tPrev, tb = tm;
@@ -359,8 +407,12 @@ void main()
       tHit = 0.5 * (ta + tb);
       break;
     }
-    tPrev = tm;
-    fPrev = f;
+    if (inside)
+    {
+      tPrev = tm;
+      fPrev = f;
+    }
+    prevInside = inside;
 //PLUME::ENDIF
     s0 = s1;
     s1 = min(s0 + dt, t.y);

@@ -180,6 +180,7 @@ inline Result CompareWithReference(Scene& s, int mode, double referenceStep = 0.
   reference->SetMode(mode);
   reference->SetIsoValue(s.Mapper->GetIsoValue());
   reference->SetScalarComponent(s.Mapper->GetScalarComponent());
+  reference->SetValidMaskArrayName(s.Mapper->GetValidMaskArrayName());
   if (s.Mapper->GetArrayAccessMode() == VTK_GET_ARRAY_BY_NAME && s.Mapper->GetArrayName())
   {
     reference->SetArrayName(s.Mapper->GetArrayName());
