@@ -67,6 +67,14 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   {
     throw plume::SceneError("output '" + output + "': unknown image format '" + ext + "' (use .png or .exr)");
   }
+  {
+    // checked before any (possibly long) rendering
+    std::string folder = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(output));
+    if (!vtksys::SystemTools::FileIsDirectory(folder) || access(folder.c_str(), W_OK) != 0)
+    {
+      throw plume::SceneError("output '" + output + "': folder '" + folder + "' does not exist or is not writable");
+    }
+  }
   const nlohmann::json scene = plume::Scene::ReadFile(scenePath);
   std::string directory = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(scenePath));
   vtkNew<vtkRenderer> renderer;

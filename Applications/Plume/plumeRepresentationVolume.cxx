@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace plume
@@ -81,7 +82,23 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   }
   const int rangeComponent = component >= 0 ? component : (array->GetNumberOfComponents() == 1 ? 0 : -1);
   // resampled data: the nodes outside it are left out of the range (the mapper draws nothing there)
-  auto table = coloring.Table(array, rangeComponent, image->GetPointData()->GetArray("vtkValidPointMask"));
+  vtkDataArray* mask = image->GetPointData()->GetArray("vtkValidPointMask");
+  auto table = coloring.Table(array, rangeComponent, mask);
+  if (mask && mask->GetNumberOfComponents() == 1)
+  {
+    vtkIdType valid = 0;
+    for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
+    {
+      valid += mask->GetComponent(i, 0) != 0.0 ? 1 : 0;
+    }
+    if (valid * 100 < mask->GetNumberOfTuples())
+    {
+      // e.g. a surface mesh: resampling finds almost no point inside its cells
+      std::cerr << "plume: warning: " << p.Where() << ": only " << valid << " of " << mask->GetNumberOfTuples()
+                << " resampled points of dataset '" << dataset
+                << "' lie inside its cells (a surface or very thin data has no volume); little will show\n";
+    }
+  }
   const double* range = table->GetRange();
 
   vtkNew<vtkVolume> volume;
@@ -151,6 +168,11 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   {
     mapper->SetBlendModeToIsoSurface();
     mapper->SetIsoValue(hasIso ? iso : 0.5 * (range[0] + range[1]));
+    if (hasIso && (iso < range[0] || iso > range[1]))
+    {
+      std::cerr << "plume: warning: " << p.Where() << ": 'iso_value' " << iso << " is outside the data range ["
+                << range[0] << ", " << range[1] << "]: no surface will show\n";
+    }
   }
   else if (mode == "smoke")
   {

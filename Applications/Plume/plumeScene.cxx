@@ -90,6 +90,16 @@ SceneDatasets::SceneDatasets(const nlohmann::json* datasets, std::string sceneDi
   }
 }
 
+namespace
+{
+// the shared data folder: $PLUME_DATA_DIR, else the configured default
+std::string DataFolder()
+{
+  const char* env = std::getenv("PLUME_DATA_DIR");
+  return (env && *env) ? std::string(env) : std::string(PLUME_DATA_DIR);
+}
+}
+
 std::string SceneDatasets::Resolve(const std::string& path) const
 {
   if (vtksys::SystemTools::FileIsFullPath(path))
@@ -101,9 +111,7 @@ std::string SceneDatasets::Resolve(const std::string& path) const
   {
     return local;
   }
-  const char* env = std::getenv("PLUME_DATA_DIR");
-  const std::string data = (env && *env) ? std::string(env) : std::string(PLUME_DATA_DIR);
-  const std::string shared = data + "/" + path;
+  const std::string shared = DataFolder() + "/" + path;
   if (vtksys::SystemTools::FileExists(shared))
   {
     return shared;
@@ -169,7 +177,16 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   {
     throw SceneError("datasets." + name + ": 'path' is required (a file relative to the scene or to the data folder)");
   }
-  reader->SetFileName(this->Resolve(path).c_str());
+  const std::string resolved = this->Resolve(path);
+  if (!vtksys::SystemTools::FileIsFullPath(path) && !vtksys::SystemTools::FileExists(resolved))
+  {
+    // both places a relative path is looked up in, so a wrong PLUME_DATA_DIR shows
+    const char* env = std::getenv("PLUME_DATA_DIR");
+    throw SceneError("datasets." + name + ": file not found: '" + path + "' is neither in the scene's folder (" +
+      this->SceneDirectory + ") nor in the data folder (" + DataFolder() +
+      (env && *env ? ", from PLUME_DATA_DIR" : ", the default; set PLUME_DATA_DIR to change it") + ")");
+  }
+  reader->SetFileName(resolved.c_str());
   if (p.Has("q_path"))
   {
     reader->SetQFileName(this->Resolve(p.String("q_path", "")).c_str());
