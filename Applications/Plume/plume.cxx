@@ -235,7 +235,7 @@ int main(int argc, char* argv[])
   bool json = false, noMerge = false;
   std::vector<std::string> blocks;
   info->add_option("file", file, "dataset file (any format VTK reads)")->required();
-  info->add_option("--reader", readerName, "reader: legacy, xml, pvd, plot3d, exodus, ensight, openfoam, cgns");
+  info->add_option("--reader", readerName, "reader: legacy, xml, pvd, plot3d, exodus, ensight, openfoam, cgns, vrml");
   info->add_option("--q", qFile, "PLOT3D solution file (default: guessed from the grid file)");
   info->add_option("--time-step", timeStep, "time step index (default 0)")->check(CLI::NonNegativeNumber);
   info->add_option("--block", blocks, "only these blocks (repeatable)");

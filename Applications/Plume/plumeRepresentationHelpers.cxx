@@ -62,7 +62,8 @@ vtkDataArray* RequirePointArray(
   {
     throw SceneError(where + ": point array '" + std::string(array->GetName() ? array->GetName() : name) +
       "' of dataset '" + dataset + "' has " + std::to_string(array->GetNumberOfComponents()) +
-      " components, expected " + std::to_string(components));
+      (array->GetNumberOfComponents() == 1 ? " component" : " components") + ", expected " +
+      std::to_string(components));
   }
   return array;
 }
