@@ -273,7 +273,14 @@ int main(int argc, char* argv[])
     else if (*info)
     {
       vtkNew<vtkPlumeDatasetReader> reader;
-      reader->SetFileName(file.c_str());
+      // a relative path not found here is looked up in the data folder, as in scenes
+      std::string path = file;
+      if (!vtksys::SystemTools::FileIsFullPath(path) && !vtksys::SystemTools::FileExists(path) &&
+        vtksys::SystemTools::FileExists(plume::DataFolder() + "/" + path))
+      {
+        path = plume::DataFolder() + "/" + path;
+      }
+      reader->SetFileName(path.c_str());
       reader->SetReaderName(readerName.c_str());
       if (!qFile.empty())
       {

@@ -90,14 +90,10 @@ SceneDatasets::SceneDatasets(const nlohmann::json* datasets, std::string sceneDi
   }
 }
 
-namespace
-{
-// the shared data folder: $PLUME_DATA_DIR, else the configured default
 std::string DataFolder()
 {
   const char* env = std::getenv("PLUME_DATA_DIR");
   return (env && *env) ? std::string(env) : std::string(PLUME_DATA_DIR);
-}
 }
 
 std::string SceneDatasets::Resolve(const std::string& path) const

@@ -25,6 +25,9 @@ class Parameters;
 double MemoryBudgetBytes();
 
 /** Datasets of a scene, loaded once each, by name. */
+/** The shared data folder: $PLUME_DATA_DIR if set, else the configured default. */
+std::string DataFolder();
+
 class SceneDatasets
 {
 public:
