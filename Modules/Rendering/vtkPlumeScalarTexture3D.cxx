@@ -109,7 +109,8 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
     std::max({ image->GetMTime(), array->GetMTime(), mask ? mask->GetMTime() : vtkMTimeType(0) });
   if (this->Texture->GetContext() == window && this->Texture->GetHandle() &&
     this->UploadedImage == image && this->UploadedArray == array &&
-    this->UploadedComponent == component && this->UploadedTime == time && this->UploadedMask == mask)
+    this->UploadedComponent == component && this->UploadedTime == time && this->UploadedMask == mask &&
+    this->UploadedGradients == this->Gradients)
   {
     return true;
   }
@@ -234,6 +235,29 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
     }
     u.swap(uw);
   }
+  const bool gradients = this->Gradients && !masked;
+  if (gradients)
+  {
+    // (u, central differences along x, y, z): see the class documentation
+    std::vector<float> ug(4 * static_cast<size_t>(n));
+    const size_t sx = 1, sy = static_cast<size_t>(dims[0]), sz = sy * dims[1];
+    for (int k = 0; k < dims[2]; ++k)
+    {
+      for (int j = 0; j < dims[1]; ++j)
+      {
+        for (int i = 0; i < dims[0]; ++i)
+        {
+          const size_t id = i + sy * j + sz * k;
+          ug[4 * id] = u[id];
+          ug[4 * id + 1] = u[id + (i + 1 < dims[0] ? sx : 0)] - u[id - (i > 0 ? sx : 0)];
+          ug[4 * id + 2] = u[id + (j + 1 < dims[1] ? sy : 0)] - u[id - (j > 0 ? sy : 0)];
+          ug[4 * id + 3] = u[id + (k + 1 < dims[2] ? sz : 0)] - u[id - (k > 0 ? sz : 0)];
+        }
+      }
+    }
+    u.swap(ug);
+  }
+  const int channels = masked ? 2 : (gradients ? 4 : 1);
 
   this->Texture->SetContext(window);
   // the format is cached by the texture object: one or two channels per upload
@@ -243,11 +267,11 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
   this->Texture->SetWrapR(vtkTextureObject::ClampToEdge);
   this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
   this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  if (!this->Texture->Create3DFromRaw(dims[0], dims[1], dims[2], masked ? 2 : 1, VTK_FLOAT, u.data()))
+  if (!this->Texture->Create3DFromRaw(dims[0], dims[1], dims[2], channels, VTK_FLOAT, u.data()))
   {
     std::ostringstream msg;
     msg << "could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
-        << (masked ? " RG32F" : " R32F") << " 3D texture";
+        << (masked ? " RG32F" : (gradients ? " RGBA32F" : " R32F")) << " 3D texture";
     this->LastError = msg.str();
     this->UploadedImage = nullptr;
     return false;
@@ -264,7 +288,7 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
     const size_t blocks =
       static_cast<size_t>(this->BlockDimensions[0]) * this->BlockDimensions[1] * this->BlockDimensions[2];
     this->BlockRanges.resize(2 * blocks);
-    const size_t ch = masked ? 2 : 1; // channels per node in u
+    const size_t ch = static_cast<size_t>(channels); // per node in u
     for (int bk = 0; bk < this->BlockDimensions[2]; ++bk)
     {
       for (int bj = 0; bj < this->BlockDimensions[1]; ++bj)
@@ -305,6 +329,8 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
   this->UploadedTime = time;
   this->UploadedMask = mask;
   this->Masked = masked;
+  this->HasGradients = gradients;
+  this->UploadedGradients = this->Gradients;
   ++this->UploadCount;
   return true;
 }

@@ -98,6 +98,24 @@ public:
   vtkGetMacro(BlockSize, int);
   ///@}
 
+  ///@{
+  /**
+   * Also store central differences (GL_RGBA32F: r = u, gba = u[i+1] - u[i-1]
+   * along x, y, z, the neighbours clamped to the grid as the texture's
+   * clamp-to-edge does). Because trilinear interpolation is linear, the
+   * filtered gba at any point equals the central difference (one voxel each
+   * way) of the filtered u there, so a shader gets the gradient in one
+   * look-up instead of six. Ignored for masked uploads (see GetMasked; their
+   * values are normalised per sample, r / g). 4x the memory. Default off;
+   * a change re-uploads.
+   */
+  vtkSetMacro(Gradients, bool);
+  vtkGetMacro(Gradients, bool);
+  ///@}
+
+  /** True if the last upload stored gradients (RGBA32F: u, du/dx, du/dy, du/dz, central differences). */
+  bool GetHasGradients() const { return this->HasGradients; }
+
   /** Number of blocks along each axis (ceil((dims - 1) / B), at least 1). */
   const int* GetBlockDimensions() const { return this->BlockDimensions; }
 
@@ -126,6 +144,8 @@ protected:
   long long NonFiniteCount = 0;
   int UploadCount = 0;
   int BlockSize = 8;
+  bool Gradients = false;
+  bool HasGradients = false;
   int BlockDimensions[3] = { 0, 0, 0 };
   std::vector<float> BlockRanges;
   std::string LastError;
@@ -137,6 +157,7 @@ protected:
   vtkMTimeType UploadedTime = 0;
   vtkDataArray* UploadedMask = nullptr;
   bool Masked = false;
+  bool UploadedGradients = false;
 
 private:
   vtkPlumeScalarTexture3D(const vtkPlumeScalarTexture3D&) = delete;

@@ -159,17 +159,17 @@ int vtkPlumeVolumeMapper::GetUploadCount()
 }
 
 //------------------------------------------------------------------------------
-double vtkPlumeVolumeMapper::GetTextureBytes(const int dimensions[3], bool masked)
+double vtkPlumeVolumeMapper::GetTextureBytes(const int dimensions[3], bool masked, bool shaded)
 {
-  // R32F scalars (RG32F with a valid-point mask) + the 8-bit block occupancy
-  // and RG32F block ranges (8³ blocks)
+  // R32F scalars (RG32F with a valid-point mask, else RGBA32F when shaded:
+  // value and gradient) + the 8-bit block occupancy and RG32F block ranges (8³ blocks)
   const double nodes = double(std::max(dimensions[0], 1)) * std::max(dimensions[1], 1) * std::max(dimensions[2], 1);
   double blocks = 1;
   for (int a = 0; a < 3; ++a)
   {
     blocks *= std::max(1, (dimensions[a] - 1 + 7) / 8);
   }
-  return (masked ? 8.0 : 4.0) * nodes + 9.0 * blocks;
+  return (masked ? 8.0 : (shaded ? 16.0 : 4.0)) * nodes + 9.0 * blocks;
 }
 
 //------------------------------------------------------------------------------
@@ -282,7 +282,8 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     image->GetDimensions(dims);
     // (a mask array present: counted as masked, two channels)
     const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims,
-      !this->ValidMaskArrayName.empty() && image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str()));
+      !this->ValidMaskArrayName.empty() && image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str()),
+      this->BlendMode == COMPOSITE_BLEND && !this->Smoke && vol->GetProperty()->GetShade(0) != 0);
     if (bytes > this->EffectiveTextureMemoryBudgetMB * Megabyte)
     {
       std::ostringstream msg;
@@ -295,6 +296,10 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // ---- 3D texture (only when the data changed)
+  // shaded composite: the gradient comes with the value, one look-up per sample
+  // (a 4-channel texture; see vtkPlumeScalarTexture3D::SetGradients)
+  impl.Scalars->SetGradients(this->BlendMode == COMPOSITE_BLEND && !this->Smoke &&
+    vol->GetProperty()->GetShade(0) != 0);
   // nodes outside the data (valid-point mask): a (u w, w) texture, see vtkPlumeScalarTexture3D
   vtkDataArray* mask = this->ValidMaskArrayName.empty()
     ? nullptr
@@ -628,6 +633,14 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     const std::string maskFeature = impl.Scalars->GetMasked() ? "MASK" : "NOMASK";
     enabled.insert(maskFeature);
     enabled.insert(mode.substr(6) + "_" + maskFeature); // e.g. SMOKE_MASK
+    if (!impl.Scalars->GetMasked())
+    {
+      enabled.insert(impl.Scalars->GetHasGradients() ? "GRADIENT" : "PLAIN");
+    }
+    if (shade && !impl.Scalars->GetHasGradients())
+    {
+      enabled.insert("SHADE_NOGRADIENT");
+    }
   }
   if (skipTransparent || rangeSkipping)
   {

@@ -216,8 +216,12 @@ public:
   /** The budget that applied at the last render, MB (the automatic value when TextureMemoryBudgetMB is 0). */
   vtkGetMacro(EffectiveTextureMemoryBudgetMB, double);
 
-  /** Bytes of GPU texture memory the mapper needs for an image of these point dimensions (masked: with a valid-point mask). */
-  static double GetTextureBytes(const int dimensions[3], bool masked = false);
+  /**
+   * Bytes of GPU texture memory the mapper needs for an image of these point
+   * dimensions: 4 per point, 8 with a valid-point mask (masked), 16 for shaded
+   * composite without one (shaded: the gradient is stored with the value).
+   */
+  static double GetTextureBytes(const int dimensions[3], bool masked = false, bool shaded = false);
 
   /** Number of 3D-texture uploads so far (tests check re-renders do not upload). */
   int GetUploadCount();

@@ -15,6 +15,9 @@
 //                    (blocks whose range misses the iso value by PLUME_ISO_MARGIN
 //                    on the side the ray already is)
 //   SHADE            composite with gradient (Phong) shading of every sample
+//   PLAIN | GRADIENT (both with NOMASK) the volume texture is u | (u, central
+//                    differences along x, y, z) for shading in one look-up;
+//                    SHADE_NOGRADIENT: SHADE takes six look-ups instead
 //   MASK | NOMASK    the volume texture is (u w, w), w = 1 at nodes inside the
 //                    data (valid-point mask), 0 outside: values are r / g, over
 //                    the valid nodes only, and extinction is weighted by g, so
@@ -179,14 +182,28 @@ float lightTransmittance(vec3 p, int l)
 }
 //PLUME::ENDIF
 
-//PLUME::IF ISO SHADE
-// Phong lighting of colour `base` at index-space point p: normal from central
-// differences (one voxel), turned towards the viewer; zero gradient: facing the viewer
-vec3 phong(vec3 base, vec3 p, vec3 viewDir)
+//PLUME::IF GRADIENT
+// (u, its central differences along x, y, z) at index-space point p
+vec4 sampleUG(vec3 p)
 {
-  vec3 g = vec3(sampleU(p + vec3(1, 0, 0)) - sampleU(p - vec3(1, 0, 0)),
+  return textureLod(Volume, (p + 0.5) / Dims, 0.0);
+}
+//PLUME::ENDIF
+//PLUME::IF ISO SHADE_NOGRADIENT
+// central differences (one voxel each way) of u at index-space point p
+vec3 gradientAt(vec3 p)
+{
+  return vec3(sampleU(p + vec3(1, 0, 0)) - sampleU(p - vec3(1, 0, 0)),
     sampleU(p + vec3(0, 1, 0)) - sampleU(p - vec3(0, 1, 0)),
     sampleU(p + vec3(0, 0, 1)) - sampleU(p - vec3(0, 0, 1)));
+}
+//PLUME::ENDIF
+
+//PLUME::IF ISO SHADE
+// Phong lighting of colour `base` with index-space gradient g (central
+// differences), normal turned towards the viewer; zero gradient: facing the viewer
+vec3 phong(vec3 base, vec3 g, vec3 viewDir)
+{
   vec3 n = NormalToWorld * g;
   float len = length(n);
   n = len > 1e-20 ? n / len : viewDir;
@@ -334,8 +351,13 @@ void main()
       occupiedUntil = max(te, tm); // no more look-ups until the ray leaves the block
     }
 //PLUME::ENDIF
-//PLUME::IF NOMASK
+//PLUME::IF PLAIN
     float u = sampleU(p);
+    float w = 1.0;
+//PLUME::ENDIF
+//PLUME::IF GRADIENT
+    vec4 ug = sampleUG(p);
+    float u = ug.r;
     float w = 1.0;
 //PLUME::ENDIF
 //PLUME::IF MASK
@@ -350,7 +372,14 @@ void main()
 //PLUME::IF SHADE
     if (alpha > 0.0)
     {
-      c.rgb = phong(c.rgb, p, viewDir);
+//PLUME::ENDIF
+//PLUME::IF GRADIENT
+      c.rgb = phong(c.rgb, ug.gba, viewDir);
+//PLUME::ENDIF
+//PLUME::IF SHADE_NOGRADIENT
+      c.rgb = phong(c.rgb, gradientAt(p), viewDir);
+//PLUME::ENDIF
+//PLUME::IF SHADE
     }
 //PLUME::ENDIF
 //PLUME::IF COMPOSITE
@@ -435,7 +464,7 @@ void main()
   {
     discard;
   }
-  vec3 color = phong(transfer(IsoValue).rgb, p0 + tHit * d, viewDir);
+  vec3 color = phong(transfer(IsoValue).rgb, gradientAt(p0 + tHit * d), viewDir);
   dst = vec4(color, 1.0);
 //PLUME::ENDIF
   if (dst.a <= 0.0)
