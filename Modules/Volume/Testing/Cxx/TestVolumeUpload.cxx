@@ -1,6 +1,7 @@
 // Skip what did not change: re-rendering uploads neither the 3D texture nor
 // the transfer-function table; touching the data re-uploads the texture only;
-// editing a transfer function re-tabulates only; and the image changes.
+// editing a transfer function re-tabulates only; and the image changes;
+// switching shading on or off re-uploads once (the gradient channels).
 #include "plumeVolumeTestUtil.h"
 
 int TestVolumeUpload(int, char*[])
@@ -40,5 +41,14 @@ int TestVolumeUpload(int, char*[])
     std::printf("FAIL: editing the opacity did not change the image\n");
     ++failures;
   }
+  // shading stores the gradient with the value (one re-upload each way), then
+  // nothing (the table follows the property's MTime, as for any property edit)
+  s.Volume->GetProperty()->ShadeOn();
+  s.Window->Render();
+  s.Window->Render();
+  expect("shading on (gradients), two frames", 4, 4);
+  s.Volume->GetProperty()->ShadeOff();
+  s.Window->Render();
+  expect("shading off", 5, 5);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
