@@ -110,7 +110,7 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
   if (this->Texture->GetContext() == window && this->Texture->GetHandle() &&
     this->UploadedImage == image && this->UploadedArray == array &&
     this->UploadedComponent == component && this->UploadedTime == time && this->UploadedMask == mask &&
-    this->UploadedGradients == this->Gradients)
+    (this->Masked || this->UploadedGradients == this->Gradients)) // (masked: no gradients either way)
   {
     return true;
   }

@@ -161,15 +161,16 @@ int vtkPlumeVolumeMapper::GetUploadCount()
 //------------------------------------------------------------------------------
 double vtkPlumeVolumeMapper::GetTextureBytes(const int dimensions[3], bool masked, bool shaded)
 {
-  // R32F scalars (RG32F with a valid-point mask, else RGBA32F when shaded:
-  // value and gradient) + the 8-bit block occupancy and RG32F block ranges (8³ blocks)
+  // R32F scalars, RG32F with a valid-point mask, RGBA32F when shaded without
+  // one (value and gradient; counted whenever shaded: an upper bound) + the
+  // 8-bit block occupancy and RG32F block ranges (8³ blocks)
   const double nodes = double(std::max(dimensions[0], 1)) * std::max(dimensions[1], 1) * std::max(dimensions[2], 1);
   double blocks = 1;
   for (int a = 0; a < 3; ++a)
   {
     blocks *= std::max(1, (dimensions[a] - 1 + 7) / 8);
   }
-  return (masked ? 8.0 : (shaded ? 16.0 : 4.0)) * nodes + 9.0 * blocks;
+  return (shaded ? 16.0 : (masked ? 8.0 : 4.0)) * nodes + 9.0 * blocks;
 }
 
 //------------------------------------------------------------------------------
@@ -280,9 +281,13 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     int dims[3];
     image->GetDimensions(dims);
-    // (a mask array present: counted as masked, two channels)
-    const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims,
-      !this->ValidMaskArrayName.empty() && image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str()),
+    // masked: a one-component mask whose (cached) range includes 0
+    vtkDataArray* maskArray = this->ValidMaskArrayName.empty()
+      ? nullptr
+      : image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str());
+    const bool maybeMasked = maskArray && maskArray->GetNumberOfComponents() == 1 &&
+      maskArray->GetRange(0)[0] <= 0.0 && maskArray->GetRange(0)[1] >= 0.0;
+    const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims, maybeMasked,
       this->BlendMode == COMPOSITE_BLEND && !this->Smoke && vol->GetProperty()->GetShade(0) != 0);
     if (bytes > this->EffectiveTextureMemoryBudgetMB * Megabyte)
     {
@@ -646,6 +651,10 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     enabled.insert("SKIP");
     enabled.insert(skipTransparent ? "SKIP_TRANSPARENT" : (mode == "PLUME_MIP" ? "SKIP_MIP" : "SKIP_ISO"));
+    if (!skipTransparent && mode == "PLUME_ISO" && impl.Scalars->GetMasked())
+    {
+      enabled.insert("SKIP_ISO_MASK");
+    }
   }
   if (rangeSkipping && mode == "PLUME_ISO")
   {

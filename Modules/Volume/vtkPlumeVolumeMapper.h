@@ -94,11 +94,13 @@ public:
   /**
    * Point array whose zeros mark nodes outside the data (vtkResampleToImage
    * writes one when it resamples unstructured data). Those nodes draw nothing
-   * and are left out of the scalar range; the volume fades to nothing over
-   * the last voxel at the data's boundary (the first transfer-function table
-   * entry is transparent). Ignored when the input has no such array. Default
-   * "vtkValidPointMask". (The isosurface mode treats them as below every
-   * value, so a surface may close where the data ends.)
+   * and are left out of the scalar range: a sample's value is interpolated
+   * over the valid nodes around it only, and its extinction is scaled by their
+   * total trilinear weight, so the data fades out over its last voxel without
+   * blending in the values outside it. MIP and isosurface use samples with
+   * valid nodes around; an isosurface is left open where the data ends (a
+   * crossing needs two such samples). Ignored when the input has no such
+   * array. Default "vtkValidPointMask". Costs a second texture channel.
    */
   vtkSetStdStringFromCharMacro(ValidMaskArrayName);
   vtkGetCharFromStdStringMacro(ValidMaskArrayName);
@@ -219,7 +221,8 @@ public:
   /**
    * Bytes of GPU texture memory the mapper needs for an image of these point
    * dimensions: 4 per point, 8 with a valid-point mask (masked), 16 for shaded
-   * composite without one (shaded: the gradient is stored with the value).
+   * composite (shaded: the gradient is stored with the value; counted even
+   * with a mask, which stores none: an upper bound).
    */
   static double GetTextureBytes(const int dimensions[3], bool masked = false, bool shaded = false);
 

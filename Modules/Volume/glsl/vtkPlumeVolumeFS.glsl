@@ -12,6 +12,7 @@
 //   SKIP             empty-space skipping, with one of: SKIP_TRANSPARENT
 //                    (composite/smoke: jump over transparent blocks), SKIP_MIP
 //                    (blocks whose max is not above the running max), SKIP_ISO
+//                    (with MASK also SKIP_ISO_MASK)
 //                    (blocks whose range misses the iso value by PLUME_ISO_MARGIN
 //                    on the side the ray already is)
 //   SHADE            composite with gradient (Phong) shading of every sample
@@ -344,6 +345,11 @@ void main()
 //PLUME::IF SKIP_ISO
         // the bisection starts at the last skipped sample, as without skipping
         tPrev = m >= 2.0 ? segBase + (m - 1.5) * dt : 0.5 * (t.x + min(segBase, t.y));
+//PLUME::ENDIF
+//PLUME::IF SKIP_ISO_MASK
+        // ... and whether that sample has valid nodes around, as without skipping
+        // (its sign, if it has, is fPrev's: the block's range says so)
+        prevInside = sampleUW(p0 + tPrev * d).y > 0.0;
 //PLUME::ENDIF
 //PLUME::IF SKIP
         continue;

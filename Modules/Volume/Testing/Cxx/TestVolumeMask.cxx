@@ -214,6 +214,41 @@ int TestVolumeMask(int, char*[])
     }
   }
 
+  // isosurface across a gap in the data: below the iso value before it, above
+  // after it; no crossing has two samples with valid nodes around, so nothing
+  // is drawn, with empty-space skipping (which jumps the gap's blocks) or without
+  {
+    auto gap = Field(32, true);
+    vtkDataArray* v = gap->GetPointData()->GetScalars();
+    vtkDataArray* m = gap->GetPointData()->GetArray("vtkValidPointMask");
+    for (vtkIdType id = 0; id < v->GetNumberOfTuples(); ++id)
+    {
+      const int i = static_cast<int>(id % 32);
+      v->SetTuple1(id, i <= 8 ? 0.5 : (i >= 25 ? 1.5 : 0.0));
+      m->SetTuple1(id, i <= 8 || i >= 25 ? 1 : 0);
+    }
+    Scene g = MakeScene(gap, 96, 96);
+    configure(g);
+    vtkCamera* c = g.Renderer->GetActiveCamera();
+    c->SetPosition(-3.0, 0.5, 0.5); // rays along +x: through the low part, the gap, the high part
+    c->SetViewUp(0, 0, 1);
+    g.Mapper->SetBlendModeToIsoSurface();
+    g.Mapper->SetIsoValue(1.0);
+    g.Volume->SetVisibility(false);
+    const auto empty = plume::test::ReadBack(g.Window);
+    g.Volume->SetVisibility(true);
+    for (int skip = 0; skip < 2; ++skip)
+    {
+      g.Mapper->SetEmptySpaceSkipping(skip == 1);
+      const auto img = plume::test::ReadBack(g.Window);
+      const double drawn = plume::test::Compare(img, empty).Max;
+      std::printf("isosurface across a gap, skipping %s: largest difference from the empty frame %.4f\n",
+        skip ? "on" : "off", drawn);
+      PLUME_CHECK(drawn == 0.0);
+      PLUME_CHECK(plume::test::GLErrors(g.Window).empty());
+    }
+  }
+
   // editing the mask re-uploads: with every node valid the masked side shows the zeros' haze
   {
     full.Mapper->SetBlendModeToComposite();
