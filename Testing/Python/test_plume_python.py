@@ -5,6 +5,7 @@ import sys
 
 import vtk  # Debian's VTK 9.1 wrappers
 import plume
+from plume_test_window import offscreen_window
 
 data_dir = os.environ["PLUME_DATA_DIR"]
 
@@ -34,11 +35,7 @@ actor.SetMapper(mapper)
 renderer = vtk.vtkRenderer()
 renderer.AddActor(actor)
 renderer.SetBackground(0, 0, 0)
-window = vtk.vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetMultiSamples(0)
-window.SetSize(300, 200)
-window.AddRenderer(renderer)
+window = offscreen_window(renderer, 300, 200)
 renderer.ResetCamera()
 window.Render()
 

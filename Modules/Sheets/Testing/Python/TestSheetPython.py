@@ -8,6 +8,7 @@ import sys
 
 import vtk  # Debian's VTK 9.1 wrappers
 import plume
+from plume_test_window import offscreen_window, read_rgba
 
 W, H = 64, 48
 
@@ -46,11 +47,7 @@ actor.SetMapper(mapper)
 renderer = vtk.vtkRenderer()
 renderer.SetBackground(1, 1, 1)
 renderer.AddActor(actor)
-window = vtk.vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetMultiSamples(0)
-window.SetSize(W, H)
-window.AddRenderer(renderer)
+window = offscreen_window(renderer, W, H)
 camera = renderer.GetActiveCamera()
 camera.SetPosition(0.8, 1.1, 4.5)
 camera.SetFocalPoint(0, 0, 0)
@@ -59,20 +56,12 @@ camera.SetViewAngle(35)
 renderer.ResetCameraClippingRange()
 
 
-def read_back():
-    """Render and return the frame as a flat list of float RGBA (bottom row first)."""
-    window.Render()
-    rgba = vtk.vtkFloatArray()
-    window.GetRGBAPixelData(0, 0, W - 1, H - 1, 0, rgba)
-    return [rgba.GetValue(i) for i in range(rgba.GetNumberOfValues())]
-
-
 actor.SetVisibility(False)
-base = read_back()
+base = read_rgba(window)
 depth = vtk.vtkFloatArray()
 window.GetZbufferData(0, 0, W - 1, H - 1, depth)
 actor.SetVisibility(True)
-image = read_back()
+image = read_rgba(window)
 assert mapper.GetTriangleCount() == 3, mapper.GetTriangleCount()
 
 reference = plume.vtkPlumeSheetReference()

@@ -9,6 +9,7 @@ import sys
 
 import vtk  # Debian's VTK 9.1 wrappers
 import plume
+from plume_test_window import offscreen_window, read_rgba
 
 N, W, H = 32, 120, 100
 
@@ -63,21 +64,13 @@ configure(volume.GetProperty(), 0.05)
 renderer = vtk.vtkRenderer()
 renderer.SetBackground(0, 0, 0)
 renderer.AddVolume(volume)
-window = vtk.vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetMultiSamples(0)
-window.SetSize(W, H)
-window.AddRenderer(renderer)
+window = offscreen_window(renderer, W, H)
 camera = renderer.GetActiveCamera()
 camera.SetPosition(0.3, -0.4, 1.0)
 camera.SetFocalPoint(0, 0, 0)
 camera.SetViewUp(0, 1, 0)
 renderer.ResetCamera()
-window.Render()
-
-rgba = vtk.vtkFloatArray()
-window.GetRGBAPixelData(0, 0, W - 1, H - 1, 0, rgba, 0)
-rendered = [rgba.GetValue(i) for i in range(4 * W * H)]
+rendered = read_rgba(window)
 assert all(math.isfinite(v) for v in rendered), "non-finite pixel"
 
 
@@ -111,9 +104,8 @@ assert wrong > 0.005, "the comparison does not tell a wrong opacity from the rig
 errors = []
 mapper.AddObserver("ErrorEvent", lambda obj, event: errors.append(event))
 mapper.SetTextureMemoryBudgetMB(0.1)
-window.Render()
-window.GetRGBAPixelData(0, 0, W - 1, H - 1, 0, rgba, 0)
-lit = sum(1 for i in range(0, 4 * W * H, 4) if max(rgba.GetValue(i), rgba.GetValue(i + 1), rgba.GetValue(i + 2)) > 2 / 255)
+pixels = read_rgba(window)
+lit = sum(1 for i in range(0, 4 * W * H, 4) if max(pixels[i:i + 3]) > 2 / 255)
 print(f"budget 0.1 MB: {len(errors)} error(s), {lit} px drawn")
 assert len(errors) == 1 and lit == 0, "a volume over the budget must be refused, not drawn"
 print("OK")
