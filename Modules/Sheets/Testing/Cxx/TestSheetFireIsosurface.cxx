@@ -9,17 +9,14 @@
 #include "vtkContourFilter.h"
 #include "vtkPointData.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLUnstructuredGridReader.h"
 
 int TestSheetFireIsosurface(int, char*[])
 {
   sheettest::UseThreads();
   int failures = 0;
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(plume::test::DataPath("classic/fire_ug.vtu").c_str());
-  reader->Update();
-  vtkUnstructuredGrid* grid = reader->GetOutput();
-  if (!grid->GetPointData()->GetArray("mfrac") || !grid->GetPointData()->GetArray("t"))
+  const auto data = plume::test::LoadDataset("classic/fire_ug.vtu");
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!grid || !grid->GetPointData()->GetArray("mfrac") || !grid->GetPointData()->GetArray("t"))
   {
     std::cerr << "could not read classic/fire_ug.vtu (mfrac, t)\n";
     return EXIT_FAILURE;

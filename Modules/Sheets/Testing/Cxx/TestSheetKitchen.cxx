@@ -14,18 +14,15 @@
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkPointData.h"
-#include "vtkXMLPolyDataReader.h"
 
 int TestSheetKitchen(int, char*[])
 {
   sheettest::UseThreads();
   int failures = 0;
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(plume::test::DataPath("derived/kitchen_stream_sheet.vtp").c_str());
-  reader->Update();
-  vtkPolyData* sheet = reader->GetOutput();
-  vtkDataArray* time = sheet->GetPointData()->GetArray("IntegrationTime");
-  if (sheet->GetNumberOfPolys() < 1000 || !time || !sheet->GetPointData()->GetArray("c1"))
+  const auto data = plume::test::LoadDataset("derived/kitchen_stream_sheet.vtp");
+  vtkPolyData* sheet = vtkPolyData::SafeDownCast(data);
+  vtkDataArray* time = sheet ? sheet->GetPointData()->GetArray("IntegrationTime") : nullptr;
+  if (!sheet || sheet->GetNumberOfPolys() < 1000 || !time || !sheet->GetPointData()->GetArray("c1"))
   {
     std::cerr << "could not read derived/kitchen_stream_sheet.vtp (IntegrationTime, c1)\n";
     return EXIT_FAILURE;

@@ -3,17 +3,14 @@
 // on every fourth pixel in x and y (the reference is the slow part).
 #include "plumeSheetTestUtil.h"
 
-#include "vtkXMLPolyDataReader.h"
 
 int TestSheetRealMesh(int, char*[])
 {
   sheettest::UseThreads();
   int failures = 0;
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(plume::test::DataPath("derived/office_stream_sheet.vtp").c_str());
-  reader->Update();
-  vtkPolyData* mesh = reader->GetOutput();
-  if (mesh->GetNumberOfPolys() < 1000)
+  const auto data = plume::test::LoadDataset("derived/office_stream_sheet.vtp");
+  vtkPolyData* mesh = vtkPolyData::SafeDownCast(data);
+  if (!mesh || mesh->GetNumberOfPolys() < 1000)
   {
     std::cerr << "could not read derived/office_stream_sheet.vtp\n";
     return EXIT_FAILURE;
