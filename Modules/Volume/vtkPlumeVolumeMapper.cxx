@@ -278,17 +278,25 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   this->EffectiveTextureMemoryBudgetMB =
     this->TextureMemoryBudgetMB > 0 ? this->TextureMemoryBudgetMB : impl.AutomaticBudgetMB;
+  // nodes outside the data (valid-point mask, one component): a (u w, w)
+  // texture; shaded composite: the gradient comes with the value, one
+  // look-up per sample (RGBA). See vtkPlumeScalarTexture3D.
+  vtkDataArray* mask = this->ValidMaskArrayName.empty()
+    ? nullptr
+    : image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str());
+  if (mask && mask->GetNumberOfComponents() != 1)
+  {
+    mask = nullptr;
+  }
+  // (the composite mode also serves blend modes the mapper has no mode of its own for)
+  const bool shade = this->BlendMode != MAXIMUM_INTENSITY_BLEND && this->BlendMode != ISOSURFACE_BLEND &&
+    !this->Smoke && vol->GetProperty()->GetShade(0) != 0;
   {
     int dims[3];
     image->GetDimensions(dims);
-    // masked: a one-component mask whose (cached) range includes 0
-    vtkDataArray* maskArray = this->ValidMaskArrayName.empty()
-      ? nullptr
-      : image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str());
-    const bool maybeMasked = maskArray && maskArray->GetNumberOfComponents() == 1 &&
-      maskArray->GetRange(0)[0] <= 0.0 && maskArray->GetRange(0)[1] >= 0.0;
-    const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims, maybeMasked,
-      this->BlendMode == COMPOSITE_BLEND && !this->Smoke && vol->GetProperty()->GetShade(0) != 0);
+    // masked: the mask's (cached) range includes 0
+    const bool maybeMasked = mask && mask->GetRange(0)[0] <= 0.0 && mask->GetRange(0)[1] >= 0.0;
+    const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims, maybeMasked, shade);
     if (bytes > this->EffectiveTextureMemoryBudgetMB * Megabyte)
     {
       std::ostringstream msg;
@@ -301,18 +309,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // ---- 3D texture (only when the data changed)
-  // shaded composite: the gradient comes with the value, one look-up per sample
-  // (a 4-channel texture; see vtkPlumeScalarTexture3D::SetGradients)
-  impl.Scalars->SetGradients(this->BlendMode == COMPOSITE_BLEND && !this->Smoke &&
-    vol->GetProperty()->GetShade(0) != 0);
-  // nodes outside the data (valid-point mask): a (u w, w) texture, see vtkPlumeScalarTexture3D
-  vtkDataArray* mask = this->ValidMaskArrayName.empty()
-    ? nullptr
-    : image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str());
-  if (mask && mask->GetNumberOfComponents() != 1)
-  {
-    mask = nullptr;
-  }
+  impl.Scalars->SetGradients(shade);
   if (!impl.Scalars->Update(renWin, image, scalars, this->ScalarComponent, mask))
   {
     vtkErrorMacro(<< impl.Scalars->GetLastError());
@@ -607,7 +604,6 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     mode = "PLUME_SMOKE";
   }
-  const bool shade = mode == "PLUME_COMPOSITE" && property->GetShade(0) != 0;
   const bool lit = mode == "PLUME_ISO" || mode == "PLUME_SMOKE" || shade;
   if (lit && lightDirs.empty())
   {
