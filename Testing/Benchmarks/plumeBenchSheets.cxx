@@ -23,6 +23,7 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkContourFilter.h"
+#include "vtkDataSet.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkFixedPointVolumeRayCastMapper.h"
 #include "vtkFloatArray.h"
@@ -38,8 +39,6 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkXMLPolyDataReader.h"
-#include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,20 +64,13 @@ int StrideOf(int size)
 const int ScaleSize = 256;     // scaling runs
 const int ScaleSizeQuick = 64;
 
-std::string DataFile()
-{
-  return plume::test::DataPath("derived/office_stream_sheet.vtp");
-}
-
 vtkSmartPointer<vtkPolyData> LoadMesh()
 {
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(DataFile().c_str());
-  reader->Update();
-  vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
-  if (mesh->GetNumberOfPolys() < 1)
+  vtkSmartPointer<vtkPolyData> mesh =
+    vtkPolyData::SafeDownCast(plume::test::LoadDataset("derived/office_stream_sheet.vtp"));
+  if (!mesh || mesh->GetNumberOfPolys() < 1)
   {
-    throw std::runtime_error("cannot read " + DataFile());
+    throw std::runtime_error("cannot read derived/office_stream_sheet.vtp");
   }
   return mesh;
 }
@@ -87,16 +79,13 @@ vtkSmartPointer<vtkPolyData> LoadMesh()
 // split into 4 at its edge midpoints `levels` times (same surface)
 vtkSmartPointer<vtkPolyData> FireMesh(int levels)
 {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  const std::string file = plume::test::DataPath("classic/fire_ug.vtu");
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  if (!reader->GetOutput()->GetPointData()->GetArray("mfrac"))
+  vtkSmartPointer<vtkDataSet> fire = vtkDataSet::SafeDownCast(plume::test::LoadDataset("classic/fire_ug.vtu"));
+  if (!fire || !fire->GetPointData()->GetArray("mfrac"))
   {
-    throw std::runtime_error("cannot read " + file);
+    throw std::runtime_error("cannot read classic/fire_ug.vtu (mfrac)");
   }
   vtkNew<vtkContourFilter> contour;
-  contour->SetInputData(reader->GetOutput());
+  contour->SetInputData(fire);
   contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "mfrac");
   contour->SetValue(0, 0.005);
   contour->Update();
