@@ -3,12 +3,15 @@
 #include "plumeColorMaps.h"
 #include "plumeImageOutput.h"
 #include "plumeParameters.h"
+#include "plumeRepresentationHelpers.h"
 #include "plumeSceneError.h"
 
 #include "vtkCamera.h"
+#include "vtkFloatArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkScalarsToColors.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
 
@@ -122,4 +125,24 @@ TEST(ColorMaps, SpanTheRequestedRangeWithTheirEndColours)
   EXPECT_NEAR(low[0], 0, 1e-9);
   EXPECT_NEAR(high[0], 1, 1e-9);
   EXPECT_EQ(plume::MakeColorMap("nope", 0, 1), nullptr);
+}
+
+TEST(Coloring, DefaultRangeLeavesOutMaskedPoints)
+{
+  // resampled data: 0 at points outside it (mask 0) must not widen the range
+  vtkNew<vtkFloatArray> values;
+  vtkNew<vtkUnsignedCharArray> mask;
+  for (float v : { 0.0f, 5.0f, 7.0f, 10.0f, 0.0f })
+  {
+    values->InsertNextValue(v);
+    mask->InsertNextValue(v != 0.0f ? 1 : 0);
+  }
+  plume::Coloring coloring;
+  coloring.Map = "grayscale";
+  const auto masked = coloring.Table(values, 0, mask);
+  EXPECT_DOUBLE_EQ(masked->GetRange()[0], 5);
+  EXPECT_DOUBLE_EQ(masked->GetRange()[1], 10);
+  const auto plain = coloring.Table(values, 0);
+  EXPECT_DOUBLE_EQ(plain->GetRange()[0], 0);
+  EXPECT_DOUBLE_EQ(plain->GetRange()[1], 10);
 }
