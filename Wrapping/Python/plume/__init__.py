@@ -13,7 +13,7 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 
 def _load_modules():
-    """Import every wrapped Plume module (PlumeData, PlumeRendering, ...) found here."""
+    """Import every wrapped Plume module (PlumeData, PlumeGlyphs, ...) found here."""
     here = _os.path.dirname(__file__)
     names = sorted({f.split(".")[0] for f in _os.listdir(here) if f.startswith("Plume") and f.endswith(".so")})
     for name in names:

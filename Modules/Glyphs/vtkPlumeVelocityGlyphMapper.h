@@ -84,7 +84,7 @@
 #ifndef vtkPlumeVelocityGlyphMapper_h
 #define vtkPlumeVelocityGlyphMapper_h
 
-#include "PlumeRenderingModule.h" // For export macro
+#include "PlumeGlyphsModule.h" // For export macro
 #include "vtkMapper.h"
 
 #include <memory> // For std::unique_ptr
@@ -93,7 +93,7 @@
 class vtkImageData;
 class vtkDataSet;
 
-class PLUMERENDERING_EXPORT vtkPlumeVelocityGlyphMapper : public vtkMapper
+class PLUMEGLYPHS_EXPORT vtkPlumeVelocityGlyphMapper : public vtkMapper
 {
 public:
   static vtkPlumeVelocityGlyphMapper* New();

@@ -8,7 +8,7 @@
 #ifndef vtkPlumeThrottledDraw_h
 #define vtkPlumeThrottledDraw_h
 
-#include "PlumeRenderingModule.h" // For export macro
+#include "PlumeRenderingCoreModule.h" // For export macro
 #include "vtkType.h"              // For vtkIdType
 
 namespace plume
@@ -23,7 +23,7 @@ namespace plume
  * indices are GLint: count x perPrimitive must stay below 2^31 (a GL limit
  * of glDrawArrays itself). Returns the number of draw calls made.
  */
-PLUMERENDERING_EXPORT int DrawArraysThrottled(
+PLUMERENDERINGCORE_EXPORT int DrawArraysThrottled(
   unsigned int mode, int perPrimitive, vtkIdType count, vtkIdType chunk, int inFlight);
 }
 

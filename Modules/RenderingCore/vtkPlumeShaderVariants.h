@@ -11,13 +11,13 @@
 #ifndef vtkPlumeShaderVariants_h
 #define vtkPlumeShaderVariants_h
 
-#include "PlumeRenderingModule.h" // For export macro
+#include "PlumeRenderingCoreModule.h" // For export macro
 #include "vtkWrappingHints.h"     // For VTK_WRAPEXCLUDE
 
 #include <set>    // For std::set
 #include <string> // For std::string
 
-class PLUMERENDERING_EXPORT VTK_WRAPEXCLUDE vtkPlumeShaderVariants
+class PLUMERENDERINGCORE_EXPORT VTK_WRAPEXCLUDE vtkPlumeShaderVariants
 {
 public:
   /** The source with the disabled blocks removed and the defines inserted. */

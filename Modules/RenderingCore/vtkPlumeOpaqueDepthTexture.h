@@ -27,7 +27,7 @@
 #ifndef vtkPlumeOpaqueDepthTexture_h
 #define vtkPlumeOpaqueDepthTexture_h
 
-#include "PlumeRenderingModule.h" // For export macro
+#include "PlumeRenderingCoreModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For members
 
@@ -37,7 +37,7 @@ class vtkRenderer;
 class vtkTextureObject;
 class vtkWindow;
 
-class PLUMERENDERING_EXPORT vtkPlumeOpaqueDepthTexture : public vtkObject
+class PLUMERENDERINGCORE_EXPORT vtkPlumeOpaqueDepthTexture : public vtkObject
 {
 public:
   static vtkPlumeOpaqueDepthTexture* New();

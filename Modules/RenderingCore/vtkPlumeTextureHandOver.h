@@ -25,7 +25,7 @@
 #ifndef vtkPlumeTextureHandOver_h
 #define vtkPlumeTextureHandOver_h
 
-#include "PlumeRenderingModule.h" // For export macro
+#include "PlumeRenderingCoreModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"  // For members
 #include "vtkWeakPointer.h"   // For members
@@ -35,7 +35,7 @@ class vtkInformationObjectBaseKey;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 
-class PLUMERENDERING_EXPORT vtkPlumeTextureHandOver : public vtkObject
+class PLUMERENDERINGCORE_EXPORT vtkPlumeTextureHandOver : public vtkObject
 {
 public:
   static vtkPlumeTextureHandOver* New();

@@ -44,7 +44,7 @@
 #ifndef vtkPlumeScalarTexture3D_h
 #define vtkPlumeScalarTexture3D_h
 
-#include "PlumeRenderingModule.h" // For export macro
+#include "PlumeRenderingCoreModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For members
 
@@ -57,7 +57,7 @@ class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 class vtkWindow;
 
-class PLUMERENDERING_EXPORT vtkPlumeScalarTexture3D : public vtkObject
+class PLUMERENDERINGCORE_EXPORT vtkPlumeScalarTexture3D : public vtkObject
 {
 public:
   static vtkPlumeScalarTexture3D* New();
