@@ -19,6 +19,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
+#include "vtkPlumeCompositingPass.h"
 #include "vtkRenderer.h"
 #include "vtksys/SystemTools.hxx"
 
@@ -443,27 +444,13 @@ void Scene::Build(
     throw SceneError("scene: 'representations' must be a non-empty list, got " + (reps ? reps->dump() : "nothing"));
   }
   const auto& builders = Representations();
-  // Glyph lines fade out towards their roots with ordinary blending in the
-  // opaque pass, so opaque geometry must be drawn before them: glyph
-  // representations are added last, whatever their place in the list.
-  std::vector<std::pair<int, const nlohmann::json*>> ordered;
-  for (int pass = 0; pass < 2; ++pass)
+  // The frame's order is the compositing pass's (opaque, glyphs, translucent,
+  // media back to front), not the order of the list.
+  vtkPlumeCompositingPass::Install(renderer);
+  int index = 0;
+  for (const auto& item : *reps)
   {
-    int i = 0;
-    for (const auto& item : *reps)
-    {
-      const bool late = item.is_object() && item.value("type", nlohmann::json()) == "glyphs";
-      if (late == (pass == 1))
-      {
-        ordered.emplace_back(i, &item);
-      }
-      ++i;
-    }
-  }
-  for (const auto& entry : ordered)
-  {
-    const nlohmann::json& item = *entry.second;
-    const std::string where = "representations[" + std::to_string(entry.first) + "]";
+    const std::string where = "representations[" + std::to_string(index++) + "]";
     if (!item.is_object() || !item.contains("type") || !item["type"].is_string())
     {
       throw SceneError(where + ": needs a string 'type', got " + item.dump());

@@ -1,5 +1,6 @@
 #include "vtkPlumeVelocityGlyphMapper.h"
 
+#include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeShaderVariants.h"
 #include "vtkPlumeTextureHandOver.h"
@@ -281,6 +282,8 @@ vtkPlumeVelocityGlyphMapper::vtkPlumeVelocityGlyphMapper()
   : Impl(new Internals)
 {
   this->SetNumberOfInputPorts(2);
+  // after the opaque scene, before the media read its depth
+  vtkPlumeCompositingPass::SetStage(this, vtkPlumeCompositingPass::STAGE_SURFACES);
 }
 
 vtkPlumeVelocityGlyphMapper::~vtkPlumeVelocityGlyphMapper() = default;
@@ -464,6 +467,10 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
 {
   Internals& impl = *this->Impl;
   this->LastRootCount = 0;
+  if (!vtkPlumeCompositingPass::ShouldDraw(ren, this))
+  {
+    return; // a compositing pass draws the glyphs in its surface step
+  }
 
   this->UpdateInputs();
   vtkImageData* image = this->GetInput();

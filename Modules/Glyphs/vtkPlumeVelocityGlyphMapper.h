@@ -63,8 +63,11 @@
  * (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) for colour and (ONE, ONE_MINUS_SRC_ALPHA)
  * for alpha; fragments with alpha < 1/512 are discarded (no depth write).
  * Opaque actors occlude glyphs and glyphs occlude what is behind them; the
- * faded part of a glyph blends with what was drawn before it, so add the glyph
- * actor after the opaque actors it overlaps. Keep the actor's opacity at 1
+ * faded part of a glyph blends with what was drawn before it. With a
+ * vtkPlumeCompositingPass on the renderer the glyphs draw right after the
+ * whole opaque scene (its surface step), before media read the depth, in any
+ * actor order; in a plain vtkRenderer add the glyph actor after the opaque
+ * actors it overlaps. Keep the actor's opacity at 1
  * (it multiplies the glyph alpha, but opacity < 1 moves the actor into VTK's
  * translucent pass, which this mapper does not take part in).
  *

@@ -1,6 +1,7 @@
 #include "vtkPlumeSheetMapper.h"
 
 #include "vtkPlumeGLMatrix.h"
+#include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeShaderVariants.h"
 #include "vtkPlumeThrottledDraw.h"
@@ -172,6 +173,7 @@ vtkStandardNewMacro(vtkPlumeSheetMapper);
 vtkPlumeSheetMapper::vtkPlumeSheetMapper()
   : Impl(new Internals)
 {
+  vtkPlumeCompositingPass::SetStage(this, vtkPlumeCompositingPass::STAGE_MEDIA);
 }
 
 vtkPlumeSheetMapper::~vtkPlumeSheetMapper() = default;
@@ -248,6 +250,10 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
 {
   Internals& impl = *this->Impl;
   this->LastDrawCount = 0;
+  if (!vtkPlumeCompositingPass::ShouldDraw(ren, this))
+  {
+    return; // a compositing pass draws the sheet in its media step
+  }
   if (!this->Static && this->GetNumberOfInputConnections(0) > 0)
   {
     this->GetInputAlgorithm()->Update();
@@ -446,10 +452,13 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
   }
   const double modelScale = std::cbrt(std::fabs(vtkMath::Determinant3x3(m3)));
 
-  // ---- the opaque scene's depth, as it is now (this actor renders after the
-  // opaque actors); without it the integral runs over the whole line
+  // ---- the opaque scene's depth: the frame's shared copy under a
+  // vtkPlumeCompositingPass, else the depth buffer as it is now; without it
+  // the integral runs over the whole line
   bool bounded = this->BoundedByDepth;
-  if (bounded && !impl.Depth->Capture(ren))
+  vtkPlumeOpaqueDepthTexture* depth =
+    bounded ? vtkPlumeCompositingPass::AcquireDepth(ren, impl.Depth) : nullptr;
+  if (bounded && !depth)
   {
     if (!impl.WarnedDepth)
     {
@@ -514,7 +523,7 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     impl.TargetSize[0] = vpWidth;
     impl.TargetSize[1] = vpHeight;
   }
-  vtkTextureObject* depthTexture = bounded ? impl.Depth->GetTextureObject() : nullptr;
+  vtkTextureObject* depthTexture = bounded ? depth->GetTextureObject() : nullptr;
   if (depthTexture)
   {
     depthTexture->Activate();

@@ -32,11 +32,16 @@
  * pass; none of the polydata mapper's lighting/colouring template is used,
  * and the same pattern as vtkPlumeVelocityGlyphMapper keeps GL state private.
  *
- * Compositing: the sheet is drawn in the opaque pass (HasOpaqueGeometry),
- * without depth writes. Add the sheet actor after the opaque actors it
- * overlaps: it sees the depth buffer as it is when the actor renders (copied
- * by vtkPlumeOpaqueDepthTexture, which also resolves multisampled windows; if
- * the depth cannot be read the sheet warns once and is not bounded by it).
+ * Compositing: with a vtkPlumeCompositingPass on the renderer (what `plume`
+ * and the ParaView plugin use), the sheet is a medium: it draws after the
+ * opaque scene, the glyphs and VTK's translucent pass, sorted back to front
+ * with the other media and volumes, bounded by the frame's shared opaque
+ * depth, whatever the order the actors were added in. In a plain
+ * vtkRenderer it draws in the opaque pass, without depth writes, and sees
+ * the depth buffer as it is when the actor renders: add it after the opaque
+ * actors it overlaps. Either way the depth is read through
+ * vtkPlumeOpaqueDepthTexture (which resolves multisampled windows); if it
+ * cannot be read the sheet warns once and is not bounded by it.
  *
  * Bad values: a point whose density is NaN, Inf or negative counts as zero
  * density; a non-finite or negative sigma counts as zero (then the 1/3-pixel

@@ -1,6 +1,7 @@
 #include "vtkPlumeVolumeMapper.h"
 
 #include "vtkPlumeGLMatrix.h"
+#include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeScalarTexture3D.h"
 #include "vtkPlumeShaderVariants.h"
@@ -471,13 +472,17 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const bool skipTransparent = skipping && impl.EmptyFraction >= MinSkipFraction;
 
   // ---- opaque depth
-  bool useDepth = false;
+  // (the frame's shared copy under a vtkPlumeCompositingPass, else our own)
+  vtkPlumeOpaqueDepthTexture* depth =
+    this->UseOpaqueDepth ? vtkPlumeCompositingPass::AcquireDepth(ren, impl.Depth) : nullptr;
+  const bool useDepth = depth != nullptr;
   if (this->UseOpaqueDepth)
   {
-    useDepth = impl.Depth->Capture(ren);
     if (!useDepth)
     {
-      vtkWarningMacro(<< "rays will not stop at opaque geometry: " << impl.Depth->GetLastError());
+      vtkWarningMacro(<< "rays will not stop at opaque geometry: "
+                      << (impl.Depth->GetLastError().empty() ? std::string("the compositing pass has no depth")
+                                                             : impl.Depth->GetLastError()));
     }
   }
 
@@ -801,8 +806,8 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniformi("TransferFunction", impl.Table->GetTextureUnit());
   if (useDepth)
   {
-    impl.Depth->GetTextureObject()->Activate();
-    program->SetUniformi("OpaqueDepth", impl.Depth->GetTextureObject()->GetTextureUnit());
+    depth->GetTextureObject()->Activate();
+    program->SetUniformi("OpaqueDepth", depth->GetTextureObject()->GetTextureUnit());
   }
   if (skipTransparent || rangeSkipping)
   {
@@ -845,7 +850,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   impl.Table->Deactivate();
   if (useDepth)
   {
-    impl.Depth->GetTextureObject()->Deactivate();
+    depth->GetTextureObject()->Deactivate();
   }
   if (skipTransparent)
   {

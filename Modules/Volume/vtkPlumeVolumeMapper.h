@@ -154,7 +154,12 @@ public:
   ///@}
 
   ///@{
-  /** Stop rays at the depth of the opaque scene. Default on. */
+  /**
+   * Stop rays at the depth of the opaque scene. Default on. Under a
+   * vtkPlumeCompositingPass that is the frame's shared depth (opaque actors
+   * and glyphs), and the volume is sorted back to front with the other media;
+   * in a plain renderer the depth buffer as it is when the volume renders.
+   */
   vtkSetMacro(UseOpaqueDepth, bool);
   vtkGetMacro(UseOpaqueDepth, bool);
   vtkBooleanMacro(UseOpaqueDepth, bool);

@@ -1,0 +1,321 @@
+#include "vtkPlumeCompositingPass.h"
+
+#include "vtkActor.h"
+#include "vtkAlgorithm.h"
+#include "vtkCamera.h"
+#include "vtkDualDepthPeelingPass.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkInformationObjectBaseKey.h"
+#include "vtkMapper.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpaquePass.h"
+#include "vtkOrderIndependentTranslucentPass.h"
+#include "vtkPlumeOpaqueDepthTexture.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
+#include "vtkTranslucentPass.h"
+#include "vtkVolume.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace
+{
+// One step of the frame: forwards to a member of the compositing pass.
+// vtkRenderStepsPass takes passes, not callbacks.
+class vtkPlumeCompositingStep : public vtkRenderPass
+{
+public:
+  static vtkPlumeCompositingStep* New();
+  vtkTypeMacro(vtkPlumeCompositingStep, vtkRenderPass);
+  using Body = void (vtkPlumeCompositingPass::*)(const vtkRenderState*);
+  vtkPlumeCompositingPass* Owner = nullptr; // not counted: the owner holds this step
+  Body Step = nullptr;
+  int* Rendered = nullptr;
+  void Render(const vtkRenderState* s) override
+  {
+    int count = 0;
+    this->Rendered = &count;
+    (this->Owner->*this->Step)(s);
+    this->NumberOfRenderedProps = count;
+  }
+};
+vtkStandardNewMacro(vtkPlumeCompositingStep);
+
+vtkSmartPointer<vtkPlumeCompositingStep> MakeStep(vtkPlumeCompositingPass* owner, vtkPlumeCompositingStep::Body body)
+{
+  auto step = vtkSmartPointer<vtkPlumeCompositingStep>::New();
+  step->Owner = owner;
+  step->Step = body;
+  return step;
+}
+
+struct Entry
+{
+  vtkProp* Prop;
+  double Distance;
+  std::array<double, 6> Bounds;
+};
+
+// Back to front by the distance from the camera to the centre of the bounds;
+// ties by the bounds, so that the order the props were added never matters.
+std::vector<vtkProp*> SortBackToFront(std::vector<Entry>& entries)
+{
+  std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    if (a.Distance != b.Distance)
+    {
+      return a.Distance > b.Distance;
+    }
+    return a.Bounds < b.Bounds;
+  });
+  std::vector<vtkProp*> order;
+  order.reserve(entries.size());
+  for (const Entry& e : entries)
+  {
+    order.push_back(e.Prop);
+  }
+  return order;
+}
+
+Entry MakeEntry(vtkProp* prop, const double eye[3])
+{
+  Entry e{ prop, 0.0, { 0, 0, 0, 0, 0, 0 } };
+  const double* b = prop->GetBounds();
+  if (b && vtkMath::AreBoundsInitialized(b))
+  {
+    std::copy(b, b + 6, e.Bounds.begin());
+    const double c[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
+    e.Distance = std::sqrt(vtkMath::Distance2BetweenPoints(c, eye));
+    if (!std::isfinite(e.Distance))
+    {
+      e.Distance = 0.0;
+    }
+  }
+  return e;
+}
+
+vtkMapper* StagedMapper(vtkProp* prop, int stage)
+{
+  auto* actor = vtkActor::SafeDownCast(prop);
+  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+  return mapper && vtkPlumeCompositingPass::GetStage(mapper) == stage ? mapper : nullptr;
+}
+} // namespace
+
+vtkStandardNewMacro(vtkPlumeCompositingPass);
+vtkInformationKeyMacro(vtkPlumeCompositingPass, STAGE, Integer);
+vtkInformationKeyMacro(vtkPlumeCompositingPass, CURRENT_STAGE, Integer);
+vtkInformationKeyMacro(vtkPlumeCompositingPass, OPAQUE_DEPTH, ObjectBase);
+
+//------------------------------------------------------------------------------
+vtkPlumeCompositingPass::vtkPlumeCompositingPass()
+  : Steps(vtkSmartPointer<vtkRenderStepsPass>::New())
+  , Opaque(vtkSmartPointer<vtkOpaquePass>::New())
+  , Translucent(vtkSmartPointer<vtkTranslucentPass>::New())
+  , Depth(vtkSmartPointer<vtkPlumeOpaqueDepthTexture>::New())
+{
+  auto oit = vtkSmartPointer<vtkOrderIndependentTranslucentPass>::New();
+  oit->SetTranslucentPass(this->Translucent);
+  this->OrderIndependent = oit;
+  auto peeling = vtkSmartPointer<vtkDualDepthPeelingPass>::New();
+  peeling->SetTranslucentPass(this->Translucent);
+  this->DepthPeeling = peeling;
+
+  this->Steps->SetOpaquePass(MakeStep(this, &vtkPlumeCompositingPass::RenderOpaqueAndSurfaces));
+  this->Steps->SetTranslucentPass(MakeStep(this, &vtkPlumeCompositingPass::RenderTranslucent));
+  this->Steps->SetVolumetricPass(MakeStep(this, &vtkPlumeCompositingPass::RenderMedia));
+}
+
+vtkPlumeCompositingPass::~vtkPlumeCompositingPass() = default;
+
+//------------------------------------------------------------------------------
+void vtkPlumeCompositingPass::SetStage(vtkAlgorithm* mapper, int stage)
+{
+  if (mapper)
+  {
+    mapper->GetInformation()->Set(STAGE(), stage);
+  }
+}
+
+int vtkPlumeCompositingPass::GetStage(vtkAlgorithm* mapper)
+{
+  vtkInformation* info = mapper ? mapper->GetInformation() : nullptr;
+  return info && info->Has(STAGE()) ? info->Get(STAGE()) : -1;
+}
+
+bool vtkPlumeCompositingPass::ShouldDraw(vtkRenderer* renderer, vtkAlgorithm* mapper)
+{
+  vtkInformation* info = renderer ? renderer->GetInformation() : nullptr;
+  if (!info || !info->Has(CURRENT_STAGE()))
+  {
+    return true; // no compositing pass: stand-alone behaviour
+  }
+  return info->Get(CURRENT_STAGE()) == GetStage(mapper);
+}
+
+vtkPlumeOpaqueDepthTexture* vtkPlumeCompositingPass::GetSharedDepth(vtkRenderer* renderer)
+{
+  vtkInformation* info = renderer ? renderer->GetInformation() : nullptr;
+  return info ? vtkPlumeOpaqueDepthTexture::SafeDownCast(info->Get(OPAQUE_DEPTH())) : nullptr;
+}
+
+vtkPlumeOpaqueDepthTexture* vtkPlumeCompositingPass::AcquireDepth(
+  vtkRenderer* renderer, vtkPlumeOpaqueDepthTexture* own)
+{
+  if (vtkPlumeOpaqueDepthTexture* shared = GetSharedDepth(renderer))
+  {
+    return shared;
+  }
+  vtkInformation* info = renderer ? renderer->GetInformation() : nullptr;
+  if (info && info->Has(CURRENT_STAGE()))
+  {
+    // the pass runs but could not read the depth: a copy now would hold
+    // translucent geometry too, so behave as the pass said (unbounded)
+    return nullptr;
+  }
+  return own && own->Capture(renderer) ? own : nullptr;
+}
+
+vtkPlumeCompositingPass* vtkPlumeCompositingPass::Install(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return nullptr;
+  }
+  if (auto* existing = vtkPlumeCompositingPass::SafeDownCast(renderer->GetPass()))
+  {
+    return existing;
+  }
+  vtkNew<vtkPlumeCompositingPass> pass;
+  renderer->SetPass(pass);
+  return pass;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeCompositingPass::Render(const vtkRenderState* s)
+{
+  vtkRenderer* ren = s->GetRenderer();
+  vtkInformation* info = ren->GetInformation();
+  info->Set(CURRENT_STAGE(), STAGE_VTK);
+  this->LastSurfaceOrder.clear();
+  this->LastMediaOrder.clear();
+  this->LastDepthShared = false;
+  this->Steps->Render(s);
+  this->NumberOfRenderedProps = this->Steps->GetNumberOfRenderedProps();
+  // a renderer that later renders without the pass gets stand-alone mappers
+  info->Remove(CURRENT_STAGE());
+  info->Remove(OPAQUE_DEPTH());
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeCompositingPass::RenderOpaqueAndSurfaces(const vtkRenderState* s)
+{
+  vtkRenderer* ren = s->GetRenderer();
+  vtkInformation* info = ren->GetInformation();
+  auto* step = static_cast<vtkPlumeCompositingStep*>(this->Steps->GetOpaquePass());
+
+  info->Set(CURRENT_STAGE(), STAGE_VTK);
+  this->Opaque->Render(s);
+  *step->Rendered += this->Opaque->GetNumberOfRenderedProps();
+
+  double eye[3];
+  ren->GetActiveCamera()->GetPosition(eye);
+  std::vector<Entry> surfaces;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (prop->GetVisibility() && StagedMapper(prop, STAGE_SURFACES))
+    {
+      surfaces.push_back(MakeEntry(prop, eye));
+    }
+  }
+  this->LastSurfaceOrder = SortBackToFront(surfaces);
+  info->Set(CURRENT_STAGE(), STAGE_SURFACES);
+  for (vtkProp* prop : this->LastSurfaceOrder)
+  {
+    *step->Rendered += prop->HasOpaqueGeometry() ? prop->RenderOpaqueGeometry(ren)
+                                                 : prop->RenderTranslucentPolygonalGeometry(ren);
+  }
+  info->Set(CURRENT_STAGE(), STAGE_VTK);
+
+  // one copy of the opaque depth for every medium of the frame
+  this->LastDepthShared = this->Depth->Capture(ren);
+  if (this->LastDepthShared)
+  {
+    info->Set(OPAQUE_DEPTH(), this->Depth);
+  }
+  else if (!this->WarnedDepth)
+  {
+    vtkWarningMacro(<< "media will not stop at opaque geometry: " << this->Depth->GetLastError());
+    this->WarnedDepth = true;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeCompositingPass::RenderTranslucent(const vtkRenderState* s)
+{
+  vtkRenderer* ren = s->GetRenderer();
+  auto* step = static_cast<vtkPlumeCompositingStep*>(this->Steps->GetTranslucentPass());
+  // as vtkOpenGLRenderer does without a pass
+  vtkRenderPass* pass = ren->GetUseDepthPeeling() ? this->DepthPeeling : this->OrderIndependent;
+  ren->GetInformation()->Set(CURRENT_STAGE(), STAGE_VTK);
+  pass->Render(s);
+  *step->Rendered += pass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeCompositingPass::RenderMedia(const vtkRenderState* s)
+{
+  vtkRenderer* ren = s->GetRenderer();
+  auto* step = static_cast<vtkPlumeCompositingStep*>(this->Steps->GetVolumetricPass());
+  double eye[3];
+  ren->GetActiveCamera()->GetPosition(eye);
+  std::vector<Entry> media;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (prop->GetVisibility() && (vtkVolume::SafeDownCast(prop) || StagedMapper(prop, STAGE_MEDIA)))
+    {
+      media.push_back(MakeEntry(prop, eye));
+    }
+  }
+  this->LastMediaOrder = SortBackToFront(media);
+  ren->GetInformation()->Set(CURRENT_STAGE(), STAGE_MEDIA);
+  for (vtkProp* prop : this->LastMediaOrder)
+  {
+    if (vtkVolume::SafeDownCast(prop))
+    {
+      *step->Rendered += prop->RenderVolumetricGeometry(ren);
+    }
+    else
+    {
+      *step->Rendered += prop->HasOpaqueGeometry() ? prop->RenderOpaqueGeometry(ren)
+                                                   : prop->RenderTranslucentPolygonalGeometry(ren);
+    }
+  }
+  ren->GetInformation()->Set(CURRENT_STAGE(), STAGE_VTK);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeCompositingPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Steps->ReleaseGraphicsResources(w);
+  this->Opaque->ReleaseGraphicsResources(w);
+  this->OrderIndependent->ReleaseGraphicsResources(w);
+  this->DepthPeeling->ReleaseGraphicsResources(w);
+  this->Translucent->ReleaseGraphicsResources(w);
+  this->Depth->ReleaseGraphicsResources(w);
+}
+
+void vtkPlumeCompositingPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LastSurfaces: " << this->LastSurfaceOrder.size() << "\n";
+  os << indent << "LastMedia: " << this->LastMediaOrder.size() << "\n";
+  os << indent << "LastDepthShared: " << this->LastDepthShared << "\n";
+}
