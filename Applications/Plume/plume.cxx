@@ -4,6 +4,7 @@
 #include "plumeImageOutput.h"
 #include "plumeInfo.h"
 #include "plumeOutputWindow.h"
+#include "plumeParameterTables.h"
 #include "plumeProgress.h"
 #include "plumeRenderWindowFactory.h"
 #include "plumeScene.h"
@@ -11,6 +12,7 @@
 #include "plumeTestSupport.h"
 
 #include "vtkPlumeDatasetReader.h"
+#include "vtkPlumeParameterTable.h"
 
 #include "vtkCamera.h"
 #include "vtkLogger.h"
@@ -205,6 +207,33 @@ int Bench(const std::string& name, bool quick, const std::string& job, plume::Ba
 }
 }
 
+// `plume params [TYPE]`: the Markdown tables of Documentation/SceneFormat.md,
+// made from the renderers' own parameter tables
+static int Params(const std::string& type)
+{
+  bool found = false;
+  for (const vtkPlumeParameterTable* table : plume::ParameterTables())
+  {
+    if (type.empty() || table->GetSceneType() == type)
+    {
+      std::cout << "### `" << table->GetSceneType() << "` (" << table->GetClassName() << ")\n\n";
+      table->WriteMarkdown(std::cout);
+      std::cout << "\n";
+      found = true;
+    }
+  }
+  if (!found)
+  {
+    std::string known;
+    for (const vtkPlumeParameterTable* table : plume::ParameterTables())
+    {
+      known += (known.empty() ? "" : ", ") + table->GetSceneType();
+    }
+    throw plume::SceneError("params: no parameter table for '" + type + "' (known: " + known + ")");
+  }
+  return 0;
+}
+
 int main(int argc, char* argv[])
 {
   // Debian's VTK defaults to the sequential SMP backend; use real threads
@@ -250,6 +279,10 @@ int main(int argc, char* argv[])
   bench->add_flag("--list", list, "list the benchmarks");
   bench->add_option("--job", job, "run one job in this process (used internally)")->group("");
 
+  auto* params = app.add_subcommand("params", "the parameters of each representation (Markdown tables)");
+  std::string paramsType;
+  params->add_option("type", paramsType, "only this representation type (e.g. sheet)");
+
   try
   {
     app.parse(argc, argv);
@@ -293,6 +326,10 @@ int main(int argc, char* argv[])
         reader->AddBlockName(b.c_str());
       }
       status = plume::RunInfo(reader, json, std::cout, std::cerr);
+    }
+    else if (*params)
+    {
+      status = Params(paramsType);
     }
     else if (*bench)
     {

@@ -2,6 +2,8 @@
 
 #include "plumeSceneError.h"
 
+#include "vtkPlumeParameterTable.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -38,6 +40,53 @@ void Parameters::Fail(const std::string& key, const std::string& expected, const
     shown = shown.substr(0, 77) + "...";
   }
   throw SceneError(this->Location + ": parameter '" + key + "' must be " + expected + ", got " + shown);
+}
+
+void Parameters::Apply(const vtkPlumeParameterTable& table, vtkObject* object)
+{
+  using Kind = vtkPlumeParameterTable::Kind;
+  for (const vtkPlumeParameterTable::Parameter& parameter : table.GetParameters())
+  {
+    const nlohmann::json* json = this->Get(parameter.Key);
+    if (!json)
+    {
+      continue;
+    }
+    // JSON -> the table's value; Check() then says what is wrong with it
+    vtkPlumeParameterTable::Value value;
+    if (json->is_boolean())
+    {
+      value = json->get<bool>();
+    }
+    else if (json->is_number_integer() && (parameter.Type == Kind::Integer || parameter.Type == Kind::Real))
+    {
+      value = parameter.Type == Kind::Integer ? vtkPlumeParameterTable::Value(json->get<long long>())
+                                              : vtkPlumeParameterTable::Value(json->get<double>());
+    }
+    else if (json->is_number())
+    {
+      value = json->get<double>();
+    }
+    else if (json->is_string())
+    {
+      value = json->get<std::string>();
+    }
+    else if (json->is_array() && json->size() == 3 && (*json)[0].is_number() && (*json)[1].is_number() &&
+      (*json)[2].is_number())
+    {
+      value = std::array<double, 3>{ (*json)[0].get<double>(), (*json)[1].get<double>(), (*json)[2].get<double>() };
+    }
+    else
+    {
+      this->Fail(parameter.Key, std::string("of type ") + vtkPlumeParameterTable::KindName(parameter.Type), *json);
+    }
+    const std::string problem = parameter.Check(value);
+    if (!problem.empty())
+    {
+      throw SceneError(this->Location + ": parameter '" + parameter.Key + "' " + problem);
+    }
+    parameter.Set(object, value);
+  }
 }
 
 double Parameters::Number(const std::string& key, double fallback, double min, double max)

@@ -11,6 +11,9 @@
 #include <string>
 #include <vector>
 
+class vtkObject;
+class vtkPlumeParameterTable;
+
 namespace plume
 {
 class Parameters
@@ -35,6 +38,14 @@ public:
   /** A nested object (or null if absent); its keys are the caller's to check. */
   const nlohmann::json* Object(const std::string& key);
   const nlohmann::json* Raw(const std::string& key);
+
+  /**
+   * Sets every parameter of `table` that this object has on `object` (keys
+   * the object does not have keep the object's values); a value of the wrong
+   * type or out of range throws SceneError naming the key, the value and
+   * what the table allows.
+   */
+  void Apply(const vtkPlumeParameterTable& table, vtkObject* object);
 
   /** Throws SceneError naming the first key that no accessor asked for. */
   void RejectUnknown() const;

@@ -3,6 +3,7 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
+#include "vtkPlumeParameterTable.h"
 #include "vtkPlumeShaderVariants.h"
 #include "vtkPlumeThrottledDraw.h"
 
@@ -174,6 +175,113 @@ vtkPlumeSheetMapper::vtkPlumeSheetMapper()
   : Impl(new Internals)
 {
   vtkPlumeCompositingPass::SetStage(this, vtkPlumeCompositingPass::STAGE_MEDIA);
+  GetParameterTable().ApplyDefaults(this);
+}
+
+const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
+{
+  static const vtkPlumeParameterTable table = [] {
+    using T = vtkPlumeSheetMapper;
+    vtkPlumeParameterTable t("vtkPlumeSheetMapper", "sheet");
+    t.Real("density", "Density", 1.0)
+      .Between(0.0, 1e30)
+      .Units("optical depth per unit area")
+      .Panel("Smoke")
+      .Doc("Density d of the smoke where no density array is used.")
+      .Bind(&T::SetDensity, &T::GetDensity);
+    t.Text("density_array", "DensityArrayName", "")
+      .Panel("Smoke")
+      .Doc("Point array of density (1 component); empty: the constant `density`.")
+      .Bind(&T::SetDensityArrayName, &T::GetDensityArrayName);
+    t.Real("density_scale", "DensityScale", 1.0)
+      .Between(0.0, 1e30)
+      .Panel("Smoke")
+      .Doc("Multiplies every density (array or constant).")
+      .Bind(&T::SetDensityScale, &T::GetDensityScale);
+    t.Real("blur", "BlurRadius", 0.05)
+      .Between(0.0, 1e30)
+      .Units("model units")
+      .Panel("Smoke")
+      .Doc("Blurring radius sigma_b in the surface where no blur array is used.")
+      .Bind(&T::SetBlurRadius, &T::GetBlurRadius);
+    t.Text("blur_array", "BlurArrayName", "")
+      .Panel("Smoke")
+      .Doc("Point array of sigma_b (1 component); empty: the constant `blur`.")
+      .Bind(&T::SetBlurArrayName, &T::GetBlurArrayName);
+    t.Real("thickness", "Thickness", 0.05)
+      .Between(0.0, 1e30)
+      .Units("model units")
+      .Panel("Smoke")
+      .Doc("Thickness sigma_t across the surface where no thickness array is used.")
+      .Bind(&T::SetThickness, &T::GetThickness);
+    t.Text("thickness_array", "ThicknessArrayName", "")
+      .Panel("Smoke")
+      .Doc("Point array of sigma_t (1 component); empty: the constant `thickness`.")
+      .Bind(&T::SetThicknessArrayName, &T::GetThicknessArrayName);
+    t.Text("absorption_array", "AbsorptionArrayName", "")
+      .Panel("Smoke")
+      .Doc("3-component point array of per-channel absorption (coloured smoke); empty: grey smoke.")
+      .Bind(&T::SetAbsorptionArrayName, &T::GetAbsorptionArrayName);
+    t.Color("smoke_color", "SmokeColor", { 0.0, 0.0, 0.0 })
+      .Panel("Smoke")
+      .Doc("Colour the smoke sends back: pixel = frame T + colour (1 - T); black: it only absorbs.")
+      .Bind(static_cast<void (T::*)(const double*)>(&T::SetSmokeColor),
+        static_cast<double* (T::*)()>(&T::GetSmokeColor));
+    t.Boolean("thin", "ThinSheet", false)
+      .Panel("Smoke")
+      .Doc("sigma_t = 0 exactly: the density is a surface layer (thickness ignored).")
+      .Bind(&T::SetThinSheet, &T::GetThinSheet);
+    t.Boolean("opaque_depth", "BoundedByDepth", true)
+      .Panel("Compositing")
+      .Doc("Integrate only up to the opaque geometry; off: the whole line, as in the paper.")
+      .Bind(&T::SetBoundedByDepth, &T::GetBoundedByDepth);
+    t.Real("cutoff", "Cutoff", 3.5)
+      .Between(1.0, 10.0)
+      .Units("standard deviations")
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Support radius Lambda of each triangle's Gaussian.")
+      .Bind(&T::SetCutoff, &T::GetCutoff);
+    t.Real("min_sigma_pixels", "MinimumSigmaPixels", 1.0 / 3.0)
+      .Between(0.0, 100.0)
+      .Units("pixels")
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Lower bound on sigma_b and sigma_t at each corner's depth.")
+      .Bind(&T::SetMinimumSigmaPixels, &T::GetMinimumSigmaPixels);
+    t.Choice("quadrature", "Quadrature", "analytic")
+      .Choice("grid", QUADRATURE_GRID, "seed 000's regular grid over the triangle, sampled twice.")
+      .Choice("analytic", QUADRATURE_ANALYTIC,
+        "closed form across the ray's footprint, Gauss-Legendre nodes along it.")
+      .Panel("Quality")
+      .Doc("How each fragment integrates over a triangle.")
+      .Bind(&T::SetQuadrature, &T::GetQuadrature);
+    t.Integer("grid_a", "GridA", 8)
+      .Between(1, 32)
+      .Panel("Quality")
+      .Doc("Nodes per piece along the footprint (analytic; 8 is the smallest that met the accuracy goal "
+           "on every test scene), or grid cells along it (grid).")
+      .Bind(&T::SetGridA, &T::GetGridA);
+    t.Integer("grid_b", "GridB", 5)
+      .Between(1, 32)
+      .Panel("Quality")
+      .Doc("Grid cells across the footprint (grid quadrature only).")
+      .Bind(&T::SetGridB, &T::GetGridB);
+    t.Boolean("adaptive_sampling", "AdaptiveSampling", true)
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Triangles smaller than sigma_b / 2 take a 3-point rule (analytic quadrature).")
+      .Bind(&T::SetAdaptiveSampling, &T::GetAdaptiveSampling);
+    t.Integer("maximum_triangles_per_draw", "MaximumTrianglesPerDraw", 16384)
+      .Between(0, 1e15)
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Largest draw call; more triangles are drawn two draws in flight at a time, which bounds "
+           "the driver's memory (0: one draw).")
+      .Bind(&T::SetMaximumTrianglesPerDraw, &T::GetMaximumTrianglesPerDraw);
+    return t;
+  }();
+  return table;
 }
 
 vtkPlumeSheetMapper::~vtkPlumeSheetMapper() = default;

@@ -69,6 +69,7 @@
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
 
+class vtkPlumeParameterTable;
 class vtkPolyData;
 
 class PLUMESHEETS_EXPORT vtkPlumeSheetMapper : public vtkMapper
@@ -77,6 +78,15 @@ public:
   static vtkPlumeSheetMapper* New();
   vtkTypeMacro(vtkPlumeSheetMapper, vtkMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+#ifndef __VTK_WRAP__
+  /**
+   * The one declaration of the sheet's user parameters (scene keys, defaults,
+   * ranges, documentation) that the scene reader, Documentation/SceneFormat.md
+   * and the ParaView XML are made from; the constructor applies its defaults.
+   */
+  static const vtkPlumeParameterTable& GetParameterTable();
+#endif
 
   ///@{
   /** The sheet mesh. */

@@ -1,0 +1,16 @@
+// The parameter tables of the renderers the scene format exposes, in the
+// order Documentation/SceneFormat.md lists them (`plume params`).
+#ifndef plumeParameterTables_h
+#define plumeParameterTables_h
+
+#include <vector>
+
+class vtkPlumeParameterTable;
+
+namespace plume
+{
+/** Every renderer table a scene representation applies. */
+const std::vector<const vtkPlumeParameterTable*>& ParameterTables();
+}
+
+#endif
