@@ -31,24 +31,23 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
 {
   const std::string dataset = p.String("dataset", "");
   const std::string arrayName = p.String("array", "");
-  const int component = p.Integer("component", -1, -1, 1 << 20);
-  const std::string mode = p.Choice("mode", "composite", { "composite", "mip", "isosurface", "smoke" });
+  // the mapper's own parameters (mode, steps, jitter, ...) come from its table
+  vtkNew<vtkPlumeVolumeMapper> mapper;
+  p.Apply(vtkPlumeVolumeMapper::GetParameterTable(), mapper);
+  const int mode = mapper->GetRenderMode();
+  const bool smoke = mode == vtkPlumeVolumeMapper::RENDER_SMOKE;
   Coloring coloring;
   coloring.Read(p, { 1, 1, 1 });
   const bool solid = p.Boolean("solid_color", false);
   const nlohmann::json* opacityPoints = p.Raw("opacity");
   const double unitDistance = p.Number("opacity_unit_distance", 0.0, 0.0);
-  const double sampleDistance = p.Number("sample_distance", 0.5, 1e-3, 100.0);
-  const bool jitter = p.Boolean("jitter", true);
-  const double threshold = p.Number("opacity_threshold", 0.995, 0.5, 1.0);
   const bool hasIso = p.Has("iso_value");
   const double iso = p.Number("iso_value", 0.0);
-  const double ambient = p.Number("ambient", mode == "smoke" ? 0.3 : 0.15, 0.0, 10.0);
-  const double diffuse = p.Number("diffuse", mode == "smoke" ? 1.0 : 0.75, 0.0, 10.0);
+  // vtkVolumeProperty's lighting: smoke is lit more evenly by default
+  const double ambient = p.Number("ambient", smoke ? 0.3 : 0.15, 0.0, 10.0);
+  const double diffuse = p.Number("diffuse", smoke ? 1.0 : 0.75, 0.0, 10.0);
   const double specular = p.Number("specular", 0.3, 0.0, 10.0);
   const double specularPower = p.Number("specular_power", 20.0, 1.0, 1000.0);
-  const double shadowDistance = p.Number("shadow_sample_distance", 1.0, 0.05, 100.0);
-  const bool opaqueDepth = p.Boolean("opaque_depth", true);
   p.RejectUnknown();
   if (dataset.empty())
   {
@@ -56,24 +55,26 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   }
 
   vtkImageData* image = datasets.GetImage(dataset, p.Where());
-  // the scene's memory budget (PLUME_MEMORY_BUDGET_MB) bounds the volume's 3D texture too
-  const double budget = MemoryBudgetBytes();
+  // the scene's memory budget (PLUME_MEMORY_BUDGET_MB) bounds the volume's 3D
+  // texture too, unless the scene set the mapper's own: refused before rendering
+  if (!(mapper->GetTextureMemoryBudgetMB() > 0))
+  {
+    mapper->SetTextureMemoryBudgetMB(MemoryBudgetBytes() / (1 << 20));
+  }
   {
     int dims[3];
     image->GetDimensions(dims);
-    const double bytes =
-      vtkPlumeVolumeMapper::GetTextureBytes(dims, image->GetPointData()->GetArray("vtkValidPointMask") != nullptr);
-    if (bytes > budget)
+    const std::string over = vtkPlumeVolumeMapper::CheckTextureBudget(dims,
+      image->GetPointData()->GetArray(mapper->GetValidMaskArrayName()) != nullptr, false,
+      mapper->GetTextureMemoryBudgetMB());
+    if (!over.empty())
     {
-      std::ostringstream message;
-      message << p.Where() << ": dataset '" << dataset << "' (" << dims[0] << "x" << dims[1] << "x" << dims[2]
-              << " points) needs " << std::setprecision(3) << bytes / (1 << 20)
-              << " MB of 3D texture, over the memory budget of " << budget / (1 << 20)
-              << " MB; resample it coarser (image_dimension) or raise PLUME_MEMORY_BUDGET_MB";
-      throw SceneError(message.str());
+      throw SceneError(p.Where() + ": dataset '" + dataset + "': " + over +
+        " (image_dimension), or raise PLUME_MEMORY_BUDGET_MB");
     }
   }
   vtkDataArray* array = RequirePointArray(image, arrayName, 0, p.Where(), dataset);
+  const int component = mapper->GetScalarComponent();
   if (component >= array->GetNumberOfComponents())
   {
     throw SceneError(p.Where() + ": 'component' " + std::to_string(component) + " but array '" +
@@ -82,7 +83,7 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   }
   const int rangeComponent = component >= 0 ? component : (array->GetNumberOfComponents() == 1 ? 0 : -1);
   // resampled data: the nodes outside it are left out of the range (the mapper draws nothing there)
-  vtkDataArray* mask = image->GetPointData()->GetArray("vtkValidPointMask");
+  vtkDataArray* mask = image->GetPointData()->GetArray(mapper->GetValidMaskArrayName());
   auto table = coloring.Table(array, rangeComponent, mask);
   if (mask && mask->GetNumberOfComponents() == 1)
   {
@@ -149,34 +150,17 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   property->SetSpecular(specular);
   property->SetSpecularPower(specularPower);
 
-  vtkNew<vtkPlumeVolumeMapper> mapper;
   mapper->SetInputData(image);
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SelectScalarArray(array->GetName());
-  mapper->SetScalarComponent(component);
-  mapper->SetSampleDistance(sampleDistance);
-  mapper->SetJitter(jitter);
-  mapper->SetOpacityThreshold(threshold);
-  mapper->SetShadowSampleDistance(shadowDistance);
-  mapper->SetUseOpaqueDepth(opaqueDepth);
-  mapper->SetTextureMemoryBudgetMB(budget / (1 << 20));
-  if (mode == "mip")
+  if (mode == vtkPlumeVolumeMapper::RENDER_ISOSURFACE)
   {
-    mapper->SetBlendModeToMaximumIntensity();
-  }
-  else if (mode == "isosurface")
-  {
-    mapper->SetBlendModeToIsoSurface();
     mapper->SetIsoValue(hasIso ? iso : 0.5 * (range[0] + range[1]));
     if (hasIso && (iso < range[0] || iso > range[1]))
     {
       std::cerr << "plume: warning: " << p.Where() << ": 'iso_value' " << iso << " is outside the data range ["
                 << range[0] << ", " << range[1] << "]: no surface will show\n";
     }
-  }
-  else if (mode == "smoke")
-  {
-    mapper->SmokeOn();
   }
   volume->SetMapper(mapper);
   renderer->AddVolume(volume);

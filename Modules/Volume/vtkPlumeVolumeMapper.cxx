@@ -3,6 +3,7 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
+#include "vtkPlumeParameterTable.h"
 #include "vtkPlumeScalarTexture3D.h"
 #include "vtkPlumeShaderVariants.h"
 #include "vtkPlumeVolumeFS.h"
@@ -150,6 +151,7 @@ vtkPlumeVolumeMapper::vtkPlumeVolumeMapper()
   : IsoValue(std::numeric_limits<double>::quiet_NaN())
   , Impl(new Internals)
 {
+  GetParameterTable().ApplyDefaults(this);
 }
 
 vtkPlumeVolumeMapper::~vtkPlumeVolumeMapper() = default;
@@ -157,6 +159,118 @@ vtkPlumeVolumeMapper::~vtkPlumeVolumeMapper() = default;
 int vtkPlumeVolumeMapper::GetUploadCount()
 {
   return this->Impl->Scalars->GetUploadCount();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeVolumeMapper::CheckTextureBudget(
+  const int dims[3], bool masked, bool shaded, double budgetMB)
+{
+  const double bytes = GetTextureBytes(dims, masked, shaded);
+  if (bytes <= budgetMB * Megabyte)
+  {
+    return std::string();
+  }
+  std::ostringstream msg;
+  msg << "volume " << dims[0] << "x" << dims[1] << "x" << dims[2] << " needs " << MB(bytes / Megabyte)
+      << " MB of 3D texture (" << (shaded ? 16 : (masked ? 8 : 4))
+      << " bytes per point), over the texture memory budget of " << MB(budgetMB)
+      << " MB; resample the data to a coarser image";
+  return msg.str();
+}
+
+void vtkPlumeVolumeMapper::SetRenderMode(int mode)
+{
+  mode = std::min(std::max(mode, static_cast<int>(RENDER_COMPOSITE)), static_cast<int>(RENDER_SMOKE));
+  const int blend = mode == RENDER_MIP ? MAXIMUM_INTENSITY_BLEND
+    : mode == RENDER_ISOSURFACE        ? ISOSURFACE_BLEND
+                                       : COMPOSITE_BLEND;
+  this->SetBlendMode(blend);
+  this->SetSmoke(mode == RENDER_SMOKE);
+}
+
+int vtkPlumeVolumeMapper::GetRenderMode()
+{
+  if (this->BlendMode == MAXIMUM_INTENSITY_BLEND)
+  {
+    return RENDER_MIP;
+  }
+  if (this->BlendMode == ISOSURFACE_BLEND)
+  {
+    return RENDER_ISOSURFACE;
+  }
+  return this->Smoke ? RENDER_SMOKE : RENDER_COMPOSITE;
+}
+
+const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
+{
+  static const vtkPlumeParameterTable table = [] {
+    using T = vtkPlumeVolumeMapper;
+    vtkPlumeParameterTable t("vtkPlumeVolumeMapper", "volume");
+    t.Choice("mode", "RenderMode", "composite")
+      .Choice("composite", RENDER_COMPOSITE, "emission-absorption with the transfer functions.")
+      .Choice("mip", RENDER_MIP, "maximum intensity.")
+      .Choice("isosurface", RENDER_ISOSURFACE, "first crossing of the iso value, Phong-lit.")
+      .Choice("smoke", RENDER_SMOKE, "emission-absorption lit by the scene's lights with self-shadowing.")
+      .Doc("How rays combine their samples.")
+      .Bind(&T::SetRenderMode, &T::GetRenderMode);
+    t.Integer("component", "ScalarComponent", -1)
+      .Between(-1, 1 << 20)
+      .Doc("Component of a multi-component array; -1: the only one, or the magnitude.")
+      .Bind(&T::SetScalarComponent, &T::GetScalarComponent);
+    t.Real("sample_distance", "SampleDistance", 0.5)
+      .Between(1e-3, 100.0)
+      .Units("voxels")
+      .Panel("Quality")
+      .Doc("Step along rays.")
+      .Bind(&T::SetSampleDistance, &T::GetSampleDistance);
+    t.Boolean("jitter", "Jitter", true)
+      .Panel("Quality")
+      .Doc("Per-pixel jitter of the first step (no wood-grain).")
+      .Bind(&T::SetJitter, &T::GetJitter);
+    t.Boolean("animated_jitter", "AnimatedJitter", false)
+      .Panel("Quality")
+      .Advanced()
+      .Doc("A new jitter pattern every frame (else a fixed one).")
+      .Bind(&T::SetAnimatedJitter, &T::GetAnimatedJitter);
+    t.Real("opacity_threshold", "OpacityThreshold", 0.995)
+      .Between(0.5, 1.0)
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Early ray termination at this opacity (1: never).")
+      .Bind(&T::SetOpacityThreshold, &T::GetOpacityThreshold);
+    t.Real("shadow_sample_distance", "ShadowSampleDistance", 1.0)
+      .Between(0.05, 100.0)
+      .Units("voxels")
+      .Panel("Quality")
+      .Doc("Step of the smoke's shadow rays.")
+      .Bind(&T::SetShadowSampleDistance, &T::GetShadowSampleDistance);
+    t.Boolean("opaque_depth", "UseOpaqueDepth", true)
+      .Panel("Compositing")
+      .Doc("Rays stop at opaque geometry (surfaces, contours, spheres, glyphs).")
+      .Bind(&T::SetUseOpaqueDepth, &T::GetUseOpaqueDepth);
+    t.Boolean("empty_space_skipping", "EmptySpaceSkipping", true)
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Jump over 8^3 blocks that cannot change the result (same image).")
+      .Bind(&T::SetEmptySpaceSkipping, &T::GetEmptySpaceSkipping);
+    t.Boolean("mip_skipping", "MIPSkipping", false)
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Empty-space skipping in MIP mode too (slower on llvmpipe, measured).")
+      .Bind(&T::SetMIPSkipping, &T::GetMIPSkipping);
+    t.Text("mask_array", "ValidMaskArrayName", "vtkValidPointMask")
+      .Advanced()
+      .Doc("Point array whose zeros mark nodes outside the data (resampled data); they draw nothing.")
+      .Bind(&T::SetValidMaskArrayName, &T::GetValidMaskArrayName);
+    t.Real("texture_memory_budget_mb", "TextureMemoryBudgetMB", 0.0)
+      .Between(0.0, 1e12)
+      .Units("MB")
+      .Advanced()
+      .Doc("Largest 3D texture; larger volumes are refused, never cropped (0: half the memory).")
+      .Bind(&T::SetTextureMemoryBudgetMB, &T::GetTextureMemoryBudgetMB);
+    return t;
+  }();
+  return table;
 }
 
 //------------------------------------------------------------------------------
@@ -297,14 +411,11 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     image->GetDimensions(dims);
     // masked: the mask's (cached) range includes 0
     const bool maybeMasked = mask && mask->GetRange(0)[0] <= 0.0 && mask->GetRange(0)[1] >= 0.0;
-    const double bytes = vtkPlumeVolumeMapper::GetTextureBytes(dims, maybeMasked, shade);
-    if (bytes > this->EffectiveTextureMemoryBudgetMB * Megabyte)
+    const std::string over =
+      CheckTextureBudget(dims, maybeMasked, shade, this->EffectiveTextureMemoryBudgetMB);
+    if (!over.empty())
     {
-      std::ostringstream msg;
-      msg << "volume " << dims[0] << "x" << dims[1] << "x" << dims[2] << " needs " << MB(bytes / Megabyte)
-          << " MB of 3D texture, over the texture memory budget of " << MB(this->EffectiveTextureMemoryBudgetMB)
-          << " MB (SetTextureMemoryBudgetMB); resample the data to a coarser image";
-      vtkErrorMacro(<< msg.str());
+      vtkErrorMacro(<< over << " (SetTextureMemoryBudgetMB)");
       return;
     }
   }

@@ -76,6 +76,7 @@
 #include <string> // For std::string
 
 class vtkImageData;
+class vtkPlumeParameterTable;
 
 class PLUMEVOLUME_EXPORT vtkPlumeVolumeMapper : public vtkVolumeMapper
 {
@@ -83,6 +84,32 @@ public:
   static vtkPlumeVolumeMapper* New();
   vtkTypeMacro(vtkPlumeVolumeMapper, vtkVolumeMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+#ifndef __VTK_WRAP__
+  /**
+   * The one declaration of the volume's user parameters (scene keys, defaults,
+   * ranges, documentation) that the scene reader, Documentation/SceneFormat.md
+   * and the ParaView XML are made from; the constructor applies its defaults.
+   */
+  static const vtkPlumeParameterTable& GetParameterTable();
+#endif
+
+  enum RenderModes
+  {
+    RENDER_COMPOSITE = 0, ///< emission-absorption with the transfer functions (COMPOSITE_BLEND)
+    RENDER_MIP = 1,       ///< maximum intensity (MAXIMUM_INTENSITY_BLEND)
+    RENDER_ISOSURFACE = 2, ///< first crossing of IsoValue, Phong-lit (ISOSURFACE_BLEND)
+    RENDER_SMOKE = 3      ///< emission-absorption lit by the scene's lights, self-shadowed (Smoke on)
+  };
+  ///@{
+  /**
+   * The four modes in one property (what scenes and ParaView set): the blend
+   * mode and Smoke together. Default RENDER_COMPOSITE. GetRenderMode reads
+   * them back (a blend mode with no mode of its own reads as composite).
+   */
+  void SetRenderMode(int mode);
+  int GetRenderMode();
+  ///@}
 
   ///@{
   /** Component of a multi-component array to render; -1 (default) = the only one or the magnitude. */
@@ -230,6 +257,14 @@ public:
    * with a mask, which stores none: an upper bound).
    */
   static double GetTextureBytes(const int dimensions[3], bool masked = false, bool shaded = false);
+
+  /**
+   * "" when a volume of these point dimensions fits a texture budget of
+   * `budgetMB`, else the one-line reason naming the dimensions, the bytes
+   * needed and the budget. Render() refuses with it; front doors (the plume
+   * command line) call it to refuse before loading and rendering.
+   */
+  static std::string CheckTextureBudget(const int dimensions[3], bool masked, bool shaded, double budgetMB);
 
   /** Number of 3D-texture uploads so far (tests check re-renders do not upload). */
   int GetUploadCount();

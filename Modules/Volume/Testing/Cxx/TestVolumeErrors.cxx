@@ -128,7 +128,7 @@ int TestVolumeErrors(int, char*[])
       ++failures;
     }
     s.Mapper->SetTextureMemoryBudgetMB(0.05);
-    failures += Expect("over the texture memory budget", s, "volume 40x24x16 needs 0.0589 MB of 3D texture, over the texture memory budget of 0.05 MB");
+    failures += Expect("over the texture memory budget", s, "volume 40x24x16 needs 0.0589 MB of 3D texture (4 bytes per point), over the texture memory budget of 0.05 MB");
     s.Mapper->SetTextureMemoryBudgetMB(0.07);
     const double background[3] = { 0.12, 0.1, 0.18 };
     const size_t drawn = plume::test::CountForeground(plume::test::ReadBack(s.Window), background, 2.0 / 255);
