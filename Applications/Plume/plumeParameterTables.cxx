@@ -2,6 +2,7 @@
 
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeSheetMapper.h"
+#include "vtkPlumeVelocityGlyphMapper.h"
 #include "vtkPlumeVolumeMapper.h"
 
 namespace plume
@@ -9,6 +10,7 @@ namespace plume
 const std::vector<const vtkPlumeParameterTable*>& ParameterTables()
 {
   static const std::vector<const vtkPlumeParameterTable*> tables = {
+    &vtkPlumeVelocityGlyphMapper::GetParameterTable(),
     &vtkPlumeVolumeMapper::GetParameterTable(),
     &vtkPlumeSheetMapper::GetParameterTable(),
   };

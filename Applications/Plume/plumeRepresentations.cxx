@@ -6,6 +6,7 @@
 #include "plumeScene.h"
 #include "plumeSceneError.h"
 
+#include "vtkPlumeParameterTable.h"
 #include "vtkPlumeVelocityGlyphMapper.h"
 
 #include "vtkActor.h"
@@ -34,19 +35,13 @@ namespace
 void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
 {
   const std::string dataset = p.String("dataset", "");
-  const std::string vectors = p.String("vectors", "");
-  const std::string mask = p.String("mask", "vtkValidPointMask");
-  const std::string roots = p.Choice("roots", "screen", { "screen", "lattice", "seeds" });
-  const int stride = p.Integer("stride", 1, 1, 1 << 20);
-  const double spacing = p.Number("screen_spacing", 12.0, 1.0, 1e6);
   const nlohmann::json* seedPlane = p.Object("seed_plane");
   const std::string seedDataset = p.String("seed_dataset", "");
-  const double scale = p.Number("scale", 1.0);
-  const std::string integrator = p.Choice("integrator", "straight", { "straight", "rk2", "rk4" });
-  const int segments = p.Integer("segments", 8, 1, 32);
-  const double minSpeed = p.Number("min_speed", 0.0, 0.0);
-  const double rootAlpha = p.Number("root_alpha", 0.0, 0.0, 1.0);
-  const double lineWidth = p.Number("line_width", 1.0, 0.5, 64.0);
+  // the mapper's own parameters (roots, scale, integrator, ...) come from its table
+  vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
+  p.Apply(vtkPlumeVelocityGlyphMapper::GetParameterTable(), mapper);
+  const int roots = mapper->GetRootMode();
+  const std::string rootsName = mapper->GetParameterTable().Find("roots")->FindOption(roots)->Key;
   const std::string colorBy = p.Choice("color_by", "magnitude", { "magnitude", "solid" });
   Coloring coloring;
   coloring.Read(p, { 1, 1, 1 });
@@ -55,7 +50,7 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   {
     throw SceneError(p.Where() + ": 'dataset' is required");
   }
-  if (roots == "seeds" && !seedPlane && seedDataset.empty())
+  if (roots == vtkPlumeVelocityGlyphMapper::ROOTS_SEEDS && !seedPlane && seedDataset.empty())
   {
     throw SceneError(p.Where() + ": roots \"seeds\" needs 'seed_plane' or 'seed_dataset'");
   }
@@ -63,33 +58,18 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   {
     throw SceneError(p.Where() + ": give 'seed_plane' or 'seed_dataset', not both");
   }
-  if ((seedPlane || !seedDataset.empty()) && roots != "seeds")
+  if ((seedPlane || !seedDataset.empty()) && roots != vtkPlumeVelocityGlyphMapper::ROOTS_SEEDS)
   {
     throw SceneError(p.Where() + ": '" + std::string(seedPlane ? "seed_plane" : "seed_dataset") +
-      "' is used only with roots \"seeds\" (roots is \"" + roots + "\")");
+      "' is used only with roots \"seeds\" (roots is \"" + rootsName + "\")");
   }
 
   vtkImageData* image = datasets.GetImage(dataset, p.Where());
-  vtkDataArray* array = RequirePointArray(image, vectors, 3, p.Where(), dataset);
+  vtkDataArray* array = RequirePointArray(image, mapper->GetVectorArrayName(), 3, p.Where(), dataset);
 
-  vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
   mapper->SetInputData(image);
   mapper->SetVectorArrayName(array->GetName() ? array->GetName() : "");
-  mapper->SetValidMaskArrayName(mask.c_str());
-  mapper->SetRootMode(roots == "screen" ? vtkPlumeVelocityGlyphMapper::ROOTS_SCREEN_ADAPTIVE
-      : roots == "lattice"             ? vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE
-                                       : vtkPlumeVelocityGlyphMapper::ROOTS_SEEDS);
-  mapper->SetLatticeStride(stride);
-  mapper->SetScreenSpacing(spacing);
-  mapper->SetScale(scale);
-  mapper->SetIntegrator(integrator == "rk2" ? vtkPlumeVelocityGlyphMapper::RK2
-      : integrator == "rk4"                 ? vtkPlumeVelocityGlyphMapper::RK4
-                                            : vtkPlumeVelocityGlyphMapper::STRAIGHT);
-  mapper->SetStreamletSegments(segments);
-  mapper->SetMinimumSpeed(minSpeed);
-  mapper->SetRootAlpha(rootAlpha);
-  mapper->SetLineWidth(lineWidth);
-  if (roots == "seeds")
+  if (roots == vtkPlumeVelocityGlyphMapper::ROOTS_SEEDS)
   {
     if (seedPlane)
     {

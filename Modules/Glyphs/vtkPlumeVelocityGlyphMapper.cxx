@@ -2,6 +2,7 @@
 
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeGLMatrix.h"
+#include "vtkPlumeParameterTable.h"
 #include "vtkPlumeShaderVariants.h"
 #include "vtkPlumeTextureHandOver.h"
 #include "vtkPlumeThrottledDraw.h"
@@ -284,6 +285,84 @@ vtkPlumeVelocityGlyphMapper::vtkPlumeVelocityGlyphMapper()
   this->SetNumberOfInputPorts(2);
   // after the opaque scene, before the media read its depth
   vtkPlumeCompositingPass::SetStage(this, vtkPlumeCompositingPass::STAGE_SURFACES);
+  GetParameterTable().ApplyDefaults(this);
+}
+
+const vtkPlumeParameterTable& vtkPlumeVelocityGlyphMapper::GetParameterTable()
+{
+  static const vtkPlumeParameterTable table = [] {
+    using T = vtkPlumeVelocityGlyphMapper;
+    vtkPlumeParameterTable t("vtkPlumeVelocityGlyphMapper", "glyphs");
+    t.Text("vectors", "VectorArrayName", "")
+      .Doc("3-component point array to draw; empty: the active vectors.")
+      .Bind(&T::SetVectorArrayName, &T::GetVectorArrayName);
+    t.Text("mask", "ValidMaskArrayName", "vtkValidPointMask")
+      .Advanced()
+      .Doc("Point array whose zeros mark nodes without glyphs (ignored if absent).")
+      .Bind(&T::SetValidMaskArrayName, &T::GetValidMaskArrayName);
+    t.Choice("roots", "RootMode", "screen")
+      .Choice("screen", ROOTS_SCREEN_ADAPTIVE,
+        "a lattice thinned to about one glyph per `screen_spacing` squared pixels, recomputed as the camera "
+        "moves.")
+      .Choice("lattice", ROOTS_LATTICE, "every `stride`-th node.")
+      .Choice("seeds", ROOTS_SEEDS, "the points of `seed_plane` or `seed_dataset`.")
+      .Panel("Roots")
+      .Doc("Where glyphs start.")
+      .Bind(&T::SetRootMode, &T::GetRootMode);
+    t.Integer("stride", "LatticeStride", 1)
+      .Between(1, 1 << 20)
+      .Panel("Roots")
+      .Doc("Lattice stride in grid nodes (roots `lattice`).")
+      .Bind(&T::SetLatticeStride, &T::GetLatticeStride);
+    t.Real("screen_spacing", "ScreenSpacing", 12.0)
+      .Between(1.0, 1e6)
+      .Units("pixels")
+      .Panel("Roots")
+      .Doc("Target distance between glyphs (roots `screen`).")
+      .Bind(&T::SetScreenSpacing, &T::GetScreenSpacing);
+    t.Real("scale", "Scale", 1.0)
+      .Between(-1e30, 1e30)
+      .Units("world units per unit speed")
+      .Doc("Glyph length per unit of velocity.")
+      .Bind(&T::SetScale, &T::GetScale);
+    t.Choice("integrator", "Integrator", "straight")
+      .Choice("straight", STRAIGHT, "one straight segment p to p + scale v(p) (seed 002).")
+      .Choice("rk2", RK2, "a streamlet following the flow, midpoint rule.")
+      .Choice("rk4", RK4, "a streamlet following the flow, classical Runge-Kutta.")
+      .Doc("Shape of each glyph.")
+      .Bind(&T::SetIntegrator, &T::GetIntegrator);
+    t.Integer("segments", "StreamletSegments", 8)
+      .Between(1, 32)
+      .Doc("Segments per streamlet (rk2, rk4).")
+      .Bind(&T::SetStreamletSegments, &T::GetStreamletSegments);
+    t.Real("min_speed", "MinimumSpeed", 0.0)
+      .Between(0.0, 1e30)
+      .Doc("Roots with a speed at or below this draw nothing.")
+      .Bind(&T::SetMinimumSpeed, &T::GetMinimumSpeed);
+    t.Real("root_alpha", "RootAlpha", 0.0)
+      .Between(0.0, 1.0)
+      .Doc("Opacity at the root; the tip is opaque (seed 002's fade-in).")
+      .Bind(&T::SetRootAlpha, &T::GetRootAlpha);
+    t.Real("line_width", "LineWidth", 1.0)
+      .Between(0.5, 64.0)
+      .Units("pixels")
+      .Doc("Line width.")
+      .Bind(&T::SetLineWidth, &T::GetLineWidth);
+    t.Choice("straight_line_shader", "StraightLineShader", "vertex")
+      .Choice("vertex", VERTEX_SHADER, "GL_LINES from gl_VertexID.")
+      .Choice("geometry", GEOMETRY_SHADER, "points expanded by a geometry shader.")
+      .Advanced()
+      .Doc("Shader path of straight 1-pixel lattice glyphs (same image).")
+      .Bind(&T::SetStraightLineShader, &T::GetStraightLineShader);
+    t.Integer("maximum_glyphs_per_draw", "MaximumGlyphsPerDraw", 262144)
+      .Between(0, 1e15)
+      .Advanced()
+      .Doc("Largest draw call; more roots are drawn two draws in flight at a time, which bounds the "
+           "driver's memory (0: one draw).")
+      .Bind(&T::SetMaximumGlyphsPerDraw, &T::GetMaximumGlyphsPerDraw);
+    return t;
+  }();
+  return table;
 }
 
 vtkPlumeVelocityGlyphMapper::~vtkPlumeVelocityGlyphMapper() = default;

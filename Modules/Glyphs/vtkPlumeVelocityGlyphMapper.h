@@ -95,6 +95,7 @@
 
 class vtkImageData;
 class vtkDataSet;
+class vtkPlumeParameterTable;
 
 class PLUMEGLYPHS_EXPORT vtkPlumeVelocityGlyphMapper : public vtkMapper
 {
@@ -102,6 +103,15 @@ public:
   static vtkPlumeVelocityGlyphMapper* New();
   vtkTypeMacro(vtkPlumeVelocityGlyphMapper, vtkMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+#ifndef __VTK_WRAP__
+  /**
+   * The one declaration of the glyphs' user parameters (scene keys, defaults,
+   * ranges, documentation) that the scene reader, Documentation/SceneFormat.md
+   * and the ParaView XML are made from; the constructor applies its defaults.
+   */
+  static const vtkPlumeParameterTable& GetParameterTable();
+#endif
 
   enum RootModes
   {

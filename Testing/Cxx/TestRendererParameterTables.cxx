@@ -1,0 +1,111 @@
+// Each renderer's parameter table agrees with its C++ class: after
+// construction every getter returns the table's default; every setter keeps
+// the ends of the table's range and each named choice unchanged (a class that
+// clamps tighter than its table, or a binding to the wrong property, fails);
+// defaults lie in their own ranges; keys and properties are unique.
+#include "vtkPlumeParameterTable.h"
+#include "vtkPlumeSheetMapper.h"
+#include "vtkPlumeVelocityGlyphMapper.h"
+#include "vtkPlumeVolumeMapper.h"
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+
+namespace
+{
+using Table = vtkPlumeParameterTable;
+
+bool Same(const Table::Value& a, const Table::Value& b)
+{
+  return Table::Format(a) == Table::Format(b);
+}
+
+int CheckTable(const Table& table, vtkObject* fresh, vtkObject* scratch)
+{
+  int failures = 0;
+  std::set<std::string> keys, properties;
+  for (const Table::Parameter& p : table.GetParameters())
+  {
+    auto fail = [&](const std::string& what) {
+      std::printf("%s.%s: %s\n", table.GetClassName().c_str(), p.Key.c_str(), what.c_str());
+      ++failures;
+    };
+    if (!keys.insert(p.Key).second || !properties.insert(p.Property).second)
+    {
+      fail("key or property declared twice");
+    }
+    if (!p.Setter || !p.Getter)
+    {
+      fail("not bound to the class");
+      continue;
+    }
+    if (!p.Check(p.Default).empty())
+    {
+      fail("default outside its own range: " + p.Check(p.Default));
+    }
+    if (!Same(p.Get(fresh), p.Default))
+    {
+      fail("getter after construction " + Table::Format(p.Get(fresh)) + " != table default " +
+        Table::Format(p.Default));
+    }
+    std::vector<Table::Value> probes;
+    switch (p.Type)
+    {
+      case Table::Kind::Boolean:
+        probes = { true, false };
+        break;
+      case Table::Kind::Integer:
+        probes = { static_cast<long long>(p.Minimum), static_cast<long long>(p.Maximum) };
+        break;
+      case Table::Kind::Real:
+        probes = { p.Minimum, p.Maximum };
+        break;
+      case Table::Kind::Choice:
+        for (const auto& o : p.Options)
+        {
+          probes.emplace_back(o.Key);
+        }
+        break;
+      case Table::Kind::Text:
+        probes = { std::string("some_array"), std::string() };
+        break;
+      case Table::Kind::Vector3:
+      case Table::Kind::Color:
+        probes = { std::array<double, 3>{ 0.25, 0.5, 1.0 } };
+        break;
+    }
+    for (const Table::Value& v : probes)
+    {
+      p.Set(scratch, v);
+      if (!Same(p.Get(scratch), v))
+      {
+        fail("set " + Table::Format(v) + ", got back " + Table::Format(p.Get(scratch)));
+      }
+    }
+  }
+  std::printf("%s: %zu parameters checked\n", table.GetClassName().c_str(), table.GetParameters().size());
+  return failures;
+}
+}
+
+int main()
+{
+  int failures = 0;
+  {
+    vtkNew<vtkPlumeSheetMapper> a, b;
+    failures += CheckTable(vtkPlumeSheetMapper::GetParameterTable(), a, b);
+  }
+  {
+    vtkNew<vtkPlumeVolumeMapper> a, b;
+    failures += CheckTable(vtkPlumeVolumeMapper::GetParameterTable(), a, b);
+  }
+  {
+    vtkNew<vtkPlumeVelocityGlyphMapper> a, b;
+    failures += CheckTable(vtkPlumeVelocityGlyphMapper::GetParameterTable(), a, b);
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
