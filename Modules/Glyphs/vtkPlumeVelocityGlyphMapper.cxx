@@ -2,6 +2,7 @@
 
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeGLMatrix.h"
+#include "vtkPlumeImageFrame.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeShaderVariants.h"
 #include "vtkPlumeTextureHandOver.h"
@@ -659,17 +660,9 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   }
 
   // ---- geometry: index space -> centre-relative model -> clip, composed in double
-  double spacing[3], origin[3];
-  image->GetSpacing(spacing);
-  image->GetOrigin(origin);
-  // axis-aligned images (VTK 9.1 has no image direction matrix)
-  double indexToModel[16] = { 0 };
-  for (int r = 0; r < 3; ++r)
-  {
-    indexToModel[4 * r + r] = spacing[r];
-    indexToModel[4 * r + 3] = origin[r];
-  }
-  indexToModel[15] = 1.0;
+  // (the image's direction matrix and extent start honoured, as every renderer does)
+  double indexToModel[16];
+  plume::IndexToPhysical(image, indexToModel);
   double centre[4];
   const double mid[3] = { 0.5 * (dims[0] - 1), 0.5 * (dims[1] - 1), 0.5 * (dims[2] - 1) };
   Apply(indexToModel, mid, centre);
@@ -677,7 +670,7 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   std::copy(indexToModel, indexToModel + 16, indexToRel);
   for (int r = 0; r < 3; ++r)
   {
-    indexToRel[4 * r + 3] = origin[r] - centre[r];
+    indexToRel[4 * r + 3] = indexToModel[4 * r + 3] - centre[r];
   }
   double relToIndex[16];
   vtkMatrix4x4::Invert(indexToRel, relToIndex);

@@ -76,8 +76,10 @@
  * (camera x actor x translation to the centre), so data far from the origin
  * (e.g. at 1e6) renders like the same data at the origin.
  *
- * Images are taken as axis-aligned (origin + index·spacing); a VTK ≥ 9.2
- * image direction matrix is ignored.
+ * Image geometry: node (i, j, k) of the extent lies at
+ * origin + D·(spacing ∘ (i, j, k)), D the image's direction matrix (the
+ * frame every Plume renderer shares, vtkPlumeImageFrame.h); vectors are taken
+ * in those physical coordinates, as VTK's filters write them.
  *
  * Errors (no input, no vectors, a named array that is missing or does not
  * have 3 components, a grid larger than GL_MAX_3D_TEXTURE_SIZE) are reported

@@ -2,6 +2,7 @@
 
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeCompositingPass.h"
+#include "vtkPlumeImageFrame.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeScalarTexture3D.h"
@@ -601,22 +602,8 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   int dims[3], extent[6];
   image->GetDimensions(dims);
   image->GetExtent(extent);
-  double spacing[3], origin[3];
-  image->GetSpacing(spacing);
-  image->GetOrigin(origin);
-  const double* dir = image->GetDirectionMatrix()->GetData();
-  double indexToData[16] = { 0 };
-  for (int r = 0; r < 3; ++r)
-  {
-    indexToData[4 * r + 3] = origin[r];
-    for (int c = 0; c < 3; ++c)
-    {
-      indexToData[4 * r + c] = dir[3 * r + c] * spacing[c];
-      // index i of the texture is extent index extent[2c] + i
-      indexToData[4 * r + 3] += dir[3 * r + c] * spacing[c] * extent[2 * c];
-    }
-  }
-  indexToData[15] = 1.0;
+  double indexToData[16];
+  plume::IndexToPhysical(image, indexToData);
   double indexToWorld[16];
   vtkMatrix4x4::Multiply4x4(vol->GetMatrix()->GetData(), indexToData, indexToWorld);
   double aspect[2];
