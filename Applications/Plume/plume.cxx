@@ -1,6 +1,5 @@
 // plume: the command line of Plume — render a JSON scene, describe a dataset,
 // run a benchmark. Errors print one line naming the problem and exit non-zero.
-#include "plumeBenchmarks.h"
 #include "plumeImageOutput.h"
 #include "plumeInfo.h"
 #include "plumeOutputWindow.h"
@@ -9,7 +8,6 @@
 #include "plumeRenderWindowFactory.h"
 #include "plumeScene.h"
 #include "plumeSceneError.h"
-#include "plumeTestSupport.h"
 
 #include "vtkPlumeDatasetReader.h"
 #include "vtkPlumeParameterTable.h"
@@ -90,13 +88,13 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
     plume::DrawProgress("rendering", 0);
   }
   // EXR: the frame from a float framebuffer (the window's is 8 bits per channel)
-  const plume::test::FloatImage image =
-    ext == ".exr" ? plume::RenderFloat(window, renderer) : plume::test::ReadBack(window);
+  const plume::FloatImage image =
+    ext == ".exr" ? plume::RenderFloat(window, renderer) : plume::ReadBack(window);
   if (options.Progress)
   {
     plume::DrawProgress("rendering", 1);
   }
-  const std::string glErrors = plume::test::GLErrors(window);
+  const std::string glErrors = plume::GLErrors(window);
   if (!glErrors.empty())
   {
     throw plume::SceneError("OpenGL reported errors while rendering: " + glErrors);
@@ -106,105 +104,6 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   return 0;
 }
 
-/** Runs one benchmark job in a child process (fresh peak memory) and returns its JSON. */
-nlohmann::json RunJobInChild(
-  const std::string& name, const std::string& job, bool quick, const std::string& backend)
-{
-  int fds[2];
-  if (pipe(fds) != 0)
-  {
-    throw plume::SceneError("bench: cannot create a pipe");
-  }
-  const pid_t pid = fork();
-  if (pid == 0)
-  {
-    dup2(fds[1], STDOUT_FILENO);
-    close(fds[0]);
-    close(fds[1]);
-    std::vector<std::string> args = { "plume", "--backend", backend, "bench", name, "--job", job };
-    if (quick)
-    {
-      args.push_back("--quick");
-    }
-    std::vector<char*> argv;
-    for (auto& a : args)
-    {
-      argv.push_back(a.data());
-    }
-    argv.push_back(nullptr);
-    execv("/proc/self/exe", argv.data());
-    _exit(127);
-  }
-  close(fds[1]);
-  std::string text;
-  char buffer[4096];
-  ssize_t got;
-  while ((got = read(fds[0], buffer, sizeof(buffer))) > 0)
-  {
-    text.append(buffer, static_cast<size_t>(got));
-  }
-  close(fds[0]);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-  {
-    throw plume::SceneError("bench " + name + ": job '" + job + "' failed (exit status " +
-      std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
-  }
-  try
-  {
-    return nlohmann::json::parse(text.substr(text.rfind('{', text.rfind("{\"") + 1) == std::string::npos ? 0 : text.rfind("{\"")));
-  }
-  catch (const std::exception&)
-  {
-    throw plume::SceneError("bench " + name + ": job '" + job + "' printed no result: " + text);
-  }
-}
-
-int Bench(const std::string& name, bool quick, const std::string& job, plume::Backend backend, bool list)
-{
-  const auto& registry = plume::bench::Registry();
-  if (list)
-  {
-    for (const auto& b : registry)
-    {
-      std::cout << b.first << "\t" << b.second.Description << "\n";
-    }
-    return 0;
-  }
-  auto it = registry.find(name);
-  if (it == registry.end())
-  {
-    std::string known;
-    for (const auto& b : registry)
-    {
-      known += (known.empty() ? "" : ", ") + b.first;
-    }
-    throw plume::SceneError("unknown benchmark '" + name + "' (known: " + known + ")");
-  }
-  const plume::bench::Benchmark& benchmark = it->second;
-  if (!job.empty())
-  {
-    plume::bench::Context context;
-    context.Quick = quick;
-    context.MakeWindow = [backend](int w, int h) { return MakeWindow(backend, w, h); };
-    std::cout << benchmark.Run(context, job).dump() << std::endl;
-    return 0;
-  }
-  const auto jobs = benchmark.Jobs(quick);
-  std::map<std::string, nlohmann::json> results;
-  for (size_t i = 0; i < jobs.size(); ++i)
-  {
-    plume::DrawProgress("bench " + name, double(i) / jobs.size());
-    results[jobs[i]] = RunJobInChild(name, jobs[i], quick, plume::BackendName(backend));
-  }
-  plume::DrawProgress("bench " + name, 1);
-  for (const auto& line : benchmark.Report(results, quick))
-  {
-    std::cout << line.dump() << std::endl;
-  }
-  return 0;
-}
 }
 
 // `plume params [TYPE]`: the Markdown tables of Documentation/SceneFormat.md,
@@ -234,8 +133,53 @@ static int Params(const std::string& type)
   return 0;
 }
 
+// `plume bench ...` runs plume-bench, built beside plume with the tests: the
+// benchmarks measure against the test references, which the shipped product
+// does not link. Returns only if plume-bench cannot be started.
+int ExecBench(int argc, char* argv[], int benchIndex)
+{
+  const std::string self = vtksys::SystemTools::GetRealPath("/proc/self/exe");
+  const std::string tool = vtksys::SystemTools::GetFilenamePath(self) + "/plume-bench";
+  std::vector<std::string> args = { tool };
+  for (int i = 1; i < argc; ++i)
+  {
+    if (i != benchIndex)
+    {
+      args.emplace_back(argv[i]);
+    }
+  }
+  std::vector<char*> pointers;
+  for (auto& a : args)
+  {
+    pointers.push_back(a.data());
+  }
+  pointers.push_back(nullptr);
+  execv(tool.c_str(), pointers.data());
+  std::cerr << "plume: error: bench: cannot run '" << tool
+            << "' (benchmarks are built with the tests in the build tree and are not installed)\n";
+  return 2;
+}
+
 int main(int argc, char* argv[])
 {
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "--backend")
+    {
+      ++i; // its value
+      continue;
+    }
+    if (a == "bench")
+    {
+      return ExecBench(argc, argv, i);
+    }
+    if (a.empty() || a[0] != '-')
+    {
+      break; // another subcommand
+    }
+  }
+
   // Debian's VTK defaults to the sequential SMP backend; use real threads
   // unless the user chose a backend through the environment.
   if (!std::getenv("VTK_SMP_BACKEND_IN_USE"))
@@ -271,13 +215,10 @@ int main(int argc, char* argv[])
   info->add_flag("--no-merge", noMerge, "keep multiblock data as blocks");
   info->add_flag("--json", json, "print JSON");
 
-  auto* bench = app.add_subcommand("bench", "run a named benchmark (JSON lines on stdout)");
-  std::string benchName, job;
-  bool quick = false, list = false;
-  bench->add_option("name", benchName, "benchmark name (--list shows them)");
-  bench->add_flag("--quick", quick, "small sizes and few frames (smoke test)");
-  bench->add_flag("--list", list, "list the benchmarks");
-  bench->add_option("--job", job, "run one job in this process (used internally)")->group("");
+  // listed for --help; main() hands `plume bench ...` to plume-bench before parsing
+  app.add_subcommand("bench", "run a named benchmark (JSON lines on stdout; plume bench --list)")
+    ->allow_extras()
+    ->prefix_command();
 
   auto* params = app.add_subcommand("params", "the parameters of each representation (Markdown tables)");
   std::string paramsType;
@@ -330,14 +271,6 @@ int main(int argc, char* argv[])
     else if (*params)
     {
       status = Params(paramsType);
-    }
-    else if (*bench)
-    {
-      if (benchName.empty() && !list)
-      {
-        throw plume::SceneError("bench: name a benchmark (plume bench --list shows them)");
-      }
-      status = Bench(benchName, quick, job, backend, list);
     }
   }
   catch (const std::exception& e)

@@ -69,7 +69,7 @@ std::vector<float> DownloadFloats(vtkTextureObject* texture, int components)
 }
 }
 
-test::FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer)
+FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer)
 {
   vtkSmartPointer<vtkRenderPass> previous = renderer->GetPass();
   vtkNew<vtkRenderStepsPass> steps;
@@ -80,7 +80,7 @@ test::FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer)
   // window's framebuffer, and a depth blit needs matching formats
   renderer->SetPass(framebuffer);
   window->Render();
-  test::FloatImage image;
+  FloatImage image;
   try
   {
     vtkTextureObject* color = framebuffer->GetColorTexture();
@@ -107,7 +107,7 @@ test::FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer)
 
 namespace
 {
-void WritePNG(const std::string& path, const test::FloatImage& image)
+void WritePNG(const std::string& path, const FloatImage& image)
 {
   vtkNew<vtkImageData> out;
   out->SetDimensions(image.Width, image.Height, 1);
@@ -133,7 +133,7 @@ void WritePNG(const std::string& path, const test::FloatImage& image)
   }
 }
 
-void WriteEXR(const std::string& path, const test::FloatImage& image, vtkCamera* camera)
+void WriteEXR(const std::string& path, const FloatImage& image, vtkCamera* camera)
 {
   const int w = image.Width, h = image.Height;
   // EXR rows run top to bottom; OpenGL's bottom to top.
@@ -180,7 +180,7 @@ void WriteEXR(const std::string& path, const test::FloatImage& image, vtkCamera*
 }
 }
 
-void WriteImage(const std::string& path, const test::FloatImage& image, vtkCamera* camera)
+void WriteImage(const std::string& path, const FloatImage& image, vtkCamera* camera)
 {
   const std::string ext = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
   if (ext == ".png")

@@ -4,7 +4,7 @@
 #ifndef plumeImageOutput_h
 #define plumeImageOutput_h
 
-#include "plumeTestSupport.h"
+#include "vtkPlumeFrameReadBack.h"
 
 #include <string>
 
@@ -15,7 +15,7 @@ class vtkRenderer;
 namespace plume
 {
 /** Writes `image` to `path`; the format comes from the extension (.png or .exr). Throws SceneError. */
-void WriteImage(const std::string& path, const test::FloatImage& image, vtkCamera* camera);
+void WriteImage(const std::string& path, const FloatImage& image, vtkCamera* camera);
 /**
  * Renders `window` with `renderer`'s passes inside a float framebuffer
  * (RGBA32F colour; depth in the window's format) and returns that frame unquantised:
@@ -24,7 +24,7 @@ void WriteImage(const std::string& path, const test::FloatImage& image, vtkCamer
  * in the window's (multisampled) PNG output.
  * The renderer's pass is restored afterwards. Throws SceneError on failure.
  */
-test::FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer);
+FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer);
 /** Window depth (0..1) to distance along the view direction, for the camera's clipping range. */
 double LinearDepth(double windowDepth, vtkCamera* camera);
 }

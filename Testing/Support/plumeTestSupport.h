@@ -4,6 +4,7 @@
 #ifndef plumeTestSupport_h
 #define plumeTestSupport_h
 
+#include "vtkPlumeFrameReadBack.h" // For FloatImage, ReadBack, GLErrors, HasNonFinite
 #include "vtkSmartPointer.h"
 
 #include <iostream>
@@ -36,18 +37,10 @@ vtkSmartPointer<vtkImageData> LoadImage(const std::string& relative, int maxDime
 /** An offscreen render window of the given size (needs a display; tests run under Xvfb). */
 vtkSmartPointer<vtkRenderWindow> MakeOffscreenWindow(int width, int height);
 
-/** Colour (RGBA, 0..1) and depth (0..1 window depth) of a rendered window, bottom row first. */
-struct FloatImage
-{
-  int Width = 0;
-  int Height = 0;
-  std::vector<float> RGBA;  // Width*Height*4
-  std::vector<float> Depth; // Width*Height
-  const float* Pixel(int x, int y) const { return &this->RGBA[4 * (static_cast<size_t>(y) * this->Width + x)]; }
-};
-
-/** Read back the last rendered frame of `window` (renders first if `render` is true). */
-FloatImage ReadBack(vtkRenderWindow* window, bool render = true);
+// Frame read-back is product code (plume render writes it); the tests use it
+// under their own names.
+using plume::FloatImage;
+using plume::ReadBack;
 
 /** Root-mean-square and maximum absolute difference over the first `channels` channels. */
 struct ImageError
@@ -57,14 +50,12 @@ struct ImageError
 };
 ImageError Compare(const FloatImage& a, const FloatImage& b, int channels = 3);
 
-/** True if any colour or depth value is NaN or infinite. */
-bool HasNonFinite(const FloatImage& image);
+using plume::HasNonFinite;
 
 /** Number of pixels whose RGB differs from `background` by more than `tolerance`. */
 size_t CountForeground(const FloatImage& image, const double background[3], double tolerance = 1.0 / 255);
 
-/** Drain the GL error queue of the window's context; returns a description or "" when clean. */
-std::string GLErrors(vtkRenderWindow* window);
+using plume::GLErrors;
 }
 }
 
