@@ -106,11 +106,14 @@ vtkDataArray* NamedArray(vtkPolyData* poly, const std::string& name, int compone
 class vtkPlumeSheetMapper::Internals
 {
 public:
-  // what the triangle buffer was built from
+  // what the triangle buffer was built from: the mesh and which arrays feed
+  // it (constant density, blur and thickness are uniforms: changing them
+  // uploads nothing)
   using Signature = std::tuple<vtkPolyData*, vtkMTimeType, std::string, std::string, std::string,
-    std::string, double, double, double, double, bool>;
+    std::string>;
   Signature Uploaded;
   bool HaveUpload = false;
+  bool DensityFromArray = false, BlurFromArray = false, ThicknessFromArray = false;
   double Centre[3] = { 0, 0, 0 };
   GLsizei VertexCount = 0;
 
@@ -389,10 +392,11 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
   }
   impl.Window = renWin;
 
-  // ---- triangles: rebuilt only when the mesh or the density/sigma settings change
+  // ---- triangles: rebuilt only when the mesh or the arrays it takes change.
+  // A corner carries its array values, or 1 where a constant applies; the
+  // constants and the density scale multiply them as uniforms (SheetFactors).
   Internals::Signature sig{ poly, poly->GetMTime(), this->DensityArrayName, this->BlurArrayName,
-    this->ThicknessArrayName, this->AbsorptionArrayName, this->Density * this->DensityScale,
-    this->BlurRadius, this->Thickness, this->DensityScale, this->ThinSheet };
+    this->ThicknessArrayName, this->AbsorptionArrayName };
   if (!impl.HaveUpload || sig != impl.Uploaded || !impl.Buffer->GetHandle())
   {
     vtkDataArray* dArr = NamedArray(poly, this->DensityArrayName, 1);
@@ -430,7 +434,7 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     auto corner = [&](vtkIdType id, float* out, bool& finite, double p[3]) {
       poly->GetPoint(id, p);
       finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-      double d = Clean((dArr ? dArr->GetComponent(id, 0) : this->Density) * this->DensityScale);
+      double d = dArr ? Clean(dArr->GetComponent(id, 0)) : 1.0;
       double rgb[3] = { 1, 1, 1 };
       if (aArr)
       {
@@ -444,10 +448,8 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
         out[a] = static_cast<float>(p[a] - impl.Centre[a]);
         out[3 + a] = static_cast<float>(std::min(d * rgb[a], 1e30));
       }
-      out[6] = static_cast<float>(std::min(Clean(bArr ? bArr->GetComponent(id, 0) : this->BlurRadius), 1e30));
-      out[7] = this->ThinSheet
-        ? 0.0f
-        : static_cast<float>(std::min(Clean(tArr ? tArr->GetComponent(id, 0) : this->Thickness), 1e30));
+      out[6] = bArr ? static_cast<float>(std::min(Clean(bArr->GetComponent(id, 0)), 1e30)) : 1.0f;
+      out[7] = tArr ? static_cast<float>(std::min(Clean(tArr->GetComponent(id, 0)), 1e30)) : 1.0f;
     };
     auto addTriangle = [&](vtkIdType i0, vtkIdType i1, vtkIdType i2) {
       float c[3][8];
@@ -512,10 +514,19 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     impl.Uploaded = sig;
     impl.HaveUpload = true;
     ++this->UploadCount;
+    impl.DensityFromArray = dArr != nullptr;
+    impl.BlurFromArray = bArr != nullptr;
+    impl.ThicknessFromArray = tArr != nullptr;
   }
-  if (impl.VertexCount < 3)
+  // what multiplies the uploaded corner values (the constants, where no array is used)
+  const float factors[3] = {
+    static_cast<float>(std::min(Clean((impl.DensityFromArray ? 1.0 : this->Density) * this->DensityScale), 1e30)),
+    static_cast<float>(impl.BlurFromArray ? 1.0 : std::min(Clean(this->BlurRadius), 1e30)),
+    static_cast<float>(this->ThinSheet ? 0.0 : (impl.ThicknessFromArray ? 1.0 : std::min(Clean(this->Thickness), 1e30)))
+  };
+  if (impl.VertexCount < 3 || !(factors[0] > 0.0f))
   {
-    return;
+    return; // no triangle, or no density anywhere
   }
 
   int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
@@ -667,6 +678,7 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
 
     plume::SetUniformMatrix4x4(program, "MCVCRel", mcvcRel);
     program->SetUniformf("ModelToEyeScale", static_cast<float>(modelScale));
+    program->SetUniform3f("SheetFactors", factors);
     plume::SetUniformMatrix4x4(program, "Projection", vcdc);
     plume::SetUniformMatrix4x4(program, "InverseProjection", dcvc);
     const float vp[2] = { float(vpWidth), float(vpHeight) };

@@ -5,11 +5,14 @@
 // centre; MCVCRel (composed in double on the CPU) takes them to eye space.
 
 in vec3 sheetPosition;
-in vec3 sheetDensity; // d times the RGB absorption (or d, d, d)
-in vec2 sheetSigma;   // (sigma_b, sigma_t) in model units
+in vec3 sheetDensity; // d times the RGB absorption (or d, d, d); 1 where the constant applies
+in vec2 sheetSigma;   // (sigma_b, sigma_t) in model units; 1 where the constant applies
 
 uniform mat4 MCVCRel;
 uniform float ModelToEyeScale; // length scale of the actor matrix (sigmas are lengths)
+// (density scale [x constant density], constant blur or 1, constant thickness
+// or 1; thickness 0 for a thin sheet): a slider on a constant uploads nothing
+uniform vec3 SheetFactors;
 
 out vec3 cornerEye;
 out vec3 cornerDensity;
@@ -19,8 +22,8 @@ flat out int cornerTriangle; // the triangle's index in the whole mesh, whatever
 void main()
 {
   cornerEye = (MCVCRel * vec4(sheetPosition, 1.0)).xyz;
-  cornerDensity = sheetDensity;
-  cornerSigma = sheetSigma * ModelToEyeScale;
+  cornerDensity = min(sheetDensity * SheetFactors.x, vec3(1e30));
+  cornerSigma = min(sheetSigma * SheetFactors.yz, vec2(1e30)) * ModelToEyeScale;
   cornerTriangle = gl_VertexID / 3; // gl_VertexID includes the draw's first: the index in the whole buffer
   gl_Position = vec4(cornerEye, 1.0);
 }

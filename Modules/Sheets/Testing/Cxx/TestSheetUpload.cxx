@@ -1,5 +1,5 @@
-// Test (no baseline): camera moves upload nothing; density/sigma changes
-// re-upload; zero-density triangles are culled on the CPU and off-screen
+// Test (no baseline): camera moves and constant density/sigma/thin changes
+// (uniforms) upload nothing; changing which arrays feed the mesh re-uploads; zero-density triangles are culled on the CPU and off-screen
 // ones draw nothing; draws split into chunks give the same image, random grid
 // offsets included (each triangle keeps its id); the bounds cover the smoke, not just the mesh (VTK sets
 // the clipping range from them, and the sheet, like VTK's volume mappers,
@@ -32,9 +32,42 @@ int TestSheetUpload(int, char*[])
   s.Mapper->SetGridA(5);
   s.Window->Render();
   PLUME_CHECK(s.Mapper->GetUploadCount() == 1); // shading settings: no upload
-  s.Mapper->SetBlurRadius(0.07);
-  s.Window->Render();
-  PLUME_CHECK(s.Mapper->GetUploadCount() == 2);
+  {
+    // constants are uniforms: a slider on blur, thickness, density scale or
+    // thin uploads nothing, yet each takes effect
+    auto frame = plume::test::ReadBack(s.Window);
+    auto changed = [&](const char* what) {
+      const auto next = plume::test::ReadBack(s.Window);
+      const double d = plume::test::Compare(frame, next).Max;
+      std::printf("%s: uploads %d, image change %.3f\n", what, s.Mapper->GetUploadCount(), d);
+      PLUME_CHECK(s.Mapper->GetUploadCount() == 1);
+      PLUME_CHECK(d > 0.01);
+      frame = next;
+    };
+    s.Mapper->SetBlurRadius(0.07);
+    changed("blur 0.05 -> 0.07");
+    s.Mapper->SetThickness(0.09);
+    changed("thickness 0.05 -> 0.09");
+    s.Mapper->SetDensityScale(1.7);
+    changed("density scale 1 -> 1.7");
+    s.Mapper->ThinSheetOn();
+    changed("thin on");
+    s.Mapper->ThinSheetOff();
+    changed("thin off");
+    s.Mapper->SetDensityScale(1.0);
+    s.Mapper->SetThickness(0.05);
+    // which arrays feed the triangles is in the buffer: that uploads
+    s.Mapper->SetDensityArrayName("");
+    s.Mapper->SetDensity(0.5);
+    s.Window->Render();
+    PLUME_CHECK(s.Mapper->GetUploadCount() == 2);
+    s.Mapper->SetDensity(0.8); // a constant again: no upload
+    s.Window->Render();
+    PLUME_CHECK(s.Mapper->GetUploadCount() == 2);
+    s.Mapper->SetDensityArrayName("density");
+    s.Window->Render();
+    PLUME_CHECK(s.Mapper->GetUploadCount() == 3);
+  }
   {
     // mesh bounds padded by Cutoff x the largest sigma (0.07 blur, 0.05 thickness)
     double mesh[6];
@@ -75,7 +108,7 @@ int TestSheetUpload(int, char*[])
   d->Modified();
   ring->Modified();
   s.Window->Render();
-  PLUME_CHECK(s.Mapper->GetUploadCount() == 3);
+  PLUME_CHECK(s.Mapper->GetUploadCount() == 4);
   PLUME_CHECK(s.Mapper->GetTriangleCount() == (12 - 1) * 6 * 2);
   // looking away: nothing drawn, background only
   s.Camera(0, 0, 4, 0, 0, 10);
