@@ -4,6 +4,8 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeImageFrame.h"
 #include "vtkPlumeParameterTable.h"
+#include "vtkPlumeShaderFeatures.h"
+#include "vtkPlumeShaderProgramCache.h"
 #include "vtkPlumeShaderVariants.h"
 #include "vtkPlumeTextureHandOver.h"
 #include "vtkPlumeThrottledDraw.h"
@@ -235,7 +237,7 @@ public:
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
   vtkNew<vtkOpenGLVertexArrayObject> SeedVAO;
   vtkNew<vtkOpenGLBufferObject> SeedBuffer;
-  std::map<std::string, vtkShaderProgram*> Programs; // owned by the window's shader cache
+  vtkNew<vtkPlumeShaderProgramCache> Programs;
   vtkShaderProgram* SeedVAOProgram = nullptr;
   int Max3DTextureSize = 0;
 
@@ -265,7 +267,7 @@ public:
     this->EmptyVAO->ReleaseGraphicsResources();
     this->SeedVAO->ReleaseGraphicsResources();
     this->SeedBuffer->ReleaseGraphicsResources();
-    this->Programs.clear();
+    this->Programs->ReleaseGraphicsResources(window);
     this->SeedVAOProgram = nullptr;
     this->Uploaded = Signature();
     this->LUTTime = 0;
@@ -861,11 +863,17 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   vtkProperty* property = actor->GetProperty();
   const bool opaque = this->RootAlpha >= 1.0 && property->GetOpacity() >= 1.0 &&
     (!useLUT || impl.LUTOpaque);
-  const std::set<std::string> enabled = { seedMode ? "SEEDS" : "LATTICE", integrator,
-    wide ? "WIDE" : "THIN", useLUT ? "LUT" : "SOLID", opaque ? "OPAQUE" : "FADE" };
-  std::ostringstream key;
-  key << (lineVS ? "V" : "G") << (seedMode ? "S" : "L") << integrator << segments
-      << (wide ? "W" : "T") << (useLUT ? "C" : "P") << (opaque ? "O" : "F");
+  vtkPlumeShaderFeatures features;
+  features.Enable(seedMode ? "SEEDS" : "LATTICE")
+    .Enable(integrator)
+    .Enable(wide ? "WIDE" : "THIN")
+    .Enable(useLUT ? "LUT" : "SOLID")
+    .Enable(opaque ? "OPAQUE" : "FADE")
+    .Define("PLUME_SEGMENTS", segments)
+    .Define("PLUME_POINTS", segments + 1)
+    .Define("PLUME_VERTICES_WIDE", 2 * (segments + 1));
+  const char* vsTemplate = lineVS ? vtkPlumeGlyphLineVS : vtkPlumeGlyphVS;
+  const char* gsTemplate = lineVS ? nullptr : vtkPlumeGlyphGS;
   // A translucent actor is drawn inside VTK's translucent pass (order-
   // independent transparency or depth peeling), which rewrites fragment
   // shaders through the actor's render-pass keys and owns the blending.
@@ -879,22 +887,16 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
         static_cast<vtkOpenGLRenderPass*>(passKeys->Get(vtkOpenGLRenderPass::RenderPasses(), i)));
     }
   }
-  auto sources = [&](std::string& vs, std::string& gs, std::string& fs) {
-    std::ostringstream defines;
-    defines << "#define PLUME_SEGMENTS " << segments << "\n"
-            << "#define PLUME_POINTS " << segments + 1 << "\n"
-            << "#define PLUME_VERTICES_WIDE " << 2 * (segments + 1) << "\n";
-    vs = vtkPlumeShaderVariants::Select(lineVS ? vtkPlumeGlyphLineVS : vtkPlumeGlyphVS, enabled, defines.str());
-    gs = lineVS ? std::string() : vtkPlumeShaderVariants::Select(vtkPlumeGlyphGS, enabled, defines.str());
-    fs = vtkPlumeShaderVariants::Select(vtkPlumeGlyphFS, enabled, defines.str());
-  };
   vtkShaderProgram* program = nullptr;
   if (!passes.empty())
   {
     // the passes' replacements change between their stages: the shader
     // cache (keyed by the final source) keeps one program per stage
-    std::string vs, gs, fs;
-    sources(vs, gs, fs);
+    const std::string defines = features.GetDefines();
+    std::string vs = vtkPlumeShaderVariants::Select(vsTemplate, features.GetEnabled(), defines);
+    std::string gs =
+      gsTemplate ? vtkPlumeShaderVariants::Select(gsTemplate, features.GetEnabled(), defines) : std::string();
+    std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeGlyphFS, features.GetEnabled(), defines);
     for (vtkOpenGLRenderPass* pass : passes)
     {
       pass->PreReplaceShaderValues(vs, gs, fs, this, actor);
@@ -904,27 +906,14 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
       pass->PostReplaceShaderValues(vs, gs, fs, this, actor);
     }
     program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
-    key << "+passes";
   }
   else
   {
-    vtkShaderProgram*& cached = impl.Programs[key.str()];
-    if (!cached)
-    {
-      std::string vs, gs, fs;
-      sources(vs, gs, fs);
-      program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
-      cached = program;
-    }
-    else
-    {
-      program = renWin->GetShaderCache()->ReadyShaderProgram(cached);
-    }
+    program = impl.Programs->Ready(renWin, vsTemplate, gsTemplate, vtkPlumeGlyphFS, features);
   }
   if (!program)
   {
-    impl.Programs.erase(key.str());
-    vtkErrorMacro(<< "could not build the glyph shader program (" << key.str() << ")");
+    vtkErrorMacro(<< "could not build the glyph shader program (" << features.GetKey() << ")");
     return;
   }
 

@@ -3,10 +3,13 @@
  * @brief   picks the shader variant a scene needs out of a .glsl template
  *
  * Plume's .glsl files hold every feature of a renderer; blocks between
- * `//PLUME::IF name1 name2 ...` and `//PLUME::ENDIF` (not nested) are kept
- * only when one of their names is enabled, and the `//PLUME::Defines` tag is
- * replaced by the given #define lines. So only the features in use are
- * compiled, and each variant can be cached by its feature set.
+ * `//PLUME::IF term1 term2 ...` and `//PLUME::ENDIF` are kept only when one
+ * of their terms holds (OR), a term `A+B` holding when all its names are
+ * enabled (AND); blocks nest (an inner block is kept only inside a kept
+ * outer one). The `//PLUME::Defines` tag is replaced by the given #define
+ * lines. So only the features in use are compiled, and each variant can be
+ * cached by its feature set (vtkPlumeShaderFeatures,
+ * vtkPlumeShaderProgramCache).
  */
 #ifndef vtkPlumeShaderVariants_h
 #define vtkPlumeShaderVariants_h

@@ -4,7 +4,8 @@
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
-#include "vtkPlumeShaderVariants.h"
+#include "vtkPlumeShaderFeatures.h"
+#include "vtkPlumeShaderProgramCache.h"
 #include "vtkPlumeThrottledDraw.h"
 
 #include "vtkPlumeSheetCompositeFS.h"
@@ -128,32 +129,8 @@ public:
   vtkNew<vtkTextureObject> AccumTexture;
   vtkNew<vtkOpenGLFramebufferObject> FBO;
   int TargetSize[2] = { 0, 0 };
-  std::map<std::string, vtkShaderProgram*> Programs; // owned by the shader cache
+  vtkNew<vtkPlumeShaderProgramCache> Programs;
   bool WarnedCells = false;
-
-  vtkShaderProgram* Program(vtkOpenGLRenderWindow* renWin, const std::string& key, const char* vs,
-    const char* fs, const char* gs, const std::set<std::string>& enabled, const std::string& defines)
-  {
-    vtkShaderProgram*& cached = this->Programs[key];
-    vtkShaderProgram* program = nullptr;
-    if (!cached)
-    {
-      const std::string v = vtkPlumeShaderVariants::Select(vs, enabled, defines);
-      const std::string f = vtkPlumeShaderVariants::Select(fs, enabled, defines);
-      const std::string g = gs ? vtkPlumeShaderVariants::Select(gs, enabled, defines) : std::string();
-      program = renWin->GetShaderCache()->ReadyShaderProgram(v.c_str(), f.c_str(), g.c_str());
-      cached = program;
-    }
-    else
-    {
-      program = renWin->GetShaderCache()->ReadyShaderProgram(cached);
-    }
-    if (!program)
-    {
-      this->Programs.erase(key);
-    }
-    return program;
-  }
 
   void ReleaseGraphicsResources(vtkWindow* window)
   {
@@ -163,7 +140,7 @@ public:
     this->Depth->ReleaseGraphicsResources(window);
     this->AccumTexture->ReleaseGraphicsResources(window);
     this->FBO->ReleaseGraphicsResources(window);
-    this->Programs.clear();
+    this->Programs->ReleaseGraphicsResources(window);
     this->VAOProgram = nullptr;
     this->HaveUpload = false;
     this->TargetSize[0] = this->TargetSize[1] = 0;
@@ -590,37 +567,33 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
 
   // ---- programs
   const bool adaptive = this->AdaptiveSampling && this->Quadrature == QUADRATURE_ANALYTIC;
-  const std::set<std::string> enabled = { bounded ? "BOUNDED" : "UNBOUNDED",
-    this->ThinSheet ? "THIN" : "THICK", this->Quadrature == QUADRATURE_GRID ? "GRID" : "ANALYTIC",
-    adaptive ? "ADAPTIVE" : "FIXED" };
-  std::ostringstream defines;
-  defines << "#define PLUME_GRID_A " << this->GridA << "\n#define PLUME_GRID_B " << this->GridB
-          << "\n#define PLUME_SMALL_TRIANGLE 0.5\n";
+  vtkPlumeShaderFeatures features;
+  features.Enable(bounded ? "BOUNDED" : "UNBOUNDED")
+    .Enable(this->ThinSheet ? "THIN" : "THICK")
+    .Enable(this->Quadrature == QUADRATURE_GRID ? "GRID" : "ANALYTIC")
+    .Enable(adaptive ? "ADAPTIVE" : "FIXED")
+    .Define("PLUME_GRID_A", this->GridA)
+    .Define("PLUME_GRID_B", this->GridB)
+    .Define("PLUME_SMALL_TRIANGLE", "0.5");
   if (this->Quadrature == QUADRATURE_ANALYTIC)
   {
     std::vector<double> x, w;
     GaussLegendre(this->GridA, x, w);
-    defines.precision(9);
-    defines << "#define PLUME_GL_NODES ";
+    std::ostringstream nodes, weights;
+    nodes.precision(9);
+    weights.precision(9);
     for (int i = 0; i < this->GridA; ++i)
     {
-      defines << (i ? ", " : "") << std::fixed << x[i];
+      nodes << (i ? ", " : "") << std::fixed << x[i];
+      weights << (i ? ", " : "") << std::fixed << w[i];
     }
-    defines << "\n#define PLUME_GL_WEIGHTS ";
-    for (int i = 0; i < this->GridA; ++i)
-    {
-      defines << (i ? ", " : "") << std::fixed << w[i];
-    }
-    defines << "\n";
+    features.Define("PLUME_GL_NODES", nodes.str()).Define("PLUME_GL_WEIGHTS", weights.str());
   }
-  std::ostringstream key;
-  key << "S" << (this->Quadrature == QUADRATURE_GRID ? "G" : "A") << (bounded ? "B" : "U") << (this->ThinSheet ? "T" : "K") << (adaptive ? "a" : "f") << this->GridA << "x"
-      << this->GridB;
-  vtkShaderProgram* program = impl.Program(renWin, key.str(), vtkPlumeSheetVS, vtkPlumeSheetFS,
-    vtkPlumeSheetGS, enabled, defines.str());
+  vtkShaderProgram* program =
+    impl.Programs->Ready(renWin, vtkPlumeSheetVS, vtkPlumeSheetGS, vtkPlumeSheetFS, features);
   if (!program)
   {
-    vtkErrorMacro(<< "could not build the sheet shader program (" << key.str() << ")");
+    vtkErrorMacro(<< "could not build the sheet shader program (" << features.GetKey() << ")");
     return;
   }
 
@@ -726,9 +699,10 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     impl.AccumTexture->Activate();
     for (int pass = 0; pass < (add ? 2 : 1); ++pass)
     {
-      const std::string mode = pass == 0 ? "MULTIPLY" : "ADD";
-      vtkShaderProgram* composite = impl.Program(renWin, "C" + mode, vtkPlumeSheetCompositeVS,
-        vtkPlumeSheetCompositeFS, nullptr, { mode }, "");
+      vtkPlumeShaderFeatures compositing;
+      compositing.Enable(pass == 0 ? "MULTIPLY" : "ADD");
+      vtkShaderProgram* composite = impl.Programs->Ready(
+        renWin, vtkPlumeSheetCompositeVS, nullptr, vtkPlumeSheetCompositeFS, compositing);
       if (!composite)
       {
         vtkErrorMacro(<< "could not build the sheet composite program");

@@ -1,5 +1,6 @@
 #include "plumeSplatGPU.h"
-#include "vtkPlumeShaderVariants.h"
+#include "vtkPlumeShaderFeatures.h"
+#include "vtkPlumeShaderProgramCache.h"
 
 #include "vtkPlumeSplatFS.h"
 #include "vtkPlumeSplatGS.h"
@@ -60,7 +61,7 @@ public:
   vtkSmartPointer<vtkTextureObject> WeightTexture;
   vtkSmartPointer<vtkTextureObject> Target;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  std::map<std::string, vtkShaderProgram*> Programs;
+  vtkNew<vtkPlumeShaderProgramCache> Programs;
 
   void Release()
   {
@@ -95,7 +96,7 @@ public:
     this->SplatBuffer = this->WeightBuffer = nullptr;
     this->VAO = nullptr;
     this->Framebuffer = nullptr;
-    this->Programs.clear(); // owned by the window's shader cache
+    this->Programs->ReleaseGraphicsResources(nullptr);
     this->Window = nullptr;
   }
 
@@ -229,26 +230,12 @@ bool SplatGPU::Run(vtkRenderWindow* window, const Grid& grid, const Settings& se
   }
 
   // ---- program (only the variant in use is compiled)
-  const std::string key = sum ? "SUM" : "DISTANCE";
-  vtkShaderProgram*& cached = impl.Programs[key];
-  vtkShaderProgram* program = nullptr;
-  if (!cached)
-  {
-    const std::set<std::string> enabled = { key };
-    const std::string vs = vtkPlumeShaderVariants::Select(vtkPlumeSplatVS, enabled, "");
-    const std::string gs = vtkPlumeShaderVariants::Select(vtkPlumeSplatGS, enabled, "");
-    const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeSplatFS, enabled, "");
-    program = win->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
-    cached = program;
-  }
-  else
-  {
-    program = win->GetShaderCache()->ReadyShaderProgram(cached);
-  }
+  vtkPlumeShaderFeatures features;
+  features.Enable(sum ? "SUM" : "DISTANCE");
+  vtkShaderProgram* program = impl.Programs->Ready(win, vtkPlumeSplatVS, vtkPlumeSplatGS, vtkPlumeSplatFS, features);
   if (!program)
   {
-    impl.Programs.erase(key);
-    error = "could not build the splat shader program (" + key + ")";
+    error = "could not build the splat shader program (" + features.GetKey() + ")";
     return false;
   }
 

@@ -6,7 +6,8 @@
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeScalarTexture3D.h"
-#include "vtkPlumeShaderVariants.h"
+#include "vtkPlumeShaderFeatures.h"
+#include "vtkPlumeShaderProgramCache.h"
 #include "vtkPlumeVolumeFS.h"
 #include "vtkPlumeVolumeVS.h"
 
@@ -120,7 +121,7 @@ public:
   double OccupiedMin[3] = { 0, 0, 0 }; // index-space bounds of the non-transparent blocks
   double OccupiedMax[3] = { 0, 0, 0 };
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
-  std::map<std::string, vtkShaderProgram*> Programs;
+  vtkNew<vtkPlumeShaderProgramCache> Programs;
   vtkOpenGLRenderWindow* Window = nullptr;
   double AutomaticBudgetMB = 0; // of Window
   int Frame = 0;
@@ -140,7 +141,7 @@ public:
     this->BlockRanges->ReleaseGraphicsResources(window);
     this->RangesUpload = -1;
     this->EmptyVAO->ReleaseGraphicsResources();
-    this->Programs.clear(); // owned by the window's shader cache
+    this->Programs->ReleaseGraphicsResources(window);
     this->TableProperty = nullptr;
     this->Window = nullptr;
     this->AutomaticBudgetMB = 0;
@@ -723,71 +724,36 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   // ---- program (only the features in use are compiled: vtkPlumeShaderVariants keeps
   // the shader's //PLUME::IF blocks of the enabled features)
-  std::set<std::string> enabled = { mode.substr(6) }; // COMPOSITE, MIP, ISO or SMOKE
-  std::ostringstream defines;
-  if (this->Jitter)
+  vtkPlumeShaderFeatures features;
+  features.Enable(mode.substr(6)); // COMPOSITE, MIP, ISO or SMOKE
+  features.Enable("JITTER", this->Jitter);
+  features.Enable("DEPTH", useDepth);
+  // masked data: blocks such as SMOKE+MASK combine the mode with the mask
+  features.Enable(impl.Scalars->GetMasked() ? "MASK" : "NOMASK");
+  if (!impl.Scalars->GetMasked())
   {
-    enabled.insert("JITTER");
+    features.Enable(impl.Scalars->GetHasGradients() ? "GRADIENT" : "PLAIN");
   }
-  if (useDepth)
-  {
-    enabled.insert("DEPTH");
-  }
-  {
-    const std::string maskFeature = impl.Scalars->GetMasked() ? "MASK" : "NOMASK";
-    enabled.insert(maskFeature);
-    enabled.insert(mode.substr(6) + "_" + maskFeature); // e.g. SMOKE_MASK
-    if (!impl.Scalars->GetMasked())
-    {
-      enabled.insert(impl.Scalars->GetHasGradients() ? "GRADIENT" : "PLAIN");
-    }
-    if (shade && !impl.Scalars->GetHasGradients())
-    {
-      enabled.insert("SHADE_NOGRADIENT");
-    }
-  }
+  features.Enable("SHADE_NOGRADIENT", shade && !impl.Scalars->GetHasGradients());
   if (skipTransparent || rangeSkipping)
   {
-    enabled.insert("SKIP");
-    enabled.insert(skipTransparent ? "SKIP_TRANSPARENT" : (mode == "PLUME_MIP" ? "SKIP_MIP" : "SKIP_ISO"));
-    if (!skipTransparent && mode == "PLUME_ISO" && impl.Scalars->GetMasked())
-    {
-      enabled.insert("SKIP_ISO_MASK");
-    }
+    features.Enable("SKIP");
+    features.Enable(skipTransparent ? "SKIP_TRANSPARENT" : (mode == "PLUME_MIP" ? "SKIP_MIP" : "SKIP_ISO"));
   }
   if (rangeSkipping && mode == "PLUME_ISO")
   {
-    defines << "#define PLUME_ISO_MARGIN " << IsoMargin << "\n";
+    std::ostringstream margin;
+    margin << IsoMargin;
+    features.Define("PLUME_ISO_MARGIN", margin.str());
   }
-  if (shade)
-  {
-    enabled.insert("SHADE");
-  }
+  features.Enable("SHADE", shade);
   if (lit)
   {
-    defines << "#define PLUME_LIGHTS " << nLights << "\n";
+    features.Define("PLUME_LIGHTS", nLights);
   }
-  std::string key = defines.str();
-  for (const std::string& feature : enabled)
-  {
-    key += feature + " ";
-  }
-  vtkShaderProgram*& cached = impl.Programs[key];
-  vtkShaderProgram* program = nullptr;
-  if (!cached)
-  {
-    const std::string vs = vtkPlumeVolumeVS;
-    const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeVolumeFS, enabled, defines.str());
-    program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
-    cached = program;
-  }
-  else
-  {
-    program = renWin->GetShaderCache()->ReadyShaderProgram(cached);
-  }
+  vtkShaderProgram* program = impl.Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, features);
   if (!program)
   {
-    impl.Programs.erase(key);
     vtkErrorMacro(<< "could not build the volume shader program");
     return;
   }

@@ -4,7 +4,7 @@
 // index space (voxel (i,j,k) at (i,j,k)). Outputs premultiplied colour.
 //
 // Feature blocks (//PLUME::IF name ... //PLUME::ENDIF, kept by
-// vtkPlumeShaderVariants when one of the names is enabled; not nested), so only
+// vtkPlumeShaderVariants when one of the terms holds; A+B: both enabled), so only
 // what is used is compiled:
 //   COMPOSITE | MIP | ISO | SMOKE   the mode
 //   JITTER           jittered first segment
@@ -12,9 +12,8 @@
 //   SKIP             empty-space skipping, with one of: SKIP_TRANSPARENT
 //                    (composite/smoke: jump over transparent blocks), SKIP_MIP
 //                    (blocks whose max is not above the running max), SKIP_ISO
-//                    (with MASK also SKIP_ISO_MASK)
 //                    (blocks whose range misses the iso value by PLUME_ISO_MARGIN
-//                    on the side the ray already is)
+//                    on the side the ray already is; with MASK: SKIP_ISO+MASK blocks)
 //   SHADE            composite with gradient (Phong) shading of every sample
 //   PLAIN | GRADIENT (both with NOMASK) the volume texture is u | (u, central
 //                    differences along x, y, z) for shading in one look-up;
@@ -148,10 +147,10 @@ float jitter()
 float sampleExtinction(vec3 p)
 {
 //PLUME::ENDIF
-//PLUME::IF SMOKE_NOMASK
+//PLUME::IF SMOKE+NOMASK
   return extinction(sampleU(p));
 //PLUME::ENDIF
-//PLUME::IF SMOKE_MASK
+//PLUME::IF SMOKE+MASK
   vec2 uw = sampleUW(p);
   return extinction(uw.x) * uw.y;
 //PLUME::ENDIF
@@ -271,7 +270,7 @@ void main()
   float fPrev = sampleU(p0 + t.x * d) - IsoValue;
   bool prevInside = true; // the previous sample is inside the data
 //PLUME::ENDIF
-//PLUME::IF ISO_MASK
+//PLUME::IF ISO+MASK
   prevInside = sampleUW(p0 + t.x * d).y > 0.0;
 //PLUME::ENDIF
 //PLUME::IF ISO
@@ -346,7 +345,7 @@ void main()
         // the bisection starts at the last skipped sample, as without skipping
         tPrev = m >= 2.0 ? segBase + (m - 1.5) * dt : 0.5 * (t.x + min(segBase, t.y));
 //PLUME::ENDIF
-//PLUME::IF SKIP_ISO_MASK
+//PLUME::IF SKIP_ISO+MASK
         // ... and whether that sample has valid nodes around, as without skipping
         // (its sign, if it has, is fPrev's: the block's range says so)
         prevInside = sampleUW(p0 + tPrev * d).y > 0.0;
