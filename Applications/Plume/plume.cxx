@@ -40,18 +40,6 @@ bool ParseSize(const std::string& text, int& w, int& h)
     h > 0 && w <= 16384 && h <= 16384;
 }
 
-vtkSmartPointer<vtkRenderWindow> MakeWindow(plume::Backend backend, int w, int h)
-{
-  plume::Backend used;
-  std::string error;
-  auto window = plume::CreateRenderWindow(backend, w, h, &used, &error);
-  if (!window)
-  {
-    throw plume::SceneError("cannot create a render window (backend " +
-      std::string(plume::BackendName(backend)) + "): " + error);
-  }
-  return window;
-}
 
 int Render(const std::string& scenePath, const std::string& output, const std::string& size, plume::Backend backend)
 {
@@ -80,7 +68,7 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   vtkNew<vtkRenderer> renderer;
   plume::Scene::Build(scene, directory, renderer, options);
 
-  auto window = MakeWindow(backend, options.Width, options.Height);
+  auto window = plume::RequireRenderWindow(backend, options.Width, options.Height);
   window->AddRenderer(renderer);
   renderer->ResetCameraClippingRange();
   if (options.Progress)
@@ -278,17 +266,5 @@ int main(int argc, char* argv[])
     error = e.what();
     status = 2;
   }
-  // On failure the one message below says what went wrong (VTK's own
-  // messages are its details, available with PLUME_VERBOSE=1); on success
-  // anything VTK reported is shown, so no warning is lost.
-  const std::string messages = vtkMessages->TakeMessages();
-  if (!error.empty())
-  {
-    std::cerr << "plume: error: " << error << "\n";
-  }
-  if (!messages.empty() && (status == 0 || std::getenv("PLUME_VERBOSE")))
-  {
-    std::cerr << messages;
-  }
-  return status;
+  return vtkMessages->Finish(status, error);
 }

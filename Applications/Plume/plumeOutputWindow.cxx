@@ -1,5 +1,8 @@
 #include "plumeOutputWindow.h"
 
+#include <cstdlib>
+#include <iostream>
+
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -38,6 +41,20 @@ std::string plumeOutputWindow::TakeMessages()
   std::string out;
   out.swap(this->Messages);
   return out;
+}
+
+int plumeOutputWindow::Finish(int status, const std::string& error)
+{
+  const std::string messages = this->TakeMessages();
+  if (!error.empty())
+  {
+    std::cerr << "plume: error: " << error << "\n";
+  }
+  if (!messages.empty() && (status == 0 || std::getenv("PLUME_VERBOSE")))
+  {
+    std::cerr << messages;
+  }
+  return status;
 }
 
 plumeOutputWindow* plumeOutputWindow::Install()

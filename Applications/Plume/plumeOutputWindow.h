@@ -24,6 +24,13 @@ public:
   /** Everything collected so far (errors and warnings), then cleared. */
   std::string TakeMessages();
 
+  /**
+   * A front door's last step: prints "plume: error: <error>" when `error` is
+   * not empty, then what VTK said (on success always, on failure only with
+   * PLUME_VERBOSE=1: the one line says what went wrong); returns `status`.
+   */
+  int Finish(int status, const std::string& error);
+
   /** Install a collector as VTK's output window; returns it. */
   static plumeOutputWindow* Install();
 

@@ -12,6 +12,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 #include <unistd.h>
 #include <vector>
 
@@ -430,5 +431,18 @@ vtkSmartPointer<vtkRenderWindow> CreateRenderWindow(
     SetError(error, xError);
   }
   return nullptr;
+}
+
+vtkSmartPointer<vtkRenderWindow> RequireRenderWindow(Backend requested, int width, int height)
+{
+  Backend used;
+  std::string error;
+  auto window = CreateRenderWindow(requested, width, height, &used, &error);
+  if (!window)
+  {
+    throw std::runtime_error(
+      "cannot create a render window (backend " + std::string(BackendName(requested)) + "): " + error);
+  }
+  return window;
 }
 }

@@ -39,6 +39,9 @@ const char* BackendName(Backend backend);
  */
 vtkSmartPointer<vtkRenderWindow> CreateRenderWindow(
   Backend requested, int width, int height, Backend* used, std::string* error);
+
+/** CreateRenderWindow, or std::runtime_error naming the backend and the reason. */
+vtkSmartPointer<vtkRenderWindow> RequireRenderWindow(Backend requested, int width, int height);
 }
 
 #endif

@@ -23,18 +23,6 @@
 
 namespace
 {
-vtkSmartPointer<vtkRenderWindow> MakeWindow(plume::Backend backend, int w, int h)
-{
-  plume::Backend used;
-  std::string error;
-  auto window = plume::CreateRenderWindow(backend, w, h, &used, &error);
-  if (!window)
-  {
-    throw plume::SceneError("cannot create a render window (backend " +
-      std::string(plume::BackendName(backend)) + "): " + error);
-  }
-  return window;
-}
 
 /** Runs one benchmark job in a child process (fresh peak memory) and returns its JSON. */
 nlohmann::json RunJobInChild(
@@ -117,7 +105,7 @@ int Bench(const std::string& name, bool quick, const std::string& job, plume::Ba
   {
     plume::bench::Context context;
     context.Quick = quick;
-    context.MakeWindow = [backend](int w, int h) { return MakeWindow(backend, w, h); };
+    context.MakeWindow = [backend](int w, int h) { return plume::RequireRenderWindow(backend, w, h); };
     std::cout << benchmark.Run(context, job).dump() << std::endl;
     return 0;
   }
@@ -180,14 +168,5 @@ int main(int argc, char* argv[])
     error = e.what();
     status = 2;
   }
-  const std::string messages = vtkMessages->TakeMessages();
-  if (!error.empty())
-  {
-    std::cerr << "plume: error: " << error << "\n";
-  }
-  if (!messages.empty() && (status == 0 || std::getenv("PLUME_VERBOSE")))
-  {
-    std::cerr << messages;
-  }
-  return status;
+  return vtkMessages->Finish(status, error);
 }
