@@ -177,7 +177,7 @@ public:
   ///@}
 
   /** The pressure solver (its last iteration count and residual). */
-  vtkPlumePressureSolver* GetPressureSolver() { return this->Pressure; }
+  vtkPlumePressureSolver* GetPressureSolver();
 
   ///@{
   /**
@@ -246,6 +246,8 @@ protected:
   ~vtkPlumeSmokeSolver() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  /** An executive whose "returned failure for request" dump is silenced (the error itself is reported once). */
+  vtkExecutive* CreateDefaultExecutive() override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
