@@ -1,0 +1,195 @@
+// The scene dataset `"source": "smoke"`: vtkPlumeSmokeSolver (seed 004's
+// smoke simulation) run to the time step `step` through the pipeline's time
+// request, as an image with velocity, density, temperature, pressure,
+// divergence and obstacle. Every solver parameter comes from the solver's
+// vtkPlumeParameterTable (same keys, types and ranges as the class); the
+// lists `sources` and `obstacles` and `step` are read here. Documented in
+// Documentation/SceneFormat.md.
+#include "plumeParameters.h"
+#include "plumeProgress.h"
+#include "plumeScene.h"
+#include "plumeSceneError.h"
+
+#include "vtkPlumeParameterTable.h"
+#include "vtkPlumeSmokeSolver.h"
+
+#include "vtkImageData.h"
+
+#include <cmath>
+
+namespace plume
+{
+namespace
+{
+// A JSON value as the table's value of `parameter`'s kind (the table checks range and type).
+vtkPlumeParameterTable::Value ToValue(const vtkPlumeParameterTable::Parameter& parameter, const nlohmann::json& j)
+{
+  using Kind = vtkPlumeParameterTable::Kind;
+  switch (parameter.Type)
+  {
+    case Kind::Boolean:
+      if (j.is_boolean())
+        return j.get<bool>();
+      break;
+    case Kind::Integer:
+      if (j.is_number_integer())
+        return j.get<long long>();
+      if (j.is_number() && std::isfinite(j.get<double>()) && j.get<double>() == std::floor(j.get<double>()) &&
+        std::abs(j.get<double>()) < 9e15)
+        return static_cast<long long>(j.get<double>());
+      break;
+    case Kind::Real:
+      if (j.is_number())
+        return j.get<double>();
+      break;
+    case Kind::Choice:
+    case Kind::Text:
+      if (j.is_string())
+        return j.get<std::string>();
+      break;
+    case Kind::Vector3:
+    case Kind::Color:
+      if (j.is_array() && j.size() == 3 && j[0].is_number() && j[1].is_number() && j[2].is_number())
+        return std::array<double, 3>{ j[0].get<double>(), j[1].get<double>(), j[2].get<double>() };
+      break;
+  }
+  // a value of the wrong JSON type: let Check name what was expected
+  if (j.is_boolean())
+    return j.get<bool>();
+  if (j.is_number())
+    return j.get<double>();
+  if (j.is_string())
+    return j.get<std::string>();
+  return std::string(j.dump());
+}
+
+}
+
+vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets&, const std::string& name)
+{
+  const std::string where = "datasets." + name;
+  auto solver = vtkSmartPointer<vtkPlumeSmokeSolver>::New();
+  const vtkPlumeParameterTable& table = vtkPlumeSmokeSolver::GetParameterTable();
+  for (const auto& parameter : table.GetParameters())
+  {
+    if (!p.Has(parameter.Key))
+    {
+      continue;
+    }
+    const nlohmann::json& j = *p.Raw(parameter.Key);
+    const vtkPlumeParameterTable::Value value = ToValue(parameter, j);
+    std::string problem = parameter.Check(value);
+    if (problem.empty() && parameter.Key == "dimensions")
+    {
+      for (double d : std::get<std::array<double, 3>>(value))
+      {
+        if (d != std::floor(d))
+        {
+          problem = "must be 3 integers in [1, 4096], got " + j.dump();
+        }
+      }
+    }
+    if (!problem.empty())
+    {
+      throw SceneError(where + ": '" + parameter.Key + "' " + problem);
+    }
+    parameter.Set(solver, value);
+  }
+
+  // Sources: default one at the bottom centre of the grid.
+  const int* dims = solver->GetDimensions();
+  const double* origin = solver->GetOrigin();
+  const double* spacing = solver->GetSpacing();
+  if (const nlohmann::json* sources = p.Raw("sources"))
+  {
+    if (!sources->is_array())
+    {
+      throw SceneError(where + ": 'sources' must be a list of objects, got " + sources->dump());
+    }
+    for (size_t s = 0; s < sources->size(); ++s)
+    {
+      const std::string at = where + ".sources[" + std::to_string(s) + "]";
+      if (!(*sources)[s].is_object())
+      {
+        throw SceneError(at + ": a source must be an object, got " + (*sources)[s].dump());
+      }
+      Parameters sp((*sources)[s], at);
+      const auto center = sp.Vector<3>("center", { 0, 0, 0 });
+      if (!sp.Has("center"))
+      {
+        throw SceneError(sp.Where() + ": 'center' is required");
+      }
+      const double radius = sp.Number("radius", 0.1, 0.0, 1e30);
+      const double density = sp.Number("density", 1.0, -1e30, 1e30);
+      const double temperature = sp.Number("temperature", 1.0, -1e30, 1e30);
+      const auto velocity = sp.Vector<3>("velocity", { 0, 0, 0 });
+      sp.RejectUnknown();
+      solver->AddSource(center.data(), radius, density, temperature, velocity.data());
+    }
+  }
+  else
+  {
+    const double center[3] = { origin[0] + 0.5 * (dims[0] - 1) * spacing[0],
+      origin[1] + 0.5 * (dims[1] - 1) * spacing[1], origin[2] + 0.1 * (dims[2] - 1) * spacing[2] };
+    const double velocity[3] = { 0, 0, 0 };
+    solver->AddSource(center, 0.1 * (dims[0] - 1) * spacing[0], 1.0, 1.0, velocity);
+  }
+  if (const nlohmann::json* obstacles = p.Raw("obstacles"))
+  {
+    if (!obstacles->is_array())
+    {
+      throw SceneError(where + ": 'obstacles' must be a list of objects, got " + obstacles->dump());
+    }
+    for (size_t o = 0; o < obstacles->size(); ++o)
+    {
+      const std::string at = where + ".obstacles[" + std::to_string(o) + "]";
+      if (!(*obstacles)[o].is_object())
+      {
+        throw SceneError(at + ": an obstacle must be an object, got " + (*obstacles)[o].dump());
+      }
+      Parameters op((*obstacles)[o], at);
+      const std::string type = op.Choice("type", "sphere", { "sphere", "box" });
+      if (type == "sphere")
+      {
+        if (!op.Has("center"))
+        {
+          throw SceneError(op.Where() + ": 'center' is required");
+        }
+        const auto center = op.Vector<3>("center", { 0, 0, 0 });
+        const double radius = op.Number("radius", 0.1, 0.0, 1e30);
+        op.RejectUnknown();
+        solver->AddObstacleSphere(center.data(), radius);
+      }
+      else
+      {
+        if (!op.Has("bounds"))
+        {
+          throw SceneError(op.Where() + ": 'bounds' is required");
+        }
+        const auto bounds = op.Vector<6>("bounds", { 0, 0, 0, 0, 0, 0 });
+        op.RejectUnknown();
+        solver->AddObstacleBox(bounds.data());
+      }
+    }
+  }
+  const int step = p.Integer("step", 100, 0, 10000000);
+  p.RejectUnknown();
+
+  // The pipeline's time request drives the simulation, as ParaView's animation would.
+  if (ProgressEnabled())
+  {
+    AttachProgress(solver, "simulating " + name);
+  }
+  if (step > solver->GetNumberOfTimeSteps())
+  {
+    solver->SetNumberOfTimeSteps(step);
+  }
+  solver->UpdateTimeStep(step * solver->GetTimeStep());
+  if (*solver->GetLastError())
+  {
+    throw SceneError(where + ": " + solver->GetLastError());
+  }
+  vtkSmartPointer<vtkDataObject> result = solver->GetOutputDataObject(0);
+  return result;
+}
+}
