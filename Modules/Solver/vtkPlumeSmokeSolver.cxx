@@ -99,6 +99,28 @@ double Trilinear(const std::vector<double>& f, const int m[3], glm::dvec3 g)
   const double c1 = c01 * (1 - t[1]) + c11 * t[1];
   return c0 * (1 - t[2]) + c1 * t[2];
 }
+
+// The smallest and largest of the (up to 8) grid values Trilinear() would blend at g.
+void MinMax(const std::vector<double>& f, const int m[3], glm::dvec3 g, double& lo, double& hi)
+{
+  int i0[3], i1[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double x = std::min(std::max(g[a], 0.0), double(m[a] - 1));
+    i0[a] = std::min(int(x), std::max(m[a] - 2, 0));
+    i1[a] = std::min(i0[a] + 1, m[a] - 1);
+  }
+  lo = std::numeric_limits<double>::infinity();
+  hi = -lo;
+  for (int k : { i0[2], i1[2] })
+    for (int j : { i0[1], i1[1] })
+      for (int i : { i0[0], i1[0] })
+      {
+        const double v = f[i + size_t(m[0]) * (j + size_t(m[1]) * k)];
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -142,6 +164,14 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
       .Panel("Time")
       .Doc("Steps advertised to the pipeline (times k * time_step, k = 0 .. time_steps).")
       .Bind(&T::SetNumberOfTimeSteps, &T::GetNumberOfTimeSteps);
+    t.Choice("advection", "AdvectionScheme", "semi_lagrangian")
+      .Choice("semi_lagrangian", SEMI_LAGRANGIAN, "the seed's: trilinear sample at the back-traced point (first order, diffusive)")
+      .Choice("maccormack", MACCORMACK,
+        "MacCormack: a forward-and-back round trip corrects the semi-Lagrangian error (second order), clamped "
+        "to the sampled values; about twice the advection cost")
+      .Panel("Advection")
+      .Doc("How density, temperature and velocity move with the flow.")
+      .Bind(&T::SetAdvectionScheme, &T::GetAdvectionScheme);
     t.Real("buoyancy", "Buoyancy", 1.0)
       .Between(-1e30, 1e30)
       .Units("model units / s² per degree")
@@ -202,7 +232,7 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
     t.Real("pressure_tolerance", "PressureTolerance", 1e-6)
       .Between(0.0, 1.0)
       .Panel("Pressure")
-      .Doc("Relative residual |b - Aq| / |b| at which the pressure solve stops; 0 runs pressure_max_iterations.")
+      .Doc("Relative residual ‖b − Aq‖ / ‖b‖ at which the pressure solve stops; 0 runs pressure_max_iterations.")
       .Bind(&T::SetPressureTolerance, &T::GetPressureTolerance);
     t.Integer("pressure_max_iterations", "PressureMaximumIterations", 1000)
       .Between(1, 10000000)
@@ -697,16 +727,26 @@ bool vtkPlumeSmokeSolver::Project()
 }
 
 //------------------------------------------------------------------------------
-void vtkPlumeSmokeSolver::AdvectVelocity(double dt)
+void vtkPlumeSmokeSolver::Advect(const std::vector<double>& source, int axis, double dt, double rate, double target,
+  std::vector<double>& result) const
 {
+  // The grid of `source`: cells (axis < 0) or the faces normal to `axis`;
+  // point (i, j, k) lies at Origin + ((i, j, k) − shift)·Spacing.
   const int* n = this->Cells;
-  int m[3][3];
+  int m[3] = { n[0], n[1], n[2] };
+  glm::dvec3 shift(0.0);
+  if (axis >= 0)
+  {
+    ++m[axis];
+    shift[axis] = 0.5;
+  }
+  int faces[3][3];
   for (int d = 0; d < 3; ++d)
   {
-    m[d][0] = n[0];
-    m[d][1] = n[1];
-    m[d][2] = n[2];
-    ++m[d][d];
+    for (int a = 0; a < 3; ++a)
+    {
+      faces[d][a] = n[a] + (a == d ? 1 : 0);
+    }
   }
   const glm::dvec3 origin(this->O[0], this->O[1], this->O[2]);
   const glm::dvec3 h(this->H[0], this->H[1], this->H[2]);
@@ -717,81 +757,66 @@ void vtkPlumeSmokeSolver::AdvectVelocity(double dt)
     {
       glm::dvec3 g = (p - origin) / h;
       g[d] += 0.5;
-      v[d] = Trilinear(this->U[d], m[d], g);
+      v[d] = Trilinear(this->U[d], faces[d], g);
     }
     return v;
   };
-  const double decay = std::exp(-this->VelocityDissipation * dt);
-  std::vector<double> next[3];
-  for (int d = 0; d < 3; ++d)
-  {
-    next[d].assign(this->U[d].size(), 0.0);
-    const int* md = m[d];
-    ForRows(md, [&](int j, int k) {
-      for (int i = 0; i < md[0]; ++i)
-      {
-        if (this->IsWallFace(d, i, j, k))
-        {
-          continue; // static walls: zero normal velocity
-        }
-        glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
-        x[d] -= 0.5 * h[d];
-        // midpoint back-trace
-        const glm::dvec3 mid = x - 0.5 * dt * velocity(x);
-        const glm::dvec3 from = x - dt * velocity(mid);
-        glm::dvec3 g = (from - origin) / h;
-        g[d] += 0.5;
-        next[d][i + size_t(md[0]) * (j + size_t(md[1]) * k)] = decay * Trilinear(this->U[d], md, g);
-      }
-    });
-  }
-  for (int d = 0; d < 3; ++d)
-  {
-    this->U[d].swap(next[d]);
-  }
-}
-
-void vtkPlumeSmokeSolver::AdvectScalar(std::vector<double>& field, double dt, double rate, double target)
-{
-  const int* n = this->Cells;
-  int m[3][3];
-  for (int d = 0; d < 3; ++d)
-  {
-    m[d][0] = n[0];
-    m[d][1] = n[1];
-    m[d][2] = n[2];
-    ++m[d][d];
-  }
-  const glm::dvec3 origin(this->O[0], this->O[1], this->O[2]);
-  const glm::dvec3 h(this->H[0], this->H[1], this->H[2]);
-  auto velocity = [&](const glm::dvec3& p) {
-    glm::dvec3 v;
-    for (int d = 0; d < 3; ++d)
-    {
-      glm::dvec3 g = (p - origin) / h;
-      g[d] += 0.5;
-      v[d] = Trilinear(this->U[d], m[d], g);
-    }
-    return v;
+  // Where a point came from over `step` seconds (midpoint rule); a negative
+  // step traces forward.
+  auto trace = [&](const glm::dvec3& x, double step) {
+    const glm::dvec3 mid = x - 0.5 * step * velocity(x);
+    return x - step * velocity(mid);
   };
-  const double decay = std::exp(-rate * dt);
-  std::vector<double> next(field.size(), target);
-  ForRows(n, [&](int j, int k) {
-    for (int i = 0; i < n[0]; ++i)
+  auto isFixed = [&](int i, int j, int k) {
+    return axis >= 0 ? this->IsWallFace(axis, i, j, k)
+                     : this->Solid[i + size_t(n[0]) * (j + size_t(n[1]) * k)] != 0;
+  };
+  const double fixedValue = axis >= 0 ? 0.0 : target; // static walls; solid cells
+  const bool maccormack = this->AdvectionScheme == MACCORMACK;
+  std::vector<double> forward;
+  std::vector<double>& first = maccormack ? forward : result;
+  first.assign(source.size(), fixedValue);
+  ForRows(m, [&](int j, int k) {
+    for (int i = 0; i < m[0]; ++i)
     {
-      const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
-      if (this->Solid[c])
+      if (isFixed(i, j, k))
       {
         continue;
       }
-      const glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
-      const glm::dvec3 mid = x - 0.5 * dt * velocity(x);
-      const glm::dvec3 from = x - dt * velocity(mid);
-      const double value = Trilinear(field, n, (from - origin) / h);
-      next[c] = target + decay * (value - target);
+      const glm::dvec3 x = origin + (glm::dvec3(i, j, k) - shift) * h;
+      first[i + size_t(m[0]) * (j + size_t(m[1]) * k)] = Trilinear(source, m, (trace(x, dt) - origin) / h + shift);
     }
   });
-  field.swap(next);
+  if (maccormack)
+  {
+    // MacCormack (Selle et al. 2008): advect the result back, correct by half
+    // the round trip's error, and clamp to the values the first
+    // interpolation used (without the clamp the scheme is not stable).
+    result.assign(source.size(), fixedValue);
+    ForRows(m, [&](int j, int k) {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (isFixed(i, j, k))
+        {
+          continue;
+        }
+        const size_t c = i + size_t(m[0]) * (j + size_t(m[1]) * k);
+        const glm::dvec3 x = origin + (glm::dvec3(i, j, k) - shift) * h;
+        const double back = Trilinear(forward, m, (trace(x, -dt) - origin) / h + shift);
+        double lo, hi;
+        MinMax(source, m, (trace(x, dt) - origin) / h + shift, lo, hi);
+        result[c] = std::min(std::max(forward[c] + 0.5 * (source[c] - back), lo), hi);
+      }
+    });
+  }
+  if (rate > 0)
+  {
+    const double decay = std::exp(-rate * dt);
+    for (double& v : result)
+    {
+      v = target + decay * (v - target);
+    }
+  }
 }
 
 void vtkPlumeSmokeSolver::ApplyBuoyancy(double dt)
@@ -925,9 +950,20 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
   }
   // All advected quantities move with the velocity of the start of the step
   // (the scalars first: the velocity advection replaces it).
-  this->AdvectScalar(this->Density, dt, this->DensityDissipation, 0.0);
-  this->AdvectScalar(this->Temperature, dt, this->TemperatureDissipation, this->AmbientTemperature);
-  this->AdvectVelocity(dt);
+  std::vector<double> next;
+  this->Advect(this->Density, -1, dt, this->DensityDissipation, 0.0, next);
+  this->Density.swap(next);
+  this->Advect(this->Temperature, -1, dt, this->TemperatureDissipation, this->AmbientTemperature, next);
+  this->Temperature.swap(next);
+  std::vector<double> velocity[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    this->Advect(this->U[d], d, dt, this->VelocityDissipation, 0.0, velocity[d]);
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    this->U[d].swap(velocity[d]);
+  }
   this->ApplyBuoyancy(dt);
   this->ApplySources();
   if (!this->Project())

@@ -8,6 +8,7 @@
 //    with an obstacle: no NaN, speed bounded by the jets' speed plus what
 //    buoyancy can add;
 //  - a 2D grid (one cell along z) and a 2×2×1 grid run.
+#include "vtkPlumeParameterTable.h"
 #include "vtkPlumePressureSolver.h"
 #include "vtkPlumeSmokeSolver.h"
 
@@ -69,6 +70,21 @@ vtkSmartPointer<vtkPlumeSmokeSolver> Small()
 
 int TestSmokeSolverStress(int, char*[])
 {
+  // the constructors take the tables' defaults
+  {
+    vtkNew<vtkPlumeSmokeSolver> smoke;
+    vtkNew<vtkPlumePressureSolver> pressure;
+    for (auto [object, table] : { std::make_pair(static_cast<vtkObject*>(smoke), &vtkPlumeSmokeSolver::GetParameterTable()),
+           std::make_pair(static_cast<vtkObject*>(pressure), &vtkPlumePressureSolver::GetParameterTable()) })
+    {
+      for (const auto& p : table->GetParameters())
+      {
+        const std::string got = vtkPlumeParameterTable::Format(p.Get(object));
+        const std::string expected = vtkPlumeParameterTable::Format(p.Default);
+        PLUME_CHECK(got == expected, table->GetClassName() << "." << p.Key << " is " << got << ", default " << expected);
+      }
+    }
+  }
   {
     auto s = Small();
     s->SetDimensions(0, 8, 8);
