@@ -193,6 +193,12 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
       .Panel("Forces")
       .Doc("Direction buoyancy acts along (normalised; 2D grids use +y if it has no x-y part).")
       .Bind(&T::SetUp, &T::GetUp);
+    t.Real("vorticity_confinement", "VorticityConfinement", 0.0)
+      .Between(0.0, 1e6)
+      .Panel("Forces")
+      .Doc("Strength epsilon of vorticity confinement (Fedkiw et al. 2001), which puts back the small swirls "
+           "numerical diffusion removes; 0 = off (the seed).")
+      .Bind(&T::SetVorticityConfinement, &T::GetVorticityConfinement);
     t.Real("density_dissipation", "DensityDissipation", 0.0)
       .Between(0.0, 1e6)
       .Units("1/s")
@@ -881,6 +887,103 @@ void vtkPlumeSmokeSolver::ApplyBuoyancy(double dt)
   }
 }
 
+//------------------------------------------------------------------------------
+void vtkPlumeSmokeSolver::ApplyVorticityConfinement(double dt)
+{
+  if (this->VorticityConfinement <= 0)
+  {
+    return;
+  }
+  const int* n = this->Cells;
+  const size_t count = this->Solid.size();
+  const size_t stride[3] = { 1, size_t(n[0]), size_t(n[0]) * n[1] };
+  // cell-centred velocity
+  std::vector<glm::dvec3> uc(count);
+  ForRows(n, [&](int j, int k) {
+    for (int i = 0; i < n[0]; ++i)
+    {
+      const size_t c = i + stride[1] * j + stride[2] * k;
+      const size_t fx = i + size_t(n[0] + 1) * (j + size_t(n[1]) * k);
+      const size_t fy = i + size_t(n[0]) * (j + size_t(n[1] + 1) * k);
+      uc[c] = glm::dvec3(0.5 * (this->U[0][fx] + this->U[0][fx + 1]),
+        0.5 * (this->U[1][fy] + this->U[1][fy + n[0]]), 0.5 * (this->U[2][c] + this->U[2][c + stride[2]]));
+    }
+  });
+  // central differences (one-sided at the domain sides); d/da of a cell array
+  auto derivative = [&](auto&& value, int i, int j, int k, int a) {
+    int lo[3] = { i, j, k }, hi[3] = { i, j, k };
+    if (n[a] == 1)
+    {
+      return decltype(value(0)) {};
+    }
+    lo[a] = std::max(lo[a] - 1, 0);
+    hi[a] = std::min(hi[a] + 1, n[a] - 1);
+    const size_t cl = lo[0] * stride[0] + lo[1] * stride[1] + lo[2] * stride[2];
+    const size_t ch = hi[0] * stride[0] + hi[1] * stride[1] + hi[2] * stride[2];
+    return (value(ch) - value(cl)) / ((hi[a] - lo[a]) * this->H[a]);
+  };
+  std::vector<glm::dvec3> omega(count);
+  std::vector<double> magnitude(count);
+  ForRows(n, [&](int j, int k) {
+    for (int i = 0; i < n[0]; ++i)
+    {
+      const size_t c = i + stride[1] * j + stride[2] * k;
+      auto u = [&](size_t cell) { return uc[cell]; };
+      const glm::dvec3 dx = derivative(u, i, j, k, 0), dy = derivative(u, i, j, k, 1), dz = derivative(u, i, j, k, 2);
+      omega[c] = glm::dvec3(dy.z - dz.y, dz.x - dx.z, dx.y - dy.x);
+      magnitude[c] = glm::length(omega[c]);
+    }
+  });
+  const double scale = this->VorticityConfinement * std::min({ this->H[0], this->H[1], n[2] > 1 ? this->H[2] : this->H[0] });
+  std::vector<glm::dvec3> force(count, glm::dvec3(0.0));
+  ForRows(n, [&](int j, int k) {
+    for (int i = 0; i < n[0]; ++i)
+    {
+      const size_t c = i + stride[1] * j + stride[2] * k;
+      if (this->Solid[c])
+      {
+        continue;
+      }
+      auto m = [&](size_t cell) { return magnitude[cell]; };
+      const glm::dvec3 g(derivative(m, i, j, k, 0), derivative(m, i, j, k, 1), derivative(m, i, j, k, 2));
+      const double length = glm::length(g);
+      if (length > 1e-12 * (magnitude[c] + 1e-300) / this->H[0] && length > 0)
+      {
+        force[c] = scale * glm::cross(g / length, omega[c]);
+      }
+    }
+  });
+  for (int d = 0; d < 3; ++d)
+  {
+    int m[3] = { n[0], n[1], n[2] };
+    ++m[d];
+    ForRows(m, [&](int j, int k) {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (this->IsWallFace(d, i, j, k))
+        {
+          continue;
+        }
+        int idx[3] = { i, j, k };
+        double f = 0;
+        int cells = 0;
+        if (idx[d] < n[d])
+        {
+          f += force[idx[0] * stride[0] + idx[1] * stride[1] + idx[2] * stride[2]][d];
+          ++cells;
+        }
+        if (idx[d] > 0)
+        {
+          --idx[d];
+          f += force[idx[0] * stride[0] + idx[1] * stride[1] + idx[2] * stride[2]][d];
+          ++cells;
+        }
+        this->U[d][i + size_t(m[0]) * (j + size_t(m[1]) * k)] += dt * f / cells;
+      }
+    });
+  }
+}
+
 void vtkPlumeSmokeSolver::ApplySources()
 {
   const int* n = this->Cells;
@@ -965,6 +1068,7 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
     this->U[d].swap(velocity[d]);
   }
   this->ApplyBuoyancy(dt);
+  this->ApplyVorticityConfinement(dt);
   this->ApplySources();
   if (!this->Project())
   {

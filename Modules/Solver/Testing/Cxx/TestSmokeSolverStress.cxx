@@ -5,7 +5,7 @@
 //    source, unknown open side, obstacles covering everything, a missing
 //    obstacle array, a non-finite velocity reaching the pressure solve;
 //  - CFL ≈ 8 (time step eight cells' travel), 200 steps, jets into a box
-//    with an obstacle: no NaN, speed bounded by the jets' speed plus what
+//    with an obstacle, MacCormack and vorticity confinement: no NaN, speed bounded by the jets' speed plus what
 //    buoyancy can add;
 //  - a 2D grid (one cell along z) and a 2×2×1 grid run.
 #include "vtkPlumeParameterTable.h"
@@ -175,6 +175,8 @@ int TestSmokeSolverStress(int, char*[])
     s->SetSpacing(0.1, 0.1, 0.1);
     s->SetTimeStep(0.4);
     s->SetBuoyancy(1.0);
+    s->SetVorticityConfinement(0.3); // its 3D path too
+    s->SetAdvectionScheme(vtkPlumeSmokeSolver::MACCORMACK);
     s->SetOpenFaces("zmax");
     const double c1[3] = { 0.3, 0.5, 0.3 }, v1[3] = { 2, 0, 1 };
     const double c2[3] = { 1.2, 0.6, 0.5 }, v2[3] = { -2, 0.5, 0 };
