@@ -100,6 +100,25 @@ double Trilinear(const std::vector<double>& f, const int m[3], glm::dvec3 g)
   return c0 * (1 - t[2]) + c1 * t[2];
 }
 
+// The point of `image` nearest to x, or -1 outside it.
+vtkIdType NearestPoint(vtkImageData* image, const glm::dvec3& x)
+{
+  const double* io = image->GetOrigin();
+  const double* is = image->GetSpacing();
+  const int* ext = image->GetExtent();
+  int idx[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double g = is[a] != 0 ? (x[a] - io[a]) / is[a] : double(ext[2 * a]);
+    idx[a] = int(std::lround(g));
+    if (idx[a] < ext[2 * a] || idx[a] > ext[2 * a + 1])
+    {
+      return -1;
+    }
+  }
+  return image->ComputePointId(idx);
+}
+
 // The smallest and largest of the (up to 8) grid values Trilinear() would blend at g.
 void MinMax(const std::vector<double>& f, const int m[3], glm::dvec3 g, double& lo, double& hi)
 {
@@ -227,6 +246,17 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
       .Advanced()
       .Doc("Point array of the optional input image marking solid cells (> 0.5).")
       .Bind(&T::SetObstacleArrayName, &T::GetObstacleArrayName);
+    t.Text("velocity_array", "VelocityArrayName", "")
+      .Panel("Boundaries")
+      .Doc("Point array (3 components) of the optional velocity image on input port 1, in which smoke is "
+           "released passively (the velocity does not evolve); \"\" = its active vectors.")
+      .Bind(&T::SetVelocityArrayName, &T::GetVelocityArrayName);
+    t.Boolean("project_velocity", "ProjectExternalVelocity", true)
+      .Panel("Boundaries")
+      .Advanced()
+      .Doc("Project the given velocity once (remove the divergence its resampling leaves, make walls and "
+           "obstacles tight).")
+      .Bind(&T::SetProjectExternalVelocity, &T::GetProjectExternalVelocity);
     t.Choice("pressure_solver", "PressureMethod", "pcg")
       .Choice("jacobi", vtkPlumePressureSolver::JACOBI,
         "the seed's Jacobi iterations (damped by jacobi_weight); iterations grow with the grid")
@@ -261,7 +291,7 @@ vtkPlumeSmokeSolver::vtkPlumeSmokeSolver()
   : Pressure(vtkSmartPointer<vtkPlumePressureSolver>::New())
   , LastRequestedTime(std::numeric_limits<double>::quiet_NaN())
 {
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
   GetParameterTable().ApplyDefaults(this);
 }
@@ -515,6 +545,24 @@ bool vtkPlumeSmokeSolver::EnsureState()
     signature.push_back(double(mask->GetMTime()));
     signature.push_back(double(reinterpret_cast<uintptr_t>(mask)));
   }
+  vtkDataArray* external = nullptr;
+  vtkDataArray* valid = nullptr;
+  if (this->VelocityInput)
+  {
+    external = this->VelocityArrayName.empty() ? this->VelocityInput->GetPointData()->GetVectors()
+                                               : this->VelocityInput->GetPointData()->GetArray(this->VelocityArrayName.c_str());
+    if (!external || external->GetNumberOfComponents() != 3)
+    {
+      this->LastError = "smoke solver: the velocity image has no 3-component point array '" +
+        (this->VelocityArrayName.empty() ? std::string("(active vectors)") : this->VelocityArrayName) +
+        "' (velocity_array)";
+      return false;
+    }
+    valid = this->VelocityInput->GetPointData()->GetArray("vtkValidPointMask");
+    signature.push_back(double(this->VelocityInput->GetMTime()));
+    signature.push_back(double(external->GetMTime()));
+    signature.push_back(double(reinterpret_cast<uintptr_t>(external)));
+  }
   if (signature == this->Signature)
   {
     return true;
@@ -545,6 +593,12 @@ bool vtkPlumeSmokeSolver::EnsureState()
           solid = solid || (p.x >= o.Values[0] && p.x <= o.Values[1] && p.y >= o.Values[2] && p.y <= o.Values[3] &&
                              p.z >= o.Values[4] && p.z <= o.Values[5]);
         }
+      }
+      if (!solid && valid)
+      {
+        // points a resampled CFD field marks as outside its mesh are solid
+        const vtkIdType id = NearestPoint(this->VelocityInput, p);
+        solid = id >= 0 && valid->GetComponent(id, 0) == 0;
       }
       if (!solid && mask)
       {
@@ -586,16 +640,107 @@ bool vtkPlumeSmokeSolver::EnsureState()
   this->Temperature.assign(count, 0.0);
   this->Q.assign(count, 0.0);
   this->Pressure->SetProblem(this->Cells, this->H, this->Solid.data(), this->Open);
+  for (auto& u : this->ExternalU)
+  {
+    u.clear();
+  }
+  if (external && !this->SampleExternalVelocity(external))
+  {
+    this->Signature.clear();
+    return false;
+  }
   this->Signature = signature;
   this->Reset();
   return true;
 }
 
+bool vtkPlumeSmokeSolver::SampleExternalVelocity(vtkDataArray* velocity)
+{
+  // Each face takes its component of the velocity image, trilinear between
+  // the image's points (zero outside the image); walls stay zero. The field
+  // is then projected once: resampling leaves some divergence, which would
+  // make passive smoke gather or thin out.
+  const int* n = this->Cells;
+  vtkImageData* image = this->VelocityInput;
+  const double* io = image->GetOrigin();
+  const double* is = image->GetSpacing();
+  const int* ext = image->GetExtent();
+  for (int d = 0; d < 3; ++d)
+  {
+    int m[3] = { n[0], n[1], n[2] };
+    ++m[d];
+    this->U[d].assign(size_t(m[0]) * m[1] * m[2], 0.0);
+    std::vector<double>& u = this->U[d];
+    ForRows(m, [&](int j, int k) {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (this->IsWallFace(d, i, j, k))
+        {
+          continue;
+        }
+        glm::dvec3 x(this->O[0] + i * this->H[0], this->O[1] + j * this->H[1], this->O[2] + k * this->H[2]);
+        x[d] -= 0.5 * this->H[d];
+        int i0[3], i1[3];
+        double t[3];
+        bool inside = true;
+        for (int a = 0; a < 3; ++a)
+        {
+          const double g = is[a] != 0 ? (x[a] - io[a]) / is[a] : double(ext[2 * a]);
+          const double lo = ext[2 * a], hi = ext[2 * a + 1];
+          inside = inside && g >= lo - 1e-9 && g <= hi + 1e-9;
+          const double gc = std::min(std::max(g, lo), hi);
+          i0[a] = std::min(int(std::floor(gc)), std::max(int(hi) - 1, int(lo)));
+          i1[a] = std::min(i0[a] + 1, int(hi));
+          t[a] = i1[a] > i0[a] ? gc - i0[a] : 0.0;
+        }
+        if (!inside)
+        {
+          continue;
+        }
+        double value = 0;
+        for (int c = 0; c < 8; ++c)
+        {
+          int idx[3];
+          double w = 1;
+          for (int a = 0; a < 3; ++a)
+          {
+            const bool upper = (c >> a) & 1;
+            idx[a] = upper ? i1[a] : i0[a];
+            w *= upper ? t[a] : 1 - t[a];
+          }
+          if (w != 0)
+          {
+            value += w * velocity->GetComponent(image->ComputePointId(idx), d);
+          }
+        }
+        u[i + size_t(m[0]) * (j + size_t(m[1]) * k)] = std::isfinite(value) ? value : 0.0;
+      }
+    });
+  }
+  if (this->ProjectExternalVelocity && !this->Project())
+  {
+    return false;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    this->ExternalU[d] = this->U[d];
+  }
+  std::fill(this->Q.begin(), this->Q.end(), 0.0);
+  return true;
+}
+
 void vtkPlumeSmokeSolver::Reset()
 {
-  for (auto& u : this->U)
+  for (int d = 0; d < 3; ++d)
   {
-    std::fill(u.begin(), u.end(), 0.0);
+    if (this->ExternalU[d].size() == this->U[d].size())
+    {
+      this->U[d] = this->ExternalU[d]; // passive smoke: the given field
+    }
+    else
+    {
+      std::fill(this->U[d].begin(), this->U[d].end(), 0.0);
+    }
   }
   std::fill(this->Density.begin(), this->Density.end(), 0.0);
   std::fill(this->Temperature.begin(), this->Temperature.end(), this->AmbientTemperature);
@@ -1011,7 +1156,7 @@ void vtkPlumeSmokeSolver::ApplySources()
         this->Temperature[c] = s.Temperature;
       }
     });
-    if (s.Velocity[0] == 0 && s.Velocity[1] == 0 && s.Velocity[2] == 0)
+    if ((s.Velocity[0] == 0 && s.Velocity[1] == 0 && s.Velocity[2] == 0) || this->HasExternalVelocity())
     {
       continue;
     }
@@ -1058,23 +1203,31 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
   this->Density.swap(next);
   this->Advect(this->Temperature, -1, dt, this->TemperatureDissipation, this->AmbientTemperature, next);
   this->Temperature.swap(next);
-  std::vector<double> velocity[3];
-  for (int d = 0; d < 3; ++d)
+  if (this->HasExternalVelocity())
   {
-    this->Advect(this->U[d], d, dt, this->VelocityDissipation, 0.0, velocity[d]);
+    // passive smoke in a given flow: the velocity does not evolve
+    this->ApplySources();
   }
-  for (int d = 0; d < 3; ++d)
+  else
   {
-    this->U[d].swap(velocity[d]);
+    std::vector<double> velocity[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      this->Advect(this->U[d], d, dt, this->VelocityDissipation, 0.0, velocity[d]);
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+      this->U[d].swap(velocity[d]);
+    }
+    this->ApplyBuoyancy(dt);
+    this->ApplyVorticityConfinement(dt);
+    this->ApplySources();
+    if (!this->Project())
+    {
+      return false;
+    }
+    this->LastProjectionDt = dt;
   }
-  this->ApplyBuoyancy(dt);
-  this->ApplyVorticityConfinement(dt);
-  this->ApplySources();
-  if (!this->Project())
-  {
-    return false;
-  }
-  this->LastProjectionDt = dt;
   this->SimulationTime += dt;
   ++this->CurrentStep;
   ++this->StepsTaken;
@@ -1112,13 +1265,18 @@ int vtkPlumeSmokeSolver::RequestInformation(
 int vtkPlumeSmokeSolver::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  // The obstacle image is read whole, whatever part of the output is asked for.
-  if (vtkInformation* inInfo = inputVector[0]->GetInformationObject(0))
+  // The obstacle and velocity images are read whole, whatever part of the
+  // output is asked for; a static field (no time request upstream).
+  for (int port = 0; port < 2; ++port)
   {
-    if (inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+    if (vtkInformation* inInfo = inputVector[port]->GetInformationObject(0))
     {
-      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
-        inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      if (inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+      {
+        inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+          inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      }
+      inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
     }
   }
   return 1;
@@ -1131,6 +1289,9 @@ int vtkPlumeSmokeSolver::RequestData(
   vtkImageData* output = vtkImageData::GetData(outInfo);
   this->ObstacleInput = inputVector[0]->GetNumberOfInformationObjects() > 0
     ? vtkImageData::GetData(inputVector[0]->GetInformationObject(0))
+    : nullptr;
+  this->VelocityInput = inputVector[1]->GetNumberOfInformationObjects() > 0
+    ? vtkImageData::GetData(inputVector[1]->GetInformationObject(0))
     : nullptr;
   if (!this->EnsureState())
   {

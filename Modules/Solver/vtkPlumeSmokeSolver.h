@@ -69,6 +69,9 @@
 #include <string> // For std::string
 #include <vector> // For std::vector
 
+class vtkAlgorithmOutput;
+class vtkDataArray;
+class vtkDataObject;
 class vtkImageData;
 class vtkPlumeParameterTable;
 class vtkPlumePressureSolver;
@@ -186,6 +189,29 @@ public:
   /** Point array of the optional input image marking obstacles (> 0.5 = solid; default "obstacle"). */
   vtkSetStdStringFromCharMacro(ObstacleArrayName);
   vtkGetCharFromStdStringMacro(ObstacleArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Virtual smoke in a given flow: with an image on input port 1
+   * (SetVelocityConnection), each face takes its component of that image's
+   * point array VelocityArrayName (default "": its active vectors),
+   * trilinear between its points (zero outside it), once when the input
+   * changes; the field is projected once if ProjectExternalVelocity (default
+   * true), and then never evolves: density and temperature are advected
+   * passively and sources emit, but buoyancy, confinement and the pressure
+   * solve are skipped. Points whose vtkValidPointMask is 0 (a CFD mesh
+   * resampled onto an image) are solid. The field is static: the input is
+   * asked for no time.
+   */
+  void SetVelocityConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetVelocityData(vtkDataObject* image) { this->SetInputData(1, image); }
+  vtkSetStdStringFromCharMacro(VelocityArrayName);
+  vtkGetCharFromStdStringMacro(VelocityArrayName);
+  vtkSetMacro(ProjectExternalVelocity, bool);
+  vtkGetMacro(ProjectExternalVelocity, bool);
+  /** Whether the velocity comes from input port 1 (after Initialize() or an update). */
+  bool HasExternalVelocity() const { return !this->ExternalU[0].empty(); }
   ///@}
 
   ///@{
@@ -330,6 +356,11 @@ protected:
   std::vector<Obstacle> Obstacles;
   unsigned long ObstacleVersion = 0;
   vtkSmartPointer<vtkImageData> ObstacleInput;
+  vtkSmartPointer<vtkImageData> VelocityInput;
+  std::string VelocityArrayName;
+  bool ProjectExternalVelocity = true;
+  std::vector<double> ExternalU[3];
+  bool SampleExternalVelocity(vtkDataArray* velocity);
 
   vtkSmartPointer<vtkPlumePressureSolver> Pressure;
 
