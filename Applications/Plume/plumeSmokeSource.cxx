@@ -65,7 +65,7 @@ vtkPlumeParameterTable::Value ToValue(const vtkPlumeParameterTable::Parameter& p
 
 }
 
-vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets&, const std::string& name)
+vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets& datasets, const std::string& name)
 {
   const std::string where = "datasets." + name;
   auto solver = vtkSmartPointer<vtkPlumeSmokeSolver>::New();
@@ -94,6 +94,23 @@ vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets&, 
       throw SceneError(where + ": '" + parameter.Key + "' " + problem);
     }
     parameter.Set(solver, value);
+  }
+
+  // Virtual smoke in another dataset's flow: its velocity (resampled onto an
+  // image if it is not one) drives passive smoke; the grid defaults to its grid.
+  if (p.Has("velocity_dataset"))
+  {
+    const std::string flow = p.String("velocity_dataset", "");
+    vtkImageData* image = datasets.GetImage(flow, where + ".velocity_dataset");
+    if (!p.Has("dimensions") && !p.Has("origin") && !p.Has("spacing"))
+    {
+      int dims[3];
+      image->GetDimensions(dims);
+      solver->SetDimensions(dims);
+      solver->SetOrigin(image->GetOrigin());
+      solver->SetSpacing(image->GetSpacing());
+    }
+    solver->SetVelocityData(image);
   }
 
   // Sources: default one at the bottom centre of the grid.
