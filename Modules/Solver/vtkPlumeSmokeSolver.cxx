@@ -23,6 +23,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <unistd.h>
 
 vtkStandardNewMacro(vtkPlumeSmokeSolver);
 
@@ -455,10 +456,16 @@ std::string vtkPlumeSmokeSolver::Validate() const
       return std::string("smoke solver: origin along ") + axes[a] + " must be finite, got " + Text(this->Origin[a]);
     }
   }
+  // Memory: about 200 bytes a cell (velocity and its advected copy, scalars
+  // and theirs, pressure, right-hand side, hypre's matrix and multigrid
+  // hierarchy; measured 697 MB peak at 128^3). Refused above half the RAM.
   const double cells = double(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
-  if (cells > 512.0 * 512.0 * 512.0)
+  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+  const double budget = pages > 0 && pageSize > 0 ? 0.5 * double(pages) * double(pageSize) : 4.0 * (1 << 30);
+  if (cells * 200.0 > budget)
   {
-    return "smoke solver: " + Text(cells) + " cells is more than the 512^3 this solver allocates";
+    return "smoke solver: " + Text(cells) + " cells need about " + Text(std::ceil(cells * 200.0 / (1 << 20))) +
+      " MB, more than half the memory (" + Text(std::floor(budget / (1 << 20))) + " MB)";
   }
   if (!(this->TimeStep > 0) || !std::isfinite(this->TimeStep))
   {

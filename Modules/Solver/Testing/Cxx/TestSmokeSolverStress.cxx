@@ -97,6 +97,11 @@ int TestSmokeSolverStress(int, char*[])
   }
   {
     auto s = Small();
+    s->SetDimensions(4096, 4096, 4096);
+    ExpectError("huge grid", s, { "cells need about", "MB, more than half the memory" });
+  }
+  {
+    auto s = Small();
     s->SetSpacing(0.1, 0.1, -0.5);
     ExpectError("negative spacing", s, { "spacing along z", "-0.5" });
   }
