@@ -11,6 +11,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libopenexr-dev libglm-dev
   libgtest-dev libbenchmark-dev
   libhypre-dev                      # structured multigrid-preconditioned CG (smoke solver pressure)
+  libeigen3-dev                     # Eigen's IC-preconditioned CG: the pressure benchmark's peer
 )
 
 missing=()
