@@ -20,6 +20,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
+#include <fstream>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -1184,6 +1186,128 @@ void vtkPlumeSmokeSolver::ApplySources()
       });
     }
   }
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+const char CheckpointMagic[16] = "PLUMESMOKE1";
+}
+
+bool vtkPlumeSmokeSolver::WriteCheckpoint(const char* path)
+{
+  if (!this->EnsureState())
+  {
+    return false;
+  }
+  std::ofstream out(path ? path : "", std::ios::binary);
+  if (!out)
+  {
+    this->LastError = std::string("smoke solver: cannot write the checkpoint '") + (path ? path : "") + "'";
+    return false;
+  }
+  auto write = [&](const void* data, size_t bytes) { out.write(static_cast<const char*>(data), bytes); };
+  write(CheckpointMagic, sizeof(CheckpointMagic));
+  write(this->Cells, sizeof(this->Cells));
+  write(this->O, sizeof(this->O));
+  write(this->H, sizeof(this->H));
+  write(this->Open, sizeof(this->Open));
+  const long long step = this->CurrentStep;
+  write(&step, sizeof(step));
+  write(&this->SimulationTime, sizeof(double));
+  write(&this->LastProjectionDt, sizeof(double));
+  for (const auto& u : this->U)
+  {
+    write(u.data(), u.size() * sizeof(double));
+  }
+  write(this->Density.data(), this->Density.size() * sizeof(double));
+  write(this->Temperature.data(), this->Temperature.size() * sizeof(double));
+  write(this->Q.data(), this->Q.size() * sizeof(double));
+  write(this->Solid.data(), this->Solid.size());
+  if (!out)
+  {
+    this->LastError = std::string("smoke solver: writing the checkpoint '") + path + "' failed";
+    return false;
+  }
+  return true;
+}
+
+bool vtkPlumeSmokeSolver::ReadCheckpoint(const char* path)
+{
+  if (!this->EnsureState())
+  {
+    return false;
+  }
+  const std::string name = path ? path : "";
+  std::ifstream in(name, std::ios::binary);
+  if (!in)
+  {
+    this->LastError = "smoke solver: cannot read the checkpoint '" + name + "'";
+    return false;
+  }
+  auto read = [&](void* data, size_t bytes) { return bool(in.read(static_cast<char*>(data), bytes)); };
+  char magic[16] = {};
+  int cells[3];
+  double origin[3], spacing[3];
+  bool open[6];
+  long long step = 0;
+  double time = 0, projectionDt = 0;
+  if (!read(magic, sizeof(magic)) || std::memcmp(magic, CheckpointMagic, sizeof(magic)) != 0)
+  {
+    this->LastError = "smoke solver: '" + name + "' is not a smoke solver checkpoint";
+    return false;
+  }
+  if (!read(cells, sizeof(cells)) || !read(origin, sizeof(origin)) || !read(spacing, sizeof(spacing)) ||
+    !read(open, sizeof(open)) || !read(&step, sizeof(step)) || !read(&time, sizeof(time)) ||
+    !read(&projectionDt, sizeof(projectionDt)))
+  {
+    this->LastError = "smoke solver: the checkpoint '" + name + "' is truncated";
+    return false;
+  }
+  if (!std::equal(cells, cells + 3, this->Cells) || !std::equal(origin, origin + 3, this->O) ||
+    !std::equal(spacing, spacing + 3, this->H) || !std::equal(open, open + 6, this->Open))
+  {
+    this->LastError = "smoke solver: the checkpoint '" + name + "' is of a " + std::to_string(cells[0]) + "x" +
+      std::to_string(cells[1]) + "x" + std::to_string(cells[2]) +
+      " grid with other origin, spacing or open sides than this solver's " + std::to_string(this->Cells[0]) + "x" +
+      std::to_string(this->Cells[1]) + "x" + std::to_string(this->Cells[2]);
+    return false;
+  }
+  std::vector<double> u[3], density(this->Density.size()), temperature(this->Temperature.size()),
+    q(this->Q.size());
+  std::vector<unsigned char> solid(this->Solid.size());
+  bool ok = true;
+  for (int d = 0; d < 3; ++d)
+  {
+    u[d].resize(this->U[d].size());
+    ok = ok && read(u[d].data(), u[d].size() * sizeof(double));
+  }
+  ok = ok && read(density.data(), density.size() * sizeof(double)) &&
+    read(temperature.data(), temperature.size() * sizeof(double)) && read(q.data(), q.size() * sizeof(double)) &&
+    read(solid.data(), solid.size());
+  if (!ok)
+  {
+    this->LastError = "smoke solver: the checkpoint '" + name + "' is truncated";
+    return false;
+  }
+  if (solid != this->Solid)
+  {
+    this->LastError = "smoke solver: the checkpoint '" + name + "' has other obstacles than this solver";
+    return false;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    this->U[d].swap(u[d]);
+  }
+  this->Density.swap(density);
+  this->Temperature.swap(temperature);
+  this->Q.swap(q);
+  this->CurrentStep = vtkIdType(step);
+  this->SimulationTime = time;
+  this->LastProjectionDt = projectionDt;
+  this->LastRequestedTime = std::numeric_limits<double>::quiet_NaN();
+  this->Modified();
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -264,6 +264,18 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Checkpoint: the full state (velocity faces, density, temperature,
+   * pressure, solid cells, step and time) in a binary file. Reading it back
+   * into a solver with the same grid, open sides and obstacles continues
+   * bit for bit as the original would have; anything else is refused with
+   * GetLastError() naming the difference. Return false on failure.
+   */
+  bool WriteCheckpoint(const char* path);
+  bool ReadCheckpoint(const char* path);
+  ///@}
+
+  ///@{
   /** Current simulation time, current step, and steps computed since construction (restarts recompute). */
   vtkGetMacro(SimulationTime, double);
   vtkGetMacro(CurrentStep, vtkIdType);

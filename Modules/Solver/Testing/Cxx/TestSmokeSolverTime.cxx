@@ -5,7 +5,9 @@
 //    the recomputed state equals the first computation bit for bit;
 //  - the output carries the six arrays, DATA_TIME_STEP and the grid;
 //  - explicit Step() mixes with the pipeline (the stale request does not
-//    rewind it), and a grid change restarts.
+//    rewind it), and a grid change restarts;
+//  - a checkpoint written at step 6 and read into a new solver continues
+//    bit for bit; another grid's or a missing checkpoint is refused, named.
 #include "vtkPlumeSmokeSolver.h"
 
 #include "vtkDataArray.h"
@@ -18,7 +20,9 @@
 
 #include "plumeSolverTestUtilities.h"
 
+#include <cstdio>
 #include <cstring>
+#include <string>
 
 using namespace plume_solver_test;
 
@@ -122,6 +126,51 @@ int TestSmokeSolverTime(int, char*[])
   PLUME_CHECK(std::abs(solver->GetOutput()->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()) - 0.7) < 1e-12,
     "DATA_TIME_STEP after explicit steps");
   PLUME_CHECK(Density(solver->GetOutput()) != density5, "the output did not follow the explicit steps");
+
+  // checkpoint -> restart continues bit for bit
+  {
+    const std::string path = "plume_smoke_checkpoint.bin"; // in the test's working folder, removed after
+    vtkNew<vtkPlumeSmokeSolver> original;
+    Configure(original);
+    for (int s = 0; s < 6; ++s)
+    {
+      PLUME_CHECK(original->Step(), original->GetLastError());
+    }
+    PLUME_CHECK(original->WriteCheckpoint(path.c_str()), original->GetLastError());
+    for (int s = 0; s < 4; ++s)
+    {
+      PLUME_CHECK(original->Step(), original->GetLastError());
+    }
+    vtkNew<vtkPlumeSmokeSolver> restarted;
+    Configure(restarted);
+    PLUME_CHECK(restarted->ReadCheckpoint(path.c_str()), restarted->GetLastError());
+    PLUME_CHECK(restarted->GetCurrentStep() == 6, "restarted at step " << restarted->GetCurrentStep());
+    for (int s = 0; s < 4; ++s)
+    {
+      PLUME_CHECK(restarted->Step(), restarted->GetLastError());
+    }
+    const size_t cells = 12 * 10 * 16;
+    PLUME_CHECK(std::memcmp(original->GetDensityData(), restarted->GetDensityData(), cells * sizeof(double)) == 0,
+      "density after restart differs");
+    for (int d = 0; d < 3; ++d)
+    {
+      const size_t faces = size_t(12 + (d == 0)) * (10 + (d == 1)) * (16 + (d == 2));
+      PLUME_CHECK(std::memcmp(original->GetFaceVelocityData(d), restarted->GetFaceVelocityData(d),
+                    faces * sizeof(double)) == 0,
+        "velocity " << d << " after restart differs");
+    }
+    PLUME_CHECK(std::abs(original->GetSimulationTime() - restarted->GetSimulationTime()) == 0, "time differs");
+    // a checkpoint of another grid is refused, naming it
+    vtkNew<vtkPlumeSmokeSolver> other;
+    Configure(other);
+    other->SetDimensions(12, 10, 17);
+    PLUME_CHECK(!other->ReadCheckpoint(path.c_str()), "a checkpoint of another grid was read");
+    PLUME_CHECK(std::string(other->GetLastError()).find("12x10x16 grid") != std::string::npos, other->GetLastError());
+    PLUME_CHECK(!other->ReadCheckpoint("/nonexistent/checkpoint.bin"), "a missing checkpoint was read");
+    PLUME_CHECK(std::string(other->GetLastError()).find("/nonexistent/checkpoint.bin") != std::string::npos,
+      other->GetLastError());
+    std::remove(path.c_str());
+  }
 
   // a grid change restarts
   solver->SetDimensions(8, 8, 8);
