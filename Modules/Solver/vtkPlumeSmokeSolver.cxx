@@ -25,7 +25,9 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <unistd.h>
+#if __has_include(<unistd.h>)
+#include <unistd.h> // sysconf: the physical memory
+#endif
 
 vtkStandardNewMacro(vtkPlumeSmokeSolver);
 
@@ -462,7 +464,11 @@ std::string vtkPlumeSmokeSolver::Validate() const
   // and theirs, pressure, right-hand side, hypre's matrix and multigrid
   // hierarchy; measured 697 MB peak at 128^3). Refused above half the RAM.
   const double cells = double(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGE_SIZE)
   const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+#else
+  const long pages = 0, pageSize = 0; // unknown: assume 8 GB of RAM
+#endif
   const double budget = pages > 0 && pageSize > 0 ? 0.5 * double(pages) * double(pageSize) : 4.0 * (1 << 30);
   if (cells * 200.0 > budget)
   {
