@@ -68,6 +68,13 @@ for dir in "$root"/Modules/*/; do
   flags+=(-I "$build/Modules/$name" -I "$root/Modules/$name")
 done
 
+# Plume::Solver also includes hypre's headers, which include MPI's (Debian's
+# libhypre-dev and its Open MPI; ParaView's VTK is MPI-enabled against the same).
+if [ -f /usr/include/hypre/HYPRE_struct_ls.h ]; then
+  flags+=(-isystem /usr/include/hypre)
+  for dir in $(pkg-config --cflags-only-I ompi-c 2>/dev/null | sed 's/-I//g'); do flags+=(-isystem "$dir"); done
+fi
+
 # The headers really are 9.2: a probe that fails on any other version.
 probe="$(printf '%s\n' '#include <vtkVersionMacros.h>' \
   '#if !(VTK_MAJOR_VERSION == 9 && VTK_MINOR_VERSION == 2)' \

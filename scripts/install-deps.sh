@@ -10,6 +10,8 @@ packages=(
   xvfb xauth                        # private X server for the test suite
   nlohmann-json3-dev libcli11-dev libopenexr-dev libglm-dev
   libgtest-dev libbenchmark-dev
+  libhypre-dev                      # structured multigrid-preconditioned CG (smoke solver pressure)
+  libeigen3-dev                     # Eigen's IC-preconditioned CG: the pressure benchmark's peer
 )
 
 missing=()

@@ -134,10 +134,15 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
     return entry.Data;
   }
   Parameters p(entry.Spec, "datasets." + name);
-  const std::string source = p.Choice("source", "file", { "file", "vortex", "splat" });
+  const std::string source = p.Choice("source", "file", { "file", "vortex", "splat", "smoke" });
   if (source == "splat")
   {
     entry.Data = BuildSplatDataset(p, *this, name);
+    return entry.Data;
+  }
+  if (source == "smoke")
+  {
+    entry.Data = BuildSmokeDataset(p, *this, name);
     return entry.Data;
   }
   if (source == "vortex")

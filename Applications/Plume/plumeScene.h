@@ -63,6 +63,8 @@ void RegisterSheetRepresentations(std::map<std::string, RepresentationBuilder>& 
 
 /** The dataset `"source": "splat"` (plumeSplatSource.cxx). */
 vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
+/** The dataset `"source": "smoke"` (plumeSmokeSource.cxx). */
+vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
 
 struct SceneOptions
 {

@@ -1,0 +1,1540 @@
+#include "vtkPlumeSmokeSolver.h"
+
+#include "vtkPlumeParameterTable.h"
+#include "vtkPlumePressureSolver.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCompositeDataPipeline.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#if __has_include(<unistd.h>)
+#include <unistd.h> // sysconf: the physical memory
+#endif
+
+vtkStandardNewMacro(vtkPlumeSmokeSolver);
+
+namespace
+{
+const char* const FaceNames[6] = { "xmin", "xmax", "ymin", "ymax", "zmin", "zmax" };
+
+// Parses OpenFaces; returns "" or the offending word.
+std::string ParseOpenFaces(const std::string& text, bool open[6])
+{
+  std::fill(open, open + 6, false);
+  std::string word;
+  std::string all = text;
+  std::replace(all.begin(), all.end(), ',', ' ');
+  std::istringstream words(all);
+  while (words >> word)
+  {
+    if (word == "all")
+    {
+      std::fill(open, open + 6, true);
+      continue;
+    }
+    const auto* it = std::find(FaceNames, FaceNames + 6, word);
+    if (it == FaceNames + 6)
+    {
+      return word;
+    }
+    open[it - FaceNames] = true;
+  }
+  return "";
+}
+
+std::string Text(double v)
+{
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+// Threaded loop over the rows (j, k) of a grid with n[1] × n[2] rows.
+template <class F>
+void ForRows(const int n[3], F&& f)
+{
+  vtkSMPTools::For(0, vtkIdType(n[1]) * n[2], [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      f(int(r % n[1]), int(r / n[1]));
+    }
+  });
+}
+
+// Trilinear sample of a grid with m points per axis whose point (0,0,0) is
+// at index-space position g = 0; positions outside are clamped to the grid.
+double Trilinear(const std::vector<double>& f, const int m[3], glm::dvec3 g)
+{
+  int i0[3];
+  double t[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double x = std::min(std::max(g[a], 0.0), double(m[a] - 1));
+    const int i = std::min(int(x), std::max(m[a] - 2, 0));
+    i0[a] = i;
+    t[a] = m[a] > 1 ? x - i : 0.0;
+  }
+  const size_t sx = m[0] > 1 ? 1 : 0;
+  const size_t sy = m[1] > 1 ? size_t(m[0]) : 0;
+  const size_t sz = m[2] > 1 ? size_t(m[0]) * m[1] : 0;
+  const size_t c = i0[0] + size_t(m[0]) * (i0[1] + size_t(m[1]) * i0[2]);
+  const double c00 = f[c] * (1 - t[0]) + f[c + sx] * t[0];
+  const double c10 = f[c + sy] * (1 - t[0]) + f[c + sy + sx] * t[0];
+  const double c01 = f[c + sz] * (1 - t[0]) + f[c + sz + sx] * t[0];
+  const double c11 = f[c + sz + sy] * (1 - t[0]) + f[c + sz + sy + sx] * t[0];
+  const double c0 = c00 * (1 - t[1]) + c10 * t[1];
+  const double c1 = c01 * (1 - t[1]) + c11 * t[1];
+  return c0 * (1 - t[2]) + c1 * t[2];
+}
+
+// The point of `image` nearest to x, or -1 outside it.
+vtkIdType NearestPoint(vtkImageData* image, const glm::dvec3& x)
+{
+  const double* io = image->GetOrigin();
+  const double* is = image->GetSpacing();
+  const int* ext = image->GetExtent();
+  int idx[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double g = is[a] != 0 ? (x[a] - io[a]) / is[a] : double(ext[2 * a]);
+    idx[a] = int(std::lround(g));
+    if (idx[a] < ext[2 * a] || idx[a] > ext[2 * a + 1])
+    {
+      return -1;
+    }
+  }
+  return image->ComputePointId(idx);
+}
+
+// The smallest and largest of the (up to 8) grid values Trilinear() would blend at g.
+void MinMax(const std::vector<double>& f, const int m[3], glm::dvec3 g, double& lo, double& hi)
+{
+  int i0[3], i1[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double x = std::min(std::max(g[a], 0.0), double(m[a] - 1));
+    i0[a] = std::min(int(x), std::max(m[a] - 2, 0));
+    i1[a] = std::min(i0[a] + 1, m[a] - 1);
+  }
+  lo = std::numeric_limits<double>::infinity();
+  hi = -lo;
+  for (int k : { i0[2], i1[2] })
+    for (int j : { i0[1], i1[1] })
+      for (int i : { i0[0], i1[0] })
+      {
+        const double v = f[i + size_t(m[0]) * (j + size_t(m[1]) * k)];
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+}
+}
+
+//------------------------------------------------------------------------------
+const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
+{
+  static const vtkPlumeParameterTable table = [] {
+    using T = vtkPlumeSmokeSolver;
+    vtkPlumeParameterTable t("vtkPlumeSmokeSolver", "smoke");
+    // Integer 3-vector: the table's vectors are doubles, so bound by hand.
+    auto& dims = t.Vector3("dimensions", "Dimensions", { 48, 48, 64 })
+                   .Between(1, 4096)
+                   .Panel("Grid")
+                   .Doc("Grid points (simulation cells) along x, y, z; 1 along z for a 2D simulation.");
+    dims.Setter = [](vtkObject* o, const vtkPlumeParameterTable::Value& v) {
+      const auto d = std::get<std::array<double, 3>>(v);
+      static_cast<T*>(o)->SetDimensions(int(std::lround(d[0])), int(std::lround(d[1])), int(std::lround(d[2])));
+    };
+    dims.Getter = [](vtkObject* o) -> vtkPlumeParameterTable::Value {
+      const int* d = static_cast<T*>(o)->GetDimensions();
+      return std::array<double, 3>{ double(d[0]), double(d[1]), double(d[2]) };
+    };
+    t.Vector3("origin", "Origin", { 0, 0, 0 })
+      .Units("model units")
+      .Panel("Grid")
+      .Doc("Position of the first grid point.")
+      .Bind(&T::SetOrigin, &T::GetOrigin);
+    t.Vector3("spacing", "Spacing", { 0.02, 0.02, 0.02 })
+      .Between(1e-30, 1e30)
+      .Units("model units")
+      .Panel("Grid")
+      .Doc("Distance between grid points; the walls lie half a spacing outside the outermost points.")
+      .Bind(&T::SetSpacing, &T::GetSpacing);
+    t.Real("time_step", "TimeStep", 0.02)
+      .Between(1e-30, 1e30)
+      .Units("s")
+      .Panel("Time")
+      .Doc("Seconds per simulation step (stable at any CFL number).")
+      .Bind(&T::SetTimeStep, &T::GetTimeStep);
+    t.Integer("time_steps", "NumberOfTimeSteps", 200)
+      .Between(1, 10000000)
+      .Panel("Time")
+      .Doc("Steps advertised to the pipeline (times k * time_step, k = 0 .. time_steps).")
+      .Bind(&T::SetNumberOfTimeSteps, &T::GetNumberOfTimeSteps);
+    t.Choice("advection", "AdvectionScheme", "semi_lagrangian")
+      .Choice("semi_lagrangian", SEMI_LAGRANGIAN, "the seed's: trilinear sample at the back-traced point (first order, diffusive)")
+      .Choice("maccormack", MACCORMACK,
+        "MacCormack: a forward-and-back round trip corrects the semi-Lagrangian error (second order), clamped "
+        "to the sampled values; about twice the advection cost")
+      .Panel("Advection")
+      .Doc("How density, temperature and velocity move with the flow.")
+      .Bind(&T::SetAdvectionScheme, &T::GetAdvectionScheme);
+    t.Real("buoyancy", "Buoyancy", 1.0)
+      .Between(-1e30, 1e30)
+      .Units("model units / s² per degree")
+      .Panel("Forces")
+      .Doc("Upward acceleration per unit of temperature above ambient (Harris' sigma).")
+      .Bind(&T::SetBuoyancy, &T::GetBuoyancy);
+    t.Real("smoke_weight", "SmokeWeight", 0.05)
+      .Between(-1e30, 1e30)
+      .Units("model units / s² per unit density")
+      .Panel("Forces")
+      .Doc("Downward acceleration per unit of smoke density (Harris' kappa).")
+      .Bind(&T::SetSmokeWeight, &T::GetSmokeWeight);
+    t.Real("ambient_temperature", "AmbientTemperature", 0.0)
+      .Between(-1e30, 1e30)
+      .Panel("Forces")
+      .Doc("Temperature of the resting air: the initial temperature and buoyancy's reference.")
+      .Bind(&T::SetAmbientTemperature, &T::GetAmbientTemperature);
+    t.Vector3("up", "Up", { 0, 0, 1 })
+      .Panel("Forces")
+      .Doc("Direction buoyancy acts along (normalised; 2D grids use +y if it has no x-y part).")
+      .Bind(&T::SetUp, &T::GetUp);
+    t.Real("vorticity_confinement", "VorticityConfinement", 0.0)
+      .Between(0.0, 1e6)
+      .Panel("Forces")
+      .Doc("Strength epsilon of vorticity confinement (Fedkiw et al. 2001), which puts back the small swirls "
+           "numerical diffusion removes; 0 = off (the seed).")
+      .Bind(&T::SetVorticityConfinement, &T::GetVorticityConfinement);
+    t.Real("density_dissipation", "DensityDissipation", 0.0)
+      .Between(0.0, 1e6)
+      .Units("1/s")
+      .Panel("Dissipation")
+      .Doc("Decay rate of the smoke density (density *= exp(-rate * dt) each step).")
+      .Bind(&T::SetDensityDissipation, &T::GetDensityDissipation);
+    t.Real("temperature_dissipation", "TemperatureDissipation", 0.0)
+      .Between(0.0, 1e6)
+      .Units("1/s")
+      .Panel("Dissipation")
+      .Doc("Decay rate of the temperature towards ambient.")
+      .Bind(&T::SetTemperatureDissipation, &T::GetTemperatureDissipation);
+    t.Real("velocity_dissipation", "VelocityDissipation", 0.0)
+      .Between(0.0, 1e6)
+      .Units("1/s")
+      .Panel("Dissipation")
+      .Doc("Decay rate of the velocity.")
+      .Bind(&T::SetVelocityDissipation, &T::GetVelocityDissipation);
+    t.Text("open_faces", "OpenFaces", "")
+      .Panel("Boundaries")
+      .Doc("Open domain sides (free outflow), e.g. \"zmax\" or \"xmin,xmax,zmax\" (names xmin xmax ymin ymax "
+           "zmin zmax, or all); the others are closed walls.")
+      .Bind(&T::SetOpenFaces, &T::GetOpenFaces);
+    t.Text("obstacle_array", "ObstacleArrayName", "obstacle")
+      .Panel("Boundaries")
+      .Advanced()
+      .Doc("Point array of the optional input image marking solid cells (> 0.5).")
+      .Bind(&T::SetObstacleArrayName, &T::GetObstacleArrayName);
+    t.Text("velocity_array", "VelocityArrayName", "")
+      .Panel("Boundaries")
+      .Doc("Point array (3 components) of the optional velocity image on input port 1, in which smoke is "
+           "released passively (the velocity does not evolve); \"\" = its active vectors.")
+      .Bind(&T::SetVelocityArrayName, &T::GetVelocityArrayName);
+    t.Boolean("project_velocity", "ProjectExternalVelocity", true)
+      .Panel("Boundaries")
+      .Advanced()
+      .Doc("Project the given velocity once (remove the divergence its resampling leaves, make walls and "
+           "obstacles tight).")
+      .Bind(&T::SetProjectExternalVelocity, &T::GetProjectExternalVelocity);
+    t.Choice("pressure_solver", "PressureMethod", "pcg")
+      .Choice("jacobi", vtkPlumePressureSolver::JACOBI,
+        "the seed's Jacobi iterations (damped by jacobi_weight); iterations grow with the grid")
+      .Choice("pcg", vtkPlumePressureSolver::PCG,
+        "hypre's PFMG-multigrid-preconditioned conjugate gradients; iterations nearly flat in the grid size")
+      .Panel("Pressure")
+      .Doc("Method solving the pressure Poisson equation of the projection.")
+      .Bind(&T::SetPressureMethod, &T::GetPressureMethod);
+    t.Real("pressure_tolerance", "PressureTolerance", 1e-6)
+      .Between(0.0, 1.0)
+      .Panel("Pressure")
+      .Doc("Relative residual ‖b − Aq‖ / ‖b‖ at which the pressure solve stops; 0 runs pressure_max_iterations.")
+      .Bind(&T::SetPressureTolerance, &T::GetPressureTolerance);
+    t.Integer("pressure_max_iterations", "PressureMaximumIterations", 1000)
+      .Between(1, 10000000)
+      .Panel("Pressure")
+      .Doc("Most iterations of one pressure solve (the seed runs 40 Jacobi iterations).")
+      .Bind(&T::SetPressureMaximumIterations, &T::GetPressureMaximumIterations);
+    t.Real("jacobi_weight", "JacobiWeight", 0.8)
+      .Between(0.05, 1.0)
+      .Panel("Pressure")
+      .Advanced()
+      .Doc("Damping of the Jacobi iterations; 1 is the seed's, which never converges in a closed box.")
+      .Bind(&T::SetJacobiWeight, &T::GetJacobiWeight);
+    return t;
+  }();
+  return table;
+}
+
+//------------------------------------------------------------------------------
+vtkPlumeSmokeSolver::vtkPlumeSmokeSolver()
+  : Pressure(vtkSmartPointer<vtkPlumePressureSolver>::New())
+  , LastRequestedTime(std::numeric_limits<double>::quiet_NaN())
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(1);
+  GetParameterTable().ApplyDefaults(this);
+}
+
+vtkPlumeSmokeSolver::~vtkPlumeSmokeSolver() = default;
+
+int vtkPlumeSmokeSolver::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+namespace
+{
+// Swallows the executive's "returned failure for request" dump: RequestData
+// has already reported the one error naming the problem.
+void ExecutiveError(vtkObject*, unsigned long, void*, void* callData)
+{
+  const char* message = static_cast<const char*>(callData);
+  if (message && std::string(message).find("returned failure for request") != std::string::npos)
+  {
+    return;
+  }
+  vtkOutputWindowDisplayErrorText(message ? message : "");
+}
+}
+
+vtkExecutive* vtkPlumeSmokeSolver::CreateDefaultExecutive()
+{
+  vtkExecutive* executive = vtkCompositeDataPipeline::New();
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetCallback(&ExecutiveError);
+  executive->AddObserver(vtkCommand::ErrorEvent, observer);
+  return executive;
+}
+
+//------------------------------------------------------------------------------
+vtkPlumePressureSolver* vtkPlumeSmokeSolver::GetPressureSolver()
+{
+  return this->Pressure;
+}
+
+void vtkPlumeSmokeSolver::SetPressureMethod(int method)
+{
+  if (method != this->Pressure->GetMethod())
+  {
+    this->Pressure->SetMethod(method);
+    this->Modified();
+  }
+}
+int vtkPlumeSmokeSolver::GetPressureMethod()
+{
+  return this->Pressure->GetMethod();
+}
+void vtkPlumeSmokeSolver::SetPressureTolerance(double tolerance)
+{
+  if (tolerance != this->Pressure->GetTolerance())
+  {
+    this->Pressure->SetTolerance(tolerance);
+    this->Modified();
+  }
+}
+double vtkPlumeSmokeSolver::GetPressureTolerance()
+{
+  return this->Pressure->GetTolerance();
+}
+void vtkPlumeSmokeSolver::SetPressureMaximumIterations(int iterations)
+{
+  if (iterations != this->Pressure->GetMaximumIterations())
+  {
+    this->Pressure->SetMaximumIterations(iterations);
+    this->Modified();
+  }
+}
+int vtkPlumeSmokeSolver::GetPressureMaximumIterations()
+{
+  return this->Pressure->GetMaximumIterations();
+}
+void vtkPlumeSmokeSolver::SetJacobiWeight(double weight)
+{
+  if (weight != this->Pressure->GetJacobiWeight())
+  {
+    this->Pressure->SetJacobiWeight(weight);
+    this->Modified();
+  }
+}
+double vtkPlumeSmokeSolver::GetJacobiWeight()
+{
+  return this->Pressure->GetJacobiWeight();
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeSmokeSolver::AddSource(
+  const double center[3], double radius, double density, double temperature, const double velocity[3])
+{
+  Source s;
+  std::copy(center, center + 3, s.Center);
+  s.Radius = radius;
+  s.Density = density;
+  s.Temperature = temperature;
+  std::copy(velocity, velocity + 3, s.Velocity);
+  this->Sources.push_back(s);
+  this->Modified();
+}
+
+void vtkPlumeSmokeSolver::RemoveAllSources()
+{
+  if (!this->Sources.empty())
+  {
+    this->Sources.clear();
+    this->Modified();
+  }
+}
+
+void vtkPlumeSmokeSolver::AddObstacleSphere(const double center[3], double radius)
+{
+  Obstacle o{ true, { center[0], center[1], center[2], radius, 0, 0 } };
+  this->Obstacles.push_back(o);
+  ++this->ObstacleVersion;
+  this->Modified();
+}
+
+void vtkPlumeSmokeSolver::AddObstacleBox(const double bounds[6])
+{
+  Obstacle o{ false, { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] } };
+  this->Obstacles.push_back(o);
+  ++this->ObstacleVersion;
+  this->Modified();
+}
+
+void vtkPlumeSmokeSolver::RemoveAllObstacles()
+{
+  if (!this->Obstacles.empty())
+  {
+    this->Obstacles.clear();
+    ++this->ObstacleVersion;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeSmokeSolver::Validate() const
+{
+  const char* axes = "xyz";
+  for (int a = 0; a < 3; ++a)
+  {
+    const int minimum = a < 2 ? 2 : 1;
+    if (this->Dimensions[a] < minimum)
+    {
+      return std::string("smoke solver: dimensions along ") + axes[a] + " must be at least " +
+        std::to_string(minimum) + ", got " + std::to_string(this->Dimensions[a]);
+    }
+    if (!(this->Spacing[a] > 0) || !std::isfinite(this->Spacing[a]))
+    {
+      return std::string("smoke solver: spacing along ") + axes[a] + " must be positive and finite, got " +
+        Text(this->Spacing[a]);
+    }
+    if (!std::isfinite(this->Origin[a]))
+    {
+      return std::string("smoke solver: origin along ") + axes[a] + " must be finite, got " + Text(this->Origin[a]);
+    }
+  }
+  // Memory: about 200 bytes a cell (velocity and its advected copy, scalars
+  // and theirs, pressure, right-hand side, hypre's matrix and multigrid
+  // hierarchy; measured 697 MB peak at 128^3). Refused above half the RAM.
+  const double cells = double(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGE_SIZE)
+  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+#else
+  const long pages = 0, pageSize = 0; // unknown: assume 8 GB of RAM
+#endif
+  const double budget = pages > 0 && pageSize > 0 ? 0.5 * double(pages) * double(pageSize) : 4.0 * (1 << 30);
+  if (cells * 200.0 > budget)
+  {
+    return "smoke solver: " + Text(cells) + " cells need about " + Text(std::ceil(cells * 200.0 / (1 << 20))) +
+      " MB, more than half the memory (" + Text(std::floor(budget / (1 << 20))) + " MB)";
+  }
+  if (!(this->TimeStep > 0) || !std::isfinite(this->TimeStep))
+  {
+    return "smoke solver: time_step must be positive and finite, got " + Text(this->TimeStep);
+  }
+  for (double v : { this->Buoyancy, this->SmokeWeight, this->AmbientTemperature, this->Up[0], this->Up[1],
+         this->Up[2] })
+  {
+    if (!std::isfinite(v))
+    {
+      return "smoke solver: buoyancy, smoke_weight, ambient_temperature and up must be finite, got " + Text(v);
+    }
+  }
+  bool open[6];
+  const std::string bad = ParseOpenFaces(this->OpenFaces, open);
+  if (!bad.empty())
+  {
+    return "smoke solver: open_faces: unknown side '" + bad + "' in '" + this->OpenFaces +
+      "' (names: xmin xmax ymin ymax zmin zmax all)";
+  }
+  for (size_t s = 0; s < this->Sources.size(); ++s)
+  {
+    const Source& src = this->Sources[s];
+    const double values[] = { src.Center[0], src.Center[1], src.Center[2], src.Radius, src.Density,
+      src.Temperature, src.Velocity[0], src.Velocity[1], src.Velocity[2] };
+    for (double v : values)
+    {
+      if (!std::isfinite(v))
+      {
+        return "smoke solver: source " + std::to_string(s) + " has a non-finite value (" + Text(v) + ")";
+      }
+    }
+    if (src.Radius < 0)
+    {
+      return "smoke solver: source " + std::to_string(s) + " has a negative radius (" + Text(src.Radius) + ")";
+    }
+  }
+  for (size_t o = 0; o < this->Obstacles.size(); ++o)
+  {
+    for (int v = 0; v < 6; ++v)
+    {
+      if (!std::isfinite(this->Obstacles[o].Values[v]))
+      {
+        return "smoke solver: obstacle " + std::to_string(o) + " has a non-finite value (" +
+          Text(this->Obstacles[o].Values[v]) + ")";
+      }
+    }
+  }
+  return "";
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeSmokeSolver::EnsureState()
+{
+  this->LastError = this->Validate();
+  if (!this->LastError.empty())
+  {
+    return false;
+  }
+  std::vector<double> signature = { double(this->Dimensions[0]), double(this->Dimensions[1]),
+    double(this->Dimensions[2]), this->Origin[0], this->Origin[1], this->Origin[2], this->Spacing[0],
+    this->Spacing[1], this->Spacing[2], double(this->ObstacleVersion) };
+  bool open[6];
+  ParseOpenFaces(this->OpenFaces, open);
+  if (this->Dimensions[2] == 1)
+  {
+    open[4] = open[5] = false;
+  }
+  for (bool o : open)
+  {
+    signature.push_back(o ? 1 : 0);
+  }
+  vtkDataArray* mask = nullptr;
+  if (this->ObstacleInput)
+  {
+    mask = this->ObstacleInput->GetPointData()->GetArray(this->ObstacleArrayName.c_str());
+    if (!mask)
+    {
+      this->LastError = "smoke solver: the input image has no point array '" + this->ObstacleArrayName +
+        "' (obstacle_array)";
+      return false;
+    }
+    signature.push_back(double(this->ObstacleInput->GetMTime()));
+    signature.push_back(double(mask->GetMTime()));
+    signature.push_back(double(reinterpret_cast<uintptr_t>(mask)));
+  }
+  vtkDataArray* external = nullptr;
+  vtkDataArray* valid = nullptr;
+  if (this->VelocityInput)
+  {
+    external = this->VelocityArrayName.empty() ? this->VelocityInput->GetPointData()->GetVectors()
+                                               : this->VelocityInput->GetPointData()->GetArray(this->VelocityArrayName.c_str());
+    if (!external || external->GetNumberOfComponents() != 3)
+    {
+      this->LastError = "smoke solver: the velocity image has no 3-component point array '" +
+        (this->VelocityArrayName.empty() ? std::string("(active vectors)") : this->VelocityArrayName) +
+        "' (velocity_array)";
+      return false;
+    }
+    valid = this->VelocityInput->GetPointData()->GetArray("vtkValidPointMask");
+    signature.push_back(double(this->VelocityInput->GetMTime()));
+    signature.push_back(double(external->GetMTime()));
+    signature.push_back(double(reinterpret_cast<uintptr_t>(external)));
+  }
+  if (signature == this->Signature)
+  {
+    return true;
+  }
+
+  // (Re)allocate: a new simulation.
+  std::copy(this->Dimensions, this->Dimensions + 3, this->Cells);
+  std::copy(this->Spacing, this->Spacing + 3, this->H);
+  std::copy(this->Origin, this->Origin + 3, this->O);
+  std::copy(open, open + 6, this->Open);
+  const int* n = this->Cells;
+  const size_t count = size_t(n[0]) * n[1] * n[2];
+  this->Solid.assign(count, 0);
+  ForRows(n, [&](int j, int k) {
+    for (int i = 0; i < n[0]; ++i)
+    {
+      const glm::dvec3 p(this->O[0] + i * this->H[0], this->O[1] + j * this->H[1], this->O[2] + k * this->H[2]);
+      bool solid = false;
+      for (const Obstacle& o : this->Obstacles)
+      {
+        if (o.IsSphere)
+        {
+          const glm::dvec3 c(o.Values[0], o.Values[1], o.Values[2]);
+          solid = solid || glm::length(p - c) <= o.Values[3];
+        }
+        else
+        {
+          solid = solid || (p.x >= o.Values[0] && p.x <= o.Values[1] && p.y >= o.Values[2] && p.y <= o.Values[3] &&
+                             p.z >= o.Values[4] && p.z <= o.Values[5]);
+        }
+      }
+      if (!solid && valid)
+      {
+        // points a resampled CFD field marks as outside its mesh are solid
+        const vtkIdType id = NearestPoint(this->VelocityInput, p);
+        solid = id >= 0 && valid->GetComponent(id, 0) == 0;
+      }
+      if (!solid && mask)
+      {
+        // nearest input point, if inside the input image
+        const double* io = this->ObstacleInput->GetOrigin();
+        const double* is = this->ObstacleInput->GetSpacing();
+        const int* ext = this->ObstacleInput->GetExtent();
+        int idx[3];
+        bool inside = true;
+        for (int a = 0; a < 3; ++a)
+        {
+          const double g = is[a] != 0 ? (p[a] - io[a]) / is[a] : 0.0;
+          idx[a] = int(std::lround(g));
+          inside = inside && idx[a] >= ext[2 * a] && idx[a] <= ext[2 * a + 1];
+        }
+        if (inside)
+        {
+          const vtkIdType id = this->ObstacleInput->ComputePointId(idx);
+          solid = mask->GetComponent(id, 0) > 0.5;
+        }
+      }
+      this->Solid[i + size_t(n[0]) * (j + size_t(n[1]) * k)] = solid ? 1 : 0;
+    }
+  });
+  if (std::all_of(this->Solid.begin(), this->Solid.end(), [](unsigned char s) { return s != 0; }))
+  {
+    this->LastError = "smoke solver: the obstacles cover every one of the " + std::to_string(count) +
+      " cells: there is no fluid to simulate";
+    this->Signature.clear();
+    return false;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    int m[3] = { n[0], n[1], n[2] };
+    ++m[d];
+    this->U[d].assign(size_t(m[0]) * m[1] * m[2], 0.0);
+  }
+  this->Density.assign(count, 0.0);
+  this->Temperature.assign(count, 0.0);
+  this->Q.assign(count, 0.0);
+  this->Pressure->SetProblem(this->Cells, this->H, this->Solid.data(), this->Open);
+  for (auto& u : this->ExternalU)
+  {
+    u.clear();
+  }
+  if (external && !this->SampleExternalVelocity(external))
+  {
+    this->Signature.clear();
+    return false;
+  }
+  this->Signature = signature;
+  this->Reset();
+  return true;
+}
+
+bool vtkPlumeSmokeSolver::SampleExternalVelocity(vtkDataArray* velocity)
+{
+  // Each face takes its component of the velocity image, trilinear between
+  // the image's points (zero outside the image); walls stay zero. The field
+  // is then projected once: resampling leaves some divergence, which would
+  // make passive smoke gather or thin out.
+  const int* n = this->Cells;
+  vtkImageData* image = this->VelocityInput;
+  const double* io = image->GetOrigin();
+  const double* is = image->GetSpacing();
+  const int* ext = image->GetExtent();
+  for (int d = 0; d < 3; ++d)
+  {
+    int m[3] = { n[0], n[1], n[2] };
+    ++m[d];
+    this->U[d].assign(size_t(m[0]) * m[1] * m[2], 0.0);
+    std::vector<double>& u = this->U[d];
+    ForRows(m, [&](int j, int k) {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (this->IsWallFace(d, i, j, k))
+        {
+          continue;
+        }
+        glm::dvec3 x(this->O[0] + i * this->H[0], this->O[1] + j * this->H[1], this->O[2] + k * this->H[2]);
+        x[d] -= 0.5 * this->H[d];
+        int i0[3], i1[3];
+        double t[3];
+        bool inside = true;
+        for (int a = 0; a < 3; ++a)
+        {
+          const double g = is[a] != 0 ? (x[a] - io[a]) / is[a] : double(ext[2 * a]);
+          const double lo = ext[2 * a], hi = ext[2 * a + 1];
+          inside = inside && g >= lo - 1e-9 && g <= hi + 1e-9;
+          const double gc = std::min(std::max(g, lo), hi);
+          i0[a] = std::min(int(std::floor(gc)), std::max(int(hi) - 1, int(lo)));
+          i1[a] = std::min(i0[a] + 1, int(hi));
+          t[a] = i1[a] > i0[a] ? gc - i0[a] : 0.0;
+        }
+        if (!inside)
+        {
+          continue;
+        }
+        double value = 0;
+        for (int c = 0; c < 8; ++c)
+        {
+          int idx[3];
+          double w = 1;
+          for (int a = 0; a < 3; ++a)
+          {
+            const bool upper = (c >> a) & 1;
+            idx[a] = upper ? i1[a] : i0[a];
+            w *= upper ? t[a] : 1 - t[a];
+          }
+          if (w != 0)
+          {
+            value += w * velocity->GetComponent(image->ComputePointId(idx), d);
+          }
+        }
+        u[i + size_t(m[0]) * (j + size_t(m[1]) * k)] = std::isfinite(value) ? value : 0.0;
+      }
+    });
+  }
+  if (this->ProjectExternalVelocity && !this->Project())
+  {
+    return false;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    this->ExternalU[d] = this->U[d];
+  }
+  std::fill(this->Q.begin(), this->Q.end(), 0.0);
+  return true;
+}
+
+void vtkPlumeSmokeSolver::Reset()
+{
+  for (int d = 0; d < 3; ++d)
+  {
+    if (this->ExternalU[d].size() == this->U[d].size())
+    {
+      this->U[d] = this->ExternalU[d]; // passive smoke: the given field
+    }
+    else
+    {
+      std::fill(this->U[d].begin(), this->U[d].end(), 0.0);
+    }
+  }
+  std::fill(this->Density.begin(), this->Density.end(), 0.0);
+  std::fill(this->Temperature.begin(), this->Temperature.end(), this->AmbientTemperature);
+  std::fill(this->Q.begin(), this->Q.end(), 0.0);
+  this->LastProjectionDt = 0;
+  this->SimulationTime = 0;
+  this->CurrentStep = 0;
+  this->LastRequestedTime = std::numeric_limits<double>::quiet_NaN();
+  this->Modified();
+}
+
+bool vtkPlumeSmokeSolver::Initialize()
+{
+  return this->EnsureState();
+}
+
+double* vtkPlumeSmokeSolver::GetFaceVelocityData(int axis)
+{
+  return axis >= 0 && axis < 3 && !this->U[axis].empty() ? this->U[axis].data() : nullptr;
+}
+double* vtkPlumeSmokeSolver::GetDensityData()
+{
+  return this->Density.empty() ? nullptr : this->Density.data();
+}
+double* vtkPlumeSmokeSolver::GetTemperatureData()
+{
+  return this->Temperature.empty() ? nullptr : this->Temperature.data();
+}
+double* vtkPlumeSmokeSolver::GetPressureData()
+{
+  return this->Q.empty() ? nullptr : this->Q.data();
+}
+const unsigned char* vtkPlumeSmokeSolver::GetSolidData()
+{
+  return this->Solid.empty() ? nullptr : this->Solid.data();
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeSmokeSolver::IsWallFace(int axis, int i, int j, int k) const
+{
+  const int* n = this->Cells;
+  int idx[3] = { i, j, k };
+  if (idx[axis] == 0)
+  {
+    return !this->Open[2 * axis] ||
+      this->Solid[idx[0] + size_t(n[0]) * (idx[1] + size_t(n[1]) * idx[2])];
+  }
+  if (idx[axis] == n[axis])
+  {
+    --idx[axis];
+    return !this->Open[2 * axis + 1] ||
+      this->Solid[idx[0] + size_t(n[0]) * (idx[1] + size_t(n[1]) * idx[2])];
+  }
+  const size_t plus = idx[0] + size_t(n[0]) * (idx[1] + size_t(n[1]) * idx[2]);
+  --idx[axis];
+  const size_t minus = idx[0] + size_t(n[0]) * (idx[1] + size_t(n[1]) * idx[2]);
+  return this->Solid[plus] || this->Solid[minus];
+}
+
+void vtkPlumeSmokeSolver::ComputeDivergence(double* divergence) const
+{
+  const int* n = this->Cells;
+  const int mx = n[0] + 1, my = n[1] + 1;
+  ForRows(n, [&](int j, int k) {
+    for (int i = 0; i < n[0]; ++i)
+    {
+      const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
+      if (this->Solid[c])
+      {
+        divergence[c] = 0;
+        continue;
+      }
+      const size_t fx = i + size_t(mx) * (j + size_t(n[1]) * k);
+      const size_t fy = i + size_t(n[0]) * (j + size_t(my) * k);
+      const size_t fz = c;
+      divergence[c] = (this->U[0][fx + 1] - this->U[0][fx]) / this->H[0] +
+        (this->U[1][fy + n[0]] - this->U[1][fy]) / this->H[1] +
+        (this->U[2][fz + size_t(n[0]) * n[1]] - this->U[2][fz]) / this->H[2];
+    }
+  });
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeSmokeSolver::Project()
+{
+  if (this->Solid.empty() && !this->EnsureState())
+  {
+    return false;
+  }
+  const int* n = this->Cells;
+  const size_t count = this->Solid.size();
+  std::vector<double> b(count);
+  this->ComputeDivergence(b.data());
+  for (double& v : b)
+  {
+    v = -v;
+  }
+  if (!this->Pressure->Solve(b.data(), this->Q.data()))
+  {
+    this->LastError = std::string("smoke solver: ") + this->Pressure->GetLastError();
+    return false;
+  }
+  // Subtract the gradient on every face that is not a wall (ghost q = 0
+  // beyond an open side).
+  for (int d = 0; d < 3; ++d)
+  {
+    int m[3] = { n[0], n[1], n[2] };
+    ++m[d];
+    const size_t stride[3] = { 1, size_t(n[0]), size_t(n[0]) * n[1] };
+    std::vector<double>& u = this->U[d];
+    ForRows(m, [&](int j, int k) {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (this->IsWallFace(d, i, j, k))
+        {
+          continue;
+        }
+        int idx[3] = { i, j, k };
+        const size_t f = i + size_t(m[0]) * (j + size_t(m[1]) * k);
+        double qPlus = 0, qMinus = 0;
+        if (idx[d] < n[d])
+        {
+          qPlus = this->Q[idx[0] * stride[0] + idx[1] * stride[1] + idx[2] * stride[2]];
+        }
+        if (idx[d] > 0)
+        {
+          --idx[d];
+          qMinus = this->Q[idx[0] * stride[0] + idx[1] * stride[1] + idx[2] * stride[2]];
+        }
+        u[f] -= (qPlus - qMinus) / this->H[d];
+      }
+    });
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeSmokeSolver::Advect(const std::vector<double>& source, int axis, double dt, double rate, double target,
+  std::vector<double>& result) const
+{
+  // The grid of `source`: cells (axis < 0) or the faces normal to `axis`;
+  // point (i, j, k) lies at Origin + ((i, j, k) − shift)·Spacing.
+  const int* n = this->Cells;
+  int m[3] = { n[0], n[1], n[2] };
+  glm::dvec3 shift(0.0);
+  if (axis >= 0)
+  {
+    ++m[axis];
+    shift[axis] = 0.5;
+  }
+  int faces[3][3];
+  for (int d = 0; d < 3; ++d)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      faces[d][a] = n[a] + (a == d ? 1 : 0);
+    }
+  }
+  const glm::dvec3 origin(this->O[0], this->O[1], this->O[2]);
+  const glm::dvec3 h(this->H[0], this->H[1], this->H[2]);
+  // Velocity at a world position, each component from its face grid.
+  auto velocity = [&](const glm::dvec3& p) {
+    glm::dvec3 v;
+    for (int d = 0; d < 3; ++d)
+    {
+      glm::dvec3 g = (p - origin) / h;
+      g[d] += 0.5;
+      v[d] = Trilinear(this->U[d], faces[d], g);
+    }
+    return v;
+  };
+  // Where a point came from over `step` seconds (midpoint rule); a negative
+  // step traces forward.
+  auto trace = [&](const glm::dvec3& x, double step) {
+    const glm::dvec3 mid = x - 0.5 * step * velocity(x);
+    return x - step * velocity(mid);
+  };
+  auto isFixed = [&](int i, int j, int k) {
+    return axis >= 0 ? this->IsWallFace(axis, i, j, k)
+                     : this->Solid[i + size_t(n[0]) * (j + size_t(n[1]) * k)] != 0;
+  };
+  const double fixedValue = axis >= 0 ? 0.0 : target; // static walls; solid cells
+  const bool maccormack = this->AdvectionScheme == MACCORMACK;
+  std::vector<double> forward;
+  std::vector<double>& first = maccormack ? forward : result;
+  first.assign(source.size(), fixedValue);
+  ForRows(m, [&](int j, int k) {
+    for (int i = 0; i < m[0]; ++i)
+    {
+      if (isFixed(i, j, k))
+      {
+        continue;
+      }
+      const glm::dvec3 x = origin + (glm::dvec3(i, j, k) - shift) * h;
+      first[i + size_t(m[0]) * (j + size_t(m[1]) * k)] = Trilinear(source, m, (trace(x, dt) - origin) / h + shift);
+    }
+  });
+  if (maccormack)
+  {
+    // MacCormack (Selle et al. 2008): advect the result back, correct by half
+    // the round trip's error, and clamp to the values the first
+    // interpolation used (without the clamp the scheme is not stable).
+    result.assign(source.size(), fixedValue);
+    ForRows(m, [&](int j, int k) {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (isFixed(i, j, k))
+        {
+          continue;
+        }
+        const size_t c = i + size_t(m[0]) * (j + size_t(m[1]) * k);
+        const glm::dvec3 x = origin + (glm::dvec3(i, j, k) - shift) * h;
+        const double back = Trilinear(forward, m, (trace(x, -dt) - origin) / h + shift);
+        double lo, hi;
+        MinMax(source, m, (trace(x, dt) - origin) / h + shift, lo, hi);
+        result[c] = std::min(std::max(forward[c] + 0.5 * (source[c] - back), lo), hi);
+      }
+    });
+  }
+  if (rate > 0)
+  {
+    const double decay = std::exp(-rate * dt);
+    for (double& v : result)
+    {
+      v = target + decay * (v - target);
+    }
+  }
+}
+
+void vtkPlumeSmokeSolver::ApplyBuoyancy(double dt)
+{
+  glm::dvec3 up(this->Up[0], this->Up[1], this->Up[2]);
+  if (this->Cells[2] == 1)
+  {
+    up.z = 0;
+    if (glm::length(up) == 0)
+    {
+      up = glm::dvec3(0, 1, 0);
+    }
+  }
+  if (glm::length(up) == 0)
+  {
+    return;
+  }
+  up = glm::normalize(up);
+  const int* n = this->Cells;
+  for (int d = 0; d < 3; ++d)
+  {
+    if (up[d] == 0)
+    {
+      continue;
+    }
+    int m[3] = { n[0], n[1], n[2] };
+    ++m[d];
+    const size_t stride[3] = { 1, size_t(n[0]), size_t(n[0]) * n[1] };
+    std::vector<double>& u = this->U[d];
+    ForRows(m, [&](int j, int k) {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (this->IsWallFace(d, i, j, k))
+        {
+          continue;
+        }
+        // average of the cells on both sides (one at an open side)
+        int idx[3] = { i, j, k };
+        double t = 0, s = 0;
+        int cells = 0;
+        if (idx[d] < n[d])
+        {
+          const size_t c = idx[0] * stride[0] + idx[1] * stride[1] + idx[2] * stride[2];
+          t += this->Temperature[c];
+          s += this->Density[c];
+          ++cells;
+        }
+        if (idx[d] > 0)
+        {
+          --idx[d];
+          const size_t c = idx[0] * stride[0] + idx[1] * stride[1] + idx[2] * stride[2];
+          t += this->Temperature[c];
+          s += this->Density[c];
+          ++cells;
+        }
+        t /= cells;
+        s /= cells;
+        const double force = this->Buoyancy * (t - this->AmbientTemperature) - this->SmokeWeight * s;
+        u[i + size_t(m[0]) * (j + size_t(m[1]) * k)] += dt * force * up[d];
+      }
+    });
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeSmokeSolver::ApplyVorticityConfinement(double dt)
+{
+  if (this->VorticityConfinement <= 0)
+  {
+    return;
+  }
+  const int* n = this->Cells;
+  const size_t count = this->Solid.size();
+  const size_t stride[3] = { 1, size_t(n[0]), size_t(n[0]) * n[1] };
+  // cell-centred velocity
+  std::vector<glm::dvec3> uc(count);
+  ForRows(n, [&](int j, int k) {
+    for (int i = 0; i < n[0]; ++i)
+    {
+      const size_t c = i + stride[1] * j + stride[2] * k;
+      const size_t fx = i + size_t(n[0] + 1) * (j + size_t(n[1]) * k);
+      const size_t fy = i + size_t(n[0]) * (j + size_t(n[1] + 1) * k);
+      uc[c] = glm::dvec3(0.5 * (this->U[0][fx] + this->U[0][fx + 1]),
+        0.5 * (this->U[1][fy] + this->U[1][fy + n[0]]), 0.5 * (this->U[2][c] + this->U[2][c + stride[2]]));
+    }
+  });
+  // central differences (one-sided at the domain sides); d/da of a cell array
+  auto derivative = [&](auto&& value, int i, int j, int k, int a) {
+    int lo[3] = { i, j, k }, hi[3] = { i, j, k };
+    if (n[a] == 1)
+    {
+      return decltype(value(0)) {};
+    }
+    lo[a] = std::max(lo[a] - 1, 0);
+    hi[a] = std::min(hi[a] + 1, n[a] - 1);
+    const size_t cl = lo[0] * stride[0] + lo[1] * stride[1] + lo[2] * stride[2];
+    const size_t ch = hi[0] * stride[0] + hi[1] * stride[1] + hi[2] * stride[2];
+    return (value(ch) - value(cl)) / ((hi[a] - lo[a]) * this->H[a]);
+  };
+  std::vector<glm::dvec3> omega(count);
+  std::vector<double> magnitude(count);
+  ForRows(n, [&](int j, int k) {
+    for (int i = 0; i < n[0]; ++i)
+    {
+      const size_t c = i + stride[1] * j + stride[2] * k;
+      auto u = [&](size_t cell) { return uc[cell]; };
+      const glm::dvec3 dx = derivative(u, i, j, k, 0), dy = derivative(u, i, j, k, 1), dz = derivative(u, i, j, k, 2);
+      omega[c] = glm::dvec3(dy.z - dz.y, dz.x - dx.z, dx.y - dy.x);
+      magnitude[c] = glm::length(omega[c]);
+    }
+  });
+  const double scale = this->VorticityConfinement * std::min({ this->H[0], this->H[1], n[2] > 1 ? this->H[2] : this->H[0] });
+  std::vector<glm::dvec3> force(count, glm::dvec3(0.0));
+  ForRows(n, [&](int j, int k) {
+    for (int i = 0; i < n[0]; ++i)
+    {
+      const size_t c = i + stride[1] * j + stride[2] * k;
+      if (this->Solid[c])
+      {
+        continue;
+      }
+      auto m = [&](size_t cell) { return magnitude[cell]; };
+      const glm::dvec3 g(derivative(m, i, j, k, 0), derivative(m, i, j, k, 1), derivative(m, i, j, k, 2));
+      const double length = glm::length(g);
+      if (length > 1e-12 * (magnitude[c] + 1e-300) / this->H[0] && length > 0)
+      {
+        force[c] = scale * glm::cross(g / length, omega[c]);
+      }
+    }
+  });
+  for (int d = 0; d < 3; ++d)
+  {
+    int m[3] = { n[0], n[1], n[2] };
+    ++m[d];
+    ForRows(m, [&](int j, int k) {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (this->IsWallFace(d, i, j, k))
+        {
+          continue;
+        }
+        int idx[3] = { i, j, k };
+        double f = 0;
+        int cells = 0;
+        if (idx[d] < n[d])
+        {
+          f += force[idx[0] * stride[0] + idx[1] * stride[1] + idx[2] * stride[2]][d];
+          ++cells;
+        }
+        if (idx[d] > 0)
+        {
+          --idx[d];
+          f += force[idx[0] * stride[0] + idx[1] * stride[1] + idx[2] * stride[2]][d];
+          ++cells;
+        }
+        this->U[d][i + size_t(m[0]) * (j + size_t(m[1]) * k)] += dt * f / cells;
+      }
+    });
+  }
+}
+
+void vtkPlumeSmokeSolver::ApplySources()
+{
+  const int* n = this->Cells;
+  const glm::dvec3 origin(this->O[0], this->O[1], this->O[2]);
+  const glm::dvec3 h(this->H[0], this->H[1], this->H[2]);
+  for (const Source& s : this->Sources)
+  {
+    const glm::dvec3 center(s.Center[0], s.Center[1], s.Center[2]);
+    // the cell containing the centre always emits (sources smaller than a cell)
+    glm::ivec3 home;
+    for (int a = 0; a < 3; ++a)
+    {
+      home[a] = std::min(std::max(int(std::lround((center[a] - origin[a]) / h[a])), 0), n[a] - 1);
+    }
+    ForRows(n, [&](int j, int k) {
+      for (int i = 0; i < n[0]; ++i)
+      {
+        const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
+        const glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
+        if (this->Solid[c] || (glm::length(x - center) > s.Radius && glm::ivec3(i, j, k) != home))
+        {
+          continue;
+        }
+        this->Density[c] = s.Density;
+        this->Temperature[c] = s.Temperature;
+      }
+    });
+    if ((s.Velocity[0] == 0 && s.Velocity[1] == 0 && s.Velocity[2] == 0) || this->HasExternalVelocity())
+    {
+      continue;
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+      int m[3] = { n[0], n[1], n[2] };
+      ++m[d];
+      ForRows(m, [&](int j, int k) {
+        for (int i = 0; i < m[0]; ++i)
+        {
+          glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
+          x[d] -= 0.5 * h[d];
+          if (glm::length(x - center) <= std::max(s.Radius, 0.5 * h[d]) && !this->IsWallFace(d, i, j, k))
+          {
+            this->U[d][i + size_t(m[0]) * (j + size_t(m[1]) * k)] = s.Velocity[d];
+          }
+        }
+      });
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+const char CheckpointMagic[16] = "PLUMESMOKE1";
+}
+
+bool vtkPlumeSmokeSolver::WriteCheckpoint(const char* path)
+{
+  if (!this->EnsureState())
+  {
+    return false;
+  }
+  std::ofstream out(path ? path : "", std::ios::binary);
+  if (!out)
+  {
+    this->LastError = std::string("smoke solver: cannot write the checkpoint '") + (path ? path : "") + "'";
+    return false;
+  }
+  auto write = [&](const void* data, size_t bytes) { out.write(static_cast<const char*>(data), bytes); };
+  write(CheckpointMagic, sizeof(CheckpointMagic));
+  write(this->Cells, sizeof(this->Cells));
+  write(this->O, sizeof(this->O));
+  write(this->H, sizeof(this->H));
+  write(this->Open, sizeof(this->Open));
+  const long long step = this->CurrentStep;
+  write(&step, sizeof(step));
+  write(&this->SimulationTime, sizeof(double));
+  write(&this->LastProjectionDt, sizeof(double));
+  for (const auto& u : this->U)
+  {
+    write(u.data(), u.size() * sizeof(double));
+  }
+  write(this->Density.data(), this->Density.size() * sizeof(double));
+  write(this->Temperature.data(), this->Temperature.size() * sizeof(double));
+  write(this->Q.data(), this->Q.size() * sizeof(double));
+  write(this->Solid.data(), this->Solid.size());
+  if (!out)
+  {
+    this->LastError = std::string("smoke solver: writing the checkpoint '") + path + "' failed";
+    return false;
+  }
+  return true;
+}
+
+bool vtkPlumeSmokeSolver::ReadCheckpoint(const char* path)
+{
+  if (!this->EnsureState())
+  {
+    return false;
+  }
+  const std::string name = path ? path : "";
+  std::ifstream in(name, std::ios::binary);
+  if (!in)
+  {
+    this->LastError = "smoke solver: cannot read the checkpoint '" + name + "'";
+    return false;
+  }
+  auto read = [&](void* data, size_t bytes) { return bool(in.read(static_cast<char*>(data), bytes)); };
+  char magic[16] = {};
+  int cells[3];
+  double origin[3], spacing[3];
+  bool open[6];
+  long long step = 0;
+  double time = 0, projectionDt = 0;
+  if (!read(magic, sizeof(magic)) || std::memcmp(magic, CheckpointMagic, sizeof(magic)) != 0)
+  {
+    this->LastError = "smoke solver: '" + name + "' is not a smoke solver checkpoint";
+    return false;
+  }
+  if (!read(cells, sizeof(cells)) || !read(origin, sizeof(origin)) || !read(spacing, sizeof(spacing)) ||
+    !read(open, sizeof(open)) || !read(&step, sizeof(step)) || !read(&time, sizeof(time)) ||
+    !read(&projectionDt, sizeof(projectionDt)))
+  {
+    this->LastError = "smoke solver: the checkpoint '" + name + "' is truncated";
+    return false;
+  }
+  if (!std::equal(cells, cells + 3, this->Cells) || !std::equal(origin, origin + 3, this->O) ||
+    !std::equal(spacing, spacing + 3, this->H) || !std::equal(open, open + 6, this->Open))
+  {
+    this->LastError = "smoke solver: the checkpoint '" + name + "' is of a " + std::to_string(cells[0]) + "x" +
+      std::to_string(cells[1]) + "x" + std::to_string(cells[2]) +
+      " grid with other origin, spacing or open sides than this solver's " + std::to_string(this->Cells[0]) + "x" +
+      std::to_string(this->Cells[1]) + "x" + std::to_string(this->Cells[2]);
+    return false;
+  }
+  std::vector<double> u[3], density(this->Density.size()), temperature(this->Temperature.size()),
+    q(this->Q.size());
+  std::vector<unsigned char> solid(this->Solid.size());
+  bool ok = true;
+  for (int d = 0; d < 3; ++d)
+  {
+    u[d].resize(this->U[d].size());
+    ok = ok && read(u[d].data(), u[d].size() * sizeof(double));
+  }
+  ok = ok && read(density.data(), density.size() * sizeof(double)) &&
+    read(temperature.data(), temperature.size() * sizeof(double)) && read(q.data(), q.size() * sizeof(double)) &&
+    read(solid.data(), solid.size());
+  if (!ok)
+  {
+    this->LastError = "smoke solver: the checkpoint '" + name + "' is truncated";
+    return false;
+  }
+  if (solid != this->Solid)
+  {
+    this->LastError = "smoke solver: the checkpoint '" + name + "' has other obstacles than this solver";
+    return false;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    this->U[d].swap(u[d]);
+  }
+  this->Density.swap(density);
+  this->Temperature.swap(temperature);
+  this->Q.swap(q);
+  this->CurrentStep = vtkIdType(step);
+  this->SimulationTime = time;
+  this->LastProjectionDt = projectionDt;
+  this->LastRequestedTime = std::numeric_limits<double>::quiet_NaN();
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeSmokeSolver::Step()
+{
+  return this->Advance(this->TimeStep);
+}
+
+bool vtkPlumeSmokeSolver::Advance(double dt)
+{
+  if (!this->EnsureState())
+  {
+    return false;
+  }
+  if (!(dt > 0) || !std::isfinite(dt))
+  {
+    this->LastError = "smoke solver: a step must be positive and finite, got " + Text(dt);
+    return false;
+  }
+  // All advected quantities move with the velocity of the start of the step
+  // (the scalars first: the velocity advection replaces it).
+  std::vector<double> next;
+  this->Advect(this->Density, -1, dt, this->DensityDissipation, 0.0, next);
+  this->Density.swap(next);
+  this->Advect(this->Temperature, -1, dt, this->TemperatureDissipation, this->AmbientTemperature, next);
+  this->Temperature.swap(next);
+  if (this->HasExternalVelocity())
+  {
+    // passive smoke in a given flow: the velocity does not evolve
+    this->ApplySources();
+  }
+  else
+  {
+    std::vector<double> velocity[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      this->Advect(this->U[d], d, dt, this->VelocityDissipation, 0.0, velocity[d]);
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+      this->U[d].swap(velocity[d]);
+    }
+    this->ApplyBuoyancy(dt);
+    this->ApplyVorticityConfinement(dt);
+    this->ApplySources();
+    if (!this->Project())
+    {
+      return false;
+    }
+    this->LastProjectionDt = dt;
+  }
+  this->SimulationTime += dt;
+  ++this->CurrentStep;
+  ++this->StepsTaken;
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkPlumeSmokeSolver::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  int extent[6] = { 0, std::max(this->Dimensions[0], 1) - 1, 0, std::max(this->Dimensions[1], 1) - 1, 0,
+    std::max(this->Dimensions[2], 1) - 1 };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  outInfo->Set(vtkDataObject::ORIGIN(), this->Origin, 3);
+  outInfo->Set(vtkDataObject::SPACING(), this->Spacing, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_FLOAT, 1);
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  if (this->TimeStep > 0 && std::isfinite(this->TimeStep))
+  {
+    std::vector<double> times(size_t(this->NumberOfTimeSteps) + 1);
+    for (size_t k = 0; k < times.size(); ++k)
+    {
+      times[k] = double(k) * this->TimeStep;
+    }
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), int(times.size()));
+    double range[2] = { 0.0, times.back() };
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  }
+  return 1;
+}
+
+int vtkPlumeSmokeSolver::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The obstacle and velocity images are read whole, whatever part of the
+  // output is asked for; a static field (no time request upstream).
+  for (int port = 0; port < 2; ++port)
+  {
+    if (vtkInformation* inInfo = inputVector[port]->GetInformationObject(0))
+    {
+      if (inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+      {
+        inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+          inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      }
+      inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    }
+  }
+  return 1;
+}
+
+int vtkPlumeSmokeSolver::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkImageData* output = vtkImageData::GetData(outInfo);
+  this->ObstacleInput = inputVector[0]->GetNumberOfInformationObjects() > 0
+    ? vtkImageData::GetData(inputVector[0]->GetInformationObject(0))
+    : nullptr;
+  this->VelocityInput = inputVector[1]->GetNumberOfInformationObjects() > 0
+    ? vtkImageData::GetData(inputVector[1]->GetInformationObject(0))
+    : nullptr;
+  if (!this->EnsureState())
+  {
+    vtkErrorMacro(<< this->LastError);
+    return 0;
+  }
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    if (!std::isfinite(t))
+    {
+      vtkErrorMacro(<< "smoke solver: the requested time is not finite (" << t << ")");
+      return 0;
+    }
+    if (!(t == this->LastRequestedTime))
+    {
+      const vtkIdType target = std::max<vtkIdType>(0, vtkIdType(std::llround(t / this->TimeStep)));
+      if (target < this->CurrentStep)
+      {
+        this->Reset();
+      }
+      const vtkIdType first = this->CurrentStep;
+      while (this->CurrentStep < target)
+      {
+        this->UpdateProgress(double(this->CurrentStep - first) / double(target - first));
+        if (this->GetAbortExecute())
+        {
+          break;
+        }
+        if (!this->Step())
+        {
+          vtkErrorMacro(<< this->LastError);
+          return 0;
+        }
+      }
+      this->LastRequestedTime = t;
+    }
+  }
+  this->FillOutput(output);
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), this->SimulationTime);
+  return 1;
+}
+
+void vtkPlumeSmokeSolver::FillOutput(vtkImageData* output)
+{
+  const int* n = this->Cells;
+  output->SetExtent(0, n[0] - 1, 0, n[1] - 1, 0, n[2] - 1);
+  output->SetOrigin(this->O);
+  output->SetSpacing(this->H);
+  const vtkIdType count = vtkIdType(this->Solid.size());
+  auto makeArray = [&](const char* name, int components) {
+    vtkNew<vtkFloatArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(components);
+    a->SetNumberOfTuples(count);
+    return vtkSmartPointer<vtkFloatArray>(a.Get());
+  };
+  auto velocity = makeArray("velocity", 3);
+  auto density = makeArray("density", 1);
+  auto temperature = makeArray("temperature", 1);
+  auto pressure = makeArray("pressure", 1);
+  auto divergence = makeArray("divergence", 1);
+  vtkNew<vtkUnsignedCharArray> obstacle;
+  obstacle->SetName("obstacle");
+  obstacle->SetNumberOfTuples(count);
+  std::vector<double> div(this->Solid.size());
+  this->ComputeDivergence(div.data());
+  const double pressureScale = this->LastProjectionDt > 0 ? 1.0 / this->LastProjectionDt : 0.0;
+  const int mx = n[0] + 1, my = n[1] + 1;
+  float* v = velocity->GetPointer(0);
+  ForRows(n, [&](int j, int k) {
+    for (int i = 0; i < n[0]; ++i)
+    {
+      const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
+      const size_t fx = i + size_t(mx) * (j + size_t(n[1]) * k);
+      const size_t fy = i + size_t(n[0]) * (j + size_t(my) * k);
+      v[3 * c + 0] = float(0.5 * (this->U[0][fx] + this->U[0][fx + 1]));
+      v[3 * c + 1] = float(0.5 * (this->U[1][fy] + this->U[1][fy + n[0]]));
+      v[3 * c + 2] = float(0.5 * (this->U[2][c] + this->U[2][c + size_t(n[0]) * n[1]]));
+      density->SetValue(vtkIdType(c), float(this->Density[c]));
+      temperature->SetValue(vtkIdType(c), float(this->Temperature[c]));
+      pressure->SetValue(vtkIdType(c), float(this->Q[c] * pressureScale));
+      divergence->SetValue(vtkIdType(c), float(div[c]));
+      obstacle->SetValue(vtkIdType(c), this->Solid[c]);
+    }
+  });
+  vtkPointData* pd = output->GetPointData();
+  pd->Initialize();
+  pd->SetScalars(density);
+  pd->SetVectors(velocity);
+  pd->AddArray(temperature);
+  pd->AddArray(pressure);
+  pd->AddArray(divergence);
+  pd->AddArray(obstacle);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeSmokeSolver::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
+     << this->Dimensions[2] << "\n";
+  os << indent << "TimeStep: " << this->TimeStep << "\n";
+  os << indent << "Sources: " << this->Sources.size() << "\n";
+  os << indent << "Obstacles: " << this->Obstacles.size() << "\n";
+  os << indent << "OpenFaces: " << this->OpenFaces << "\n";
+  os << indent << "SimulationTime: " << this->SimulationTime << "\n";
+  os << indent << "CurrentStep: " << this->CurrentStep << "\n";
+}

@@ -1,0 +1,403 @@
+/**
+ * @class   vtkPlumeSmokeSolver
+ * @brief   Eulerian smoke simulation as a time-aware VTK image source
+ *
+ * The simulation of seed 004 ("Simple Fluid Simulation", after Harris, GPU
+ * Gems ch. 38), on the CPU with vtkSMPTools threads. Each step (of TimeStep
+ * seconds):
+ *  1. semi-Lagrangian advection of velocity, density and temperature by the
+ *     old velocity (second-order midpoint back-trace, trilinear sampling),
+ *     with exponential dissipation exp(−rate·dt) (the seed multiplies by a
+ *     per-step factor; a rate keeps results independent of the step);
+ *  2. buoyancy along Up: Buoyancy·(T − AmbientTemperature) − SmokeWeight·density
+ *     (hot smoke rises, dense cool smoke sinks);
+ *     then, if VorticityConfinement > 0, vorticity confinement;
+ *  3. impulses: inside each source's sphere (at least the cell containing its
+ *     centre) density and temperature are set to the source's values, and
+ *     the velocity too if the source's velocity is not zero;
+ *  4. projection: the divergence of the velocity, a pressure Poisson solve
+ *     (vtkPlumePressureSolver: the seed's Jacobi iterations or hypre's
+ *     PFMG-preconditioned CG) and the subtraction of the pressure gradient.
+ *
+ * Grid: a MAC (staggered) grid, not the seed's collocated one. The output
+ * image's points are the centres of the simulation cells (density,
+ * temperature, pressure live there); each velocity component lives on the
+ * faces normal to it, half a spacing between points. The domain walls lie
+ * half a spacing outside the outermost points. Why: on a MAC grid the
+ * divergence of the projected velocity is exactly the residual of the
+ * pressure solve (the collocated scheme's central differences leave a
+ * divergence that no number of iterations removes, and its wide Laplacian
+ * decouples odd and even cells into a checkerboard); a wall is exactly a face
+ * whose normal velocity is zero; and buoyancy that depends on height alone (a
+ * resting stratified atmosphere) is a discrete gradient that the projection
+ * removes completely, so fluid at rest stays at rest. Output velocity is the
+ * average of the two faces around each point.
+ *
+ * Boundaries: the six domain sides are closed walls (zero normal velocity)
+ * unless named in OpenFaces (free outflow: pressure 0 outside). Obstacles are
+ * cells marked solid: spheres and boxes added here, and/or the point array
+ * ObstacleArrayName (> 0.5 = solid) of an optional input image on port 0,
+ * sampled at the nearest input point; their faces have zero velocity and
+ * their cells no smoke. A 2D grid (Dimensions[2] = 1) is simulated in x–y;
+ * its z sides are walls whatever OpenFaces says, and if Up has no x–y part,
+ * buoyancy acts along +y.
+ *
+ * Time: the source advertises TIME_STEPS k·TimeStep for k = 0 ..
+ * NumberOfTimeSteps and TIME_RANGE. A new request for time t brings the
+ * simulation to step round(t / TimeStep): later steps are computed from the
+ * current state; an earlier one restarts from step 0 and recomputes (the
+ * result is deterministic, so the same step always gives the same data; no
+ * history is cached, which would cost a full state per step). A request for
+ * the same time as the last one processed does not move the simulation, so
+ * Step()/Advance() can be mixed with the pipeline. Without a time request,
+ * the output is the current state. Changing the grid, the open faces or the
+ * obstacles restarts the simulation; other parameters apply from the next step.
+ *
+ * Output point arrays: velocity (3 components), density, temperature,
+ * pressure, divergence (of the output velocity: the projection's residual),
+ * obstacle (1 = solid). Scalars: density. Vectors: velocity.
+ * Results do not depend on the number of threads.
+ */
+#ifndef vtkPlumeSmokeSolver_h
+#define vtkPlumeSmokeSolver_h
+
+#include "PlumeSolverModule.h" // For export macro
+#include "vtkImageAlgorithm.h"
+#include "vtkSmartPointer.h"  // For vtkSmartPointer
+#include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
+
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkAlgorithmOutput;
+class vtkDataArray;
+class vtkDataObject;
+class vtkImageData;
+class vtkPlumeParameterTable;
+class vtkPlumePressureSolver;
+
+class PLUMESOLVER_EXPORT vtkPlumeSmokeSolver : public vtkImageAlgorithm
+{
+public:
+  static vtkPlumeSmokeSolver* New();
+  vtkTypeMacro(vtkPlumeSmokeSolver, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The declaration of this class's user parameters (scene type "smoke"). */
+  VTK_WRAPEXCLUDE static const vtkPlumeParameterTable& GetParameterTable();
+
+  ///@{
+  /** Grid points (= simulation cells) along x, y, z (default 48, 48, 64); z = 1 for 2D. */
+  vtkSetVector3Macro(Dimensions, int);
+  vtkGetVector3Macro(Dimensions, int);
+  ///@}
+
+  ///@{
+  /** Position of the first point (default 0, 0, 0). */
+  vtkSetVector3Macro(Origin, double);
+  vtkGetVector3Macro(Origin, double);
+  ///@}
+
+  ///@{
+  /** Distance between points (default 0.02, 0.02, 0.02). */
+  vtkSetVector3Macro(Spacing, double);
+  vtkGetVector3Macro(Spacing, double);
+  ///@}
+
+  ///@{
+  /** Seconds per step (default 0.02). Semi-Lagrangian advection is stable at any CFL number. */
+  vtkSetMacro(TimeStep, double);
+  vtkGetMacro(TimeStep, double);
+  ///@}
+
+  ///@{
+  /** Steps advertised as TIME_STEPS (default 200). Explicit stepping can go past them. */
+  vtkSetClampMacro(NumberOfTimeSteps, int, 1, 10000000);
+  vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
+  enum AdvectionSchemes
+  {
+    SEMI_LAGRANGIAN = 0,
+    MACCORMACK = 1
+  };
+
+  ///@{
+  /**
+   * SEMI_LAGRANGIAN (the seed's, default) or MACCORMACK (Selle et al. 2008:
+   * a forward-and-back round trip corrects the first-order error, clamped to
+   * the sampled values; less numerical diffusion, twice the advection cost).
+   */
+  vtkSetClampMacro(AdvectionScheme, int, SEMI_LAGRANGIAN, MACCORMACK);
+  vtkGetMacro(AdvectionScheme, int);
+  ///@}
+
+  ///@{
+  /** Upward acceleration per unit of temperature above ambient (default 1; Harris' σ). */
+  vtkSetMacro(Buoyancy, double);
+  vtkGetMacro(Buoyancy, double);
+  ///@}
+
+  ///@{
+  /** Downward acceleration per unit of smoke density (default 0.05; Harris' κ). */
+  vtkSetMacro(SmokeWeight, double);
+  vtkGetMacro(SmokeWeight, double);
+  ///@}
+
+  ///@{
+  /** Temperature of the air at rest (default 0): the initial temperature and buoyancy's reference. */
+  vtkSetMacro(AmbientTemperature, double);
+  vtkGetMacro(AmbientTemperature, double);
+  ///@}
+
+  ///@{
+  /** Direction buoyancy acts along (default 0, 0, 1; normalised when used). */
+  vtkSetVector3Macro(Up, double);
+  vtkGetVector3Macro(Up, double);
+  ///@}
+
+  ///@{
+  /**
+   * Vorticity confinement strength ε (default 0 = off, as the seed): adds
+   * ε·h·(N × ω) with ω = ∇×u and N = ∇|ω| / |∇|ω||, putting back the small
+   * swirls that numerical diffusion removes (Fedkiw, Stam, Jensen 2001).
+   */
+  vtkSetClampMacro(VorticityConfinement, double, 0.0, 1e6);
+  vtkGetMacro(VorticityConfinement, double);
+  ///@}
+
+  ///@{
+  /** Decay rates per second of density, of temperature (towards ambient) and of velocity (default 0, 0, 0). */
+  vtkSetClampMacro(DensityDissipation, double, 0.0, 1e6);
+  vtkGetMacro(DensityDissipation, double);
+  vtkSetClampMacro(TemperatureDissipation, double, 0.0, 1e6);
+  vtkGetMacro(TemperatureDissipation, double);
+  vtkSetClampMacro(VelocityDissipation, double, 0.0, 1e6);
+  vtkGetMacro(VelocityDissipation, double);
+  ///@}
+
+  ///@{
+  /**
+   * Domain sides that are open (free outflow), e.g. "zmax" or "xmin,xmax,zmax";
+   * names: xmin xmax ymin ymax zmin zmax, or "all" (default "": a closed box).
+   */
+  vtkSetStdStringFromCharMacro(OpenFaces);
+  vtkGetCharFromStdStringMacro(OpenFaces);
+  ///@}
+
+  ///@{
+  /** Point array of the optional input image marking obstacles (> 0.5 = solid; default "obstacle"). */
+  vtkSetStdStringFromCharMacro(ObstacleArrayName);
+  vtkGetCharFromStdStringMacro(ObstacleArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Virtual smoke in a given flow: with an image on input port 1
+   * (SetVelocityConnection), each face takes its component of that image's
+   * point array VelocityArrayName (default "": its active vectors),
+   * trilinear between its points (zero outside it), once when the input
+   * changes; the field is projected once if ProjectExternalVelocity (default
+   * true), and then never evolves: density and temperature are advected
+   * passively and sources emit, but buoyancy, confinement and the pressure
+   * solve are skipped. Points whose vtkValidPointMask is 0 (a CFD mesh
+   * resampled onto an image) are solid. The field is static: the input is
+   * asked for no time.
+   */
+  void SetVelocityConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetVelocityData(vtkDataObject* image) { this->SetInputData(1, image); }
+  vtkSetStdStringFromCharMacro(VelocityArrayName);
+  vtkGetCharFromStdStringMacro(VelocityArrayName);
+  vtkSetMacro(ProjectExternalVelocity, bool);
+  vtkGetMacro(ProjectExternalVelocity, bool);
+  /** Whether the velocity comes from input port 1 (after Initialize() or an update). */
+  bool HasExternalVelocity() const { return !this->ExternalU[0].empty(); }
+  ///@}
+
+  ///@{
+  /** Pressure solve (forwarded to GetPressureSolver()): method JACOBI (0) or PCG (1) (default PCG). */
+  void SetPressureMethod(int method);
+  int GetPressureMethod();
+  /** Relative residual the pressure solve stops at (default 1e-6). */
+  void SetPressureTolerance(double tolerance);
+  double GetPressureTolerance();
+  /** Most iterations per pressure solve (default 1000). */
+  void SetPressureMaximumIterations(int iterations);
+  int GetPressureMaximumIterations();
+  /** Damping of the Jacobi iterations (default 0.8). */
+  void SetJacobiWeight(double weight);
+  double GetJacobiWeight();
+  ///@}
+
+  /** The pressure solver (its last iteration count and residual). */
+  vtkPlumePressureSolver* GetPressureSolver();
+
+  ///@{
+  /**
+   * Sources, applied every step: a sphere (centre, radius) where density and
+   * temperature are set to the given values, and the velocity too unless it is zero.
+   */
+  void AddSource(const double center[3], double radius, double density, double temperature,
+    const double velocity[3]);
+  void RemoveAllSources();
+  int GetNumberOfSources() const { return static_cast<int>(this->Sources.size()); }
+  ///@}
+
+  ///@{
+  /** Solid obstacles (restart the simulation). A box is [xmin, xmax, ymin, ymax, zmin, zmax]. */
+  void AddObstacleSphere(const double center[3], double radius);
+  void AddObstacleBox(const double bounds[6]);
+  void RemoveAllObstacles();
+  ///@}
+
+  ///@{
+  /**
+   * Explicit stepping: Step() advances by TimeStep, Advance(dt) by one step of
+   * dt. The simulation starts (or restarts after a grid change) at the first
+   * call; an obstacle input image is the one of the last pipeline update.
+   * Return false, with GetLastError() set, on a bad set-up or a failed solve.
+   */
+  bool Step();
+  bool Advance(double dt);
+  /** Back to step 0: fluid at rest, no smoke, ambient temperature. */
+  void Reset();
+  ///@}
+
+  ///@{
+  /**
+   * Checkpoint: the full state (velocity faces, density, temperature,
+   * pressure, solid cells, step and time) in a binary file. Reading it back
+   * into a solver with the same grid, open sides and obstacles continues
+   * bit for bit as the original would have; anything else is refused with
+   * GetLastError() naming the difference. Return false on failure.
+   */
+  bool WriteCheckpoint(const char* path);
+  bool ReadCheckpoint(const char* path);
+  ///@}
+
+  ///@{
+  /** Current simulation time, current step, and steps computed since construction (restarts recompute). */
+  vtkGetMacro(SimulationTime, double);
+  vtkGetMacro(CurrentStep, vtkIdType);
+  vtkGetMacro(StepsTaken, vtkIdType);
+  ///@}
+
+  /** The last error ("" if none): one line naming the problem and the value. */
+  const char* GetLastError() const { return this->LastError.c_str(); }
+
+  ///@{
+  /**
+   * Direct access to the state (after Initialize() or a step), for tests and
+   * hand-made initial conditions. Cells are x fastest; the face grid of axis
+   * d has Dimensions[d] + 1 entries along d (face i lies at Origin + (i − ½)·Spacing).
+   * Solid flags per cell; Pressure holds p·dt of the last projection.
+   */
+  bool Initialize();
+  VTK_WRAPEXCLUDE double* GetFaceVelocityData(int axis);
+  VTK_WRAPEXCLUDE double* GetDensityData();
+  VTK_WRAPEXCLUDE double* GetTemperatureData();
+  VTK_WRAPEXCLUDE double* GetPressureData();
+  VTK_WRAPEXCLUDE const unsigned char* GetSolidData();
+  /** Whether the face (axis, i, j, k) is a wall (domain side or touching a solid cell). */
+  bool IsWallFace(int axis, int i, int j, int k) const;
+  /** Projects the current face velocities (divergence, pressure solve, gradient subtraction). */
+  bool Project();
+  /** Divergence of the face velocities per cell (0 in solid cells). */
+  VTK_WRAPEXCLUDE void ComputeDivergence(double* divergence) const;
+  ///@}
+
+protected:
+  vtkPlumeSmokeSolver();
+  ~vtkPlumeSmokeSolver() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  /** An executive whose "returned failure for request" dump is silenced (the error itself is reported once). */
+  vtkExecutive* CreateDefaultExecutive() override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /** "" if the set-up is valid, else one line naming the problem and the value. */
+  std::string Validate() const;
+  /** Validates and (re)allocates the state if the grid, open faces or obstacles changed. */
+  bool EnsureState();
+  void FillOutput(vtkImageData* output);
+
+  /**
+   * Advects `source` (cells if axis < 0, else the faces normal to axis) by
+   * the current velocity over dt into `result`, then decays it towards
+   * `target` at `rate`; walls / solid cells get 0 / target.
+   */
+  void Advect(const std::vector<double>& source, int axis, double dt, double rate, double target,
+    std::vector<double>& result) const;
+  void ApplyBuoyancy(double dt);
+  void ApplySources();
+  void ApplyVorticityConfinement(double dt);
+
+  int Dimensions[3] = { 48, 48, 64 };
+  double Origin[3] = { 0, 0, 0 };
+  double Spacing[3] = { 0.02, 0.02, 0.02 };
+  double TimeStep = 0.02;
+  int NumberOfTimeSteps = 200;
+  int AdvectionScheme = SEMI_LAGRANGIAN;
+  double Buoyancy = 1.0;
+  double SmokeWeight = 0.05;
+  double AmbientTemperature = 0.0;
+  double Up[3] = { 0, 0, 1 };
+  double VorticityConfinement = 0;
+  double DensityDissipation = 0;
+  double TemperatureDissipation = 0;
+  double VelocityDissipation = 0;
+  std::string OpenFaces;
+  std::string ObstacleArrayName = "obstacle";
+
+  struct Source
+  {
+    double Center[3];
+    double Radius;
+    double Density;
+    double Temperature;
+    double Velocity[3];
+  };
+  std::vector<Source> Sources;
+  struct Obstacle
+  {
+    bool IsSphere;
+    double Values[6]; // sphere: centre, radius; box: bounds
+  };
+  std::vector<Obstacle> Obstacles;
+  unsigned long ObstacleVersion = 0;
+  vtkSmartPointer<vtkImageData> ObstacleInput;
+  vtkSmartPointer<vtkImageData> VelocityInput;
+  std::string VelocityArrayName;
+  bool ProjectExternalVelocity = true;
+  std::vector<double> ExternalU[3];
+  bool SampleExternalVelocity(vtkDataArray* velocity);
+
+  vtkSmartPointer<vtkPlumePressureSolver> Pressure;
+
+  // State
+  std::vector<double> Signature; // what the state was allocated for
+  int Cells[3] = { 0, 0, 0 };
+  double H[3] = { 1, 1, 1 };
+  double O[3] = { 0, 0, 0 };
+  bool Open[6] = { false, false, false, false, false, false };
+  std::vector<double> U[3];
+  std::vector<double> Density;
+  std::vector<double> Temperature;
+  std::vector<double> Q;
+  std::vector<unsigned char> Solid;
+  double LastProjectionDt = 0;
+
+  double SimulationTime = 0;
+  vtkIdType CurrentStep = 0;
+  vtkIdType StepsTaken = 0;
+  double LastRequestedTime;
+  std::string LastError;
+
+private:
+  vtkPlumeSmokeSolver(const vtkPlumeSmokeSolver&) = delete;
+  void operator=(const vtkPlumeSmokeSolver&) = delete;
+};
+
+#endif
