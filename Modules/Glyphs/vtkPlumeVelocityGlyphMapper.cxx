@@ -3,6 +3,7 @@
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeImageFrame.h"
+#include "vtkPlumeLookupTexture.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeShaderFeatures.h"
 #include "vtkPlumeShaderProgramCache.h"
@@ -233,7 +234,7 @@ public:
   // GL objects
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkNew<vtkTextureObject> VelocityTexture;
-  vtkNew<vtkTextureObject> LUTTexture;
+  vtkNew<vtkPlumeLookupTexture> LUTTexture;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
   vtkNew<vtkOpenGLVertexArrayObject> SeedVAO;
   vtkNew<vtkOpenGLBufferObject> SeedBuffer;
@@ -249,9 +250,6 @@ public:
   // Per-axis range of the valid vectors, widened to include 0 (for bounds).
   double ComponentLow[3] = { 0, 0, 0 };
   double ComponentHigh[3] = { 0, 0, 0 };
-  vtkMTimeType LUTTime = 0;
-  double LUTRange[2] = { 0, 0 };
-  vtkScalarsToColors* LUTObject = nullptr;
   bool LUTOpaque = true; // every entry of the uploaded table has alpha 255
   static constexpr int LUTSize = 256;
   vtkMTimeType SeedTime = 0;
@@ -270,8 +268,6 @@ public:
     this->Programs->ReleaseGraphicsResources(window);
     this->SeedVAOProgram = nullptr;
     this->Uploaded = Signature();
-    this->LUTTime = 0;
-    this->LUTObject = nullptr;
     this->SeedTime = 0;
     this->SeedObject = nullptr;
     this->Max3DTextureSize = 0;
@@ -815,34 +811,27 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     vtkScalarsToColors* lut = this->GetLookupTable();
     lut->SetRange(colorRange);
     lut->Build();
-    if (lut != impl.LUTObject || lut->GetMTime() != impl.LUTTime ||
-      colorRange[0] != impl.LUTRange[0] || colorRange[1] != impl.LUTRange[1] ||
-      !impl.LUTTexture->GetHandle())
+    const int uploads = impl.LUTTexture->GetUploadCount();
+    if (!impl.LUTTexture->Update(renWin, lut, lut->GetMTime(), colorRange, Internals::LUTSize,
+          [lut](double value, float rgba[4]) {
+            const unsigned char* c = lut->MapValue(value);
+            for (int k = 0; k < 4; ++k)
+            {
+              rgba[k] = c[k] / 255.0f;
+            }
+          }))
     {
-      std::vector<unsigned char> table(4 * Internals::LUTSize);
-      for (int i = 0; i < Internals::LUTSize; ++i)
-      {
-        const double value =
-          colorRange[0] + (colorRange[1] - colorRange[0]) * i / (Internals::LUTSize - 1.0);
-        const unsigned char* rgba = lut->MapValue(value);
-        std::copy(rgba, rgba + 4, &table[4 * i]);
-      }
+      vtkErrorMacro(<< "could not create the colour lookup texture");
+      return;
+    }
+    if (impl.LUTTexture->GetUploadCount() != uploads)
+    {
+      const std::vector<float>& table = impl.LUTTexture->GetTable();
       impl.LUTOpaque = true;
       for (int i = 0; i < Internals::LUTSize; ++i)
       {
-        impl.LUTOpaque = impl.LUTOpaque && table[4 * i + 3] == 255;
+        impl.LUTOpaque = impl.LUTOpaque && table[4 * i + 3] >= 1.0f;
       }
-      impl.LUTTexture->SetContext(renWin);
-      impl.LUTTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-      impl.LUTTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-      impl.LUTTexture->SetMinificationFilter(vtkTextureObject::Linear);
-      impl.LUTTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-      impl.LUTTexture->Create2DFromRaw(
-        Internals::LUTSize, 1, 4, VTK_UNSIGNED_CHAR, table.data());
-      impl.LUTObject = lut;
-      impl.LUTTime = lut->GetMTime();
-      impl.LUTRange[0] = colorRange[0];
-      impl.LUTRange[1] = colorRange[1];
     }
   }
 
@@ -955,8 +944,8 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   program->SetUniformi("Velocity", velocityTexture->GetTextureUnit());
   if (useLUT)
   {
-    impl.LUTTexture->Activate();
-    program->SetUniformi("ColorLUT", impl.LUTTexture->GetTextureUnit());
+    impl.LUTTexture->GetTextureObject()->Activate();
+    program->SetUniformi("ColorLUT", impl.LUTTexture->GetTextureObject()->GetTextureUnit());
     program->SetUniformf("LUTSize", static_cast<float>(Internals::LUTSize));
   }
   else
@@ -1030,7 +1019,7 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   velocityTexture->Deactivate();
   if (useLUT)
   {
-    impl.LUTTexture->Deactivate();
+    impl.LUTTexture->GetTextureObject()->Deactivate();
   }
 }
 

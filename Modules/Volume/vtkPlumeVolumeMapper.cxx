@@ -3,6 +3,7 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeImageFrame.h"
+#include "vtkPlumeLookupTexture.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeScalarTexture3D.h"
@@ -109,8 +110,7 @@ class vtkPlumeVolumeMapper::Internals
 public:
   vtkNew<vtkPlumeScalarTexture3D> Scalars;
   vtkNew<vtkPlumeOpaqueDepthTexture> Depth;
-  vtkNew<vtkTextureObject> Table;
-  std::vector<float> TableAlpha;        // extinction column of the table
+  vtkNew<vtkPlumeLookupTexture> Table; // colour + extinction per world unit over the scalar range
   vtkNew<vtkTextureObject> Occupancy;   // 1 byte per 8^3 block: 0 = transparent
   vtkNew<vtkTextureObject> BlockRanges; // RG32F per 8^3 block: min, max of u (MIP, isosurface)
   int RangesUpload = -1;
@@ -126,10 +126,6 @@ public:
   double AutomaticBudgetMB = 0; // of Window
   int Frame = 0;
 
-  // what the transfer-function table was built from
-  vtkVolumeProperty* TableProperty = nullptr;
-  vtkMTimeType TableTime = 0;
-  double TableRange[2] = { 0, 0 };
 
   void ReleaseGraphicsResources(vtkWindow* window)
   {
@@ -142,7 +138,6 @@ public:
     this->RangesUpload = -1;
     this->EmptyVAO->ReleaseGraphicsResources();
     this->Programs->ReleaseGraphicsResources(window);
-    this->TableProperty = nullptr;
     this->Window = nullptr;
     this->AutomaticBudgetMB = 0;
   }
@@ -441,51 +436,33 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     opacity->GetMTime(), gray ? gray->GetMTime() : vtkMTimeType(0) });
   const double unit = property->GetScalarOpacityUnitDistance(0);
   const double invUnit = unit > 0 ? 1.0 / unit : 1.0;
-  if (impl.TableProperty != property || impl.TableTime != tfTime ||
-    impl.TableRange[0] != range[0] || impl.TableRange[1] != range[1] || !impl.Table->GetHandle())
+  const int uploads = impl.Table->GetUploadCount();
+  if (!impl.Table->Update(renWin, property, tfTime, range, TableSize, [&](double v, float rgba[4]) {
+        double rgb[3];
+        if (gray)
+        {
+          rgb[0] = rgb[1] = rgb[2] = gray->GetValue(v);
+        }
+        else
+        {
+          color->GetColor(v, rgb);
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          rgba[c] = static_cast<float>(std::isfinite(rgb[c]) ? rgb[c] : 0.0);
+        }
+        // alpha channel: extinction per world unit (no log per sample in the shader)
+        const double a = opacity->GetValue(v);
+        const double alpha = std::isfinite(a) ? std::min(1.0 - 1e-6, std::max(0.0, a)) : 0.0;
+        rgba[3] = static_cast<float>(-std::log(1.0 - alpha) * invUnit);
+      }))
   {
-    std::vector<float> table(4 * TableSize);
-    for (int i = 0; i < TableSize; ++i)
-    {
-      const double s = range[0] + (range[1] - range[0]) * i / (TableSize - 1.0);
-      double rgb[3];
-      if (gray)
-      {
-        rgb[0] = rgb[1] = rgb[2] = gray->GetValue(s);
-      }
-      else
-      {
-        color->GetColor(s, rgb);
-      }
-      const double a = opacity->GetValue(s);
-      for (int c = 0; c < 3; ++c)
-      {
-        table[4 * i + c] = static_cast<float>(std::isfinite(rgb[c]) ? rgb[c] : 0.0);
-      }
-      // alpha channel: extinction per world unit (no log per sample in the shader)
-      const double alpha = std::isfinite(a) ? std::min(1.0 - 1e-6, std::max(0.0, a)) : 0.0;
-      table[4 * i + 3] = static_cast<float>(-std::log(1.0 - alpha) * invUnit);
-    }
-    impl.Table->SetContext(renWin);
-    impl.Table->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.Table->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.Table->SetMinificationFilter(vtkTextureObject::Linear);
-    impl.Table->SetMagnificationFilter(vtkTextureObject::Linear);
-    if (!impl.Table->Create2DFromRaw(TableSize, 1, 4, VTK_FLOAT, table.data()))
-    {
-      vtkErrorMacro(<< "could not create the transfer-function texture");
-      return;
-    }
-    impl.TableAlpha.resize(TableSize);
-    for (int i = 0; i < TableSize; ++i)
-    {
-      impl.TableAlpha[i] = table[4 * i + 3];
-    }
-    impl.TableProperty = property;
-    impl.TableTime = tfTime;
-    impl.TableRange[0] = range[0];
-    impl.TableRange[1] = range[1];
-    ++this->TableCount;
+    vtkErrorMacro(<< "could not create the transfer-function texture");
+    return;
+  }
+  if (impl.Table->GetUploadCount() != uploads)
+  {
+    ++this->TableCount; // the occupancy summary depends on it
   }
 
   // ---- empty-space skipping: blocks whose value range has zero opacity everywhere
@@ -497,7 +474,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     std::vector<int> prefix(TableSize + 1, 0);
     for (int i = 0; i < TableSize; ++i)
     {
-      prefix[i + 1] = prefix[i] + (impl.TableAlpha[i] > 0.0f ? 1 : 0);
+      prefix[i + 1] = prefix[i] + (impl.Table->GetTable()[4 * i + 3] > 0.0f ? 1 : 0);
     }
     const int* bd = impl.Scalars->GetBlockDimensions();
     const std::vector<float>& ranges = impl.Scalars->GetBlockRanges();
@@ -866,8 +843,8 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   impl.Scalars->GetTextureObject()->SetMagnificationFilter(filter);
   impl.Scalars->GetTextureObject()->Activate();
   program->SetUniformi("Volume", impl.Scalars->GetTextureObject()->GetTextureUnit());
-  impl.Table->Activate();
-  program->SetUniformi("TransferFunction", impl.Table->GetTextureUnit());
+  impl.Table->GetTextureObject()->Activate();
+  program->SetUniformi("TransferFunction", impl.Table->GetTextureObject()->GetTextureUnit());
   if (useDepth)
   {
     depth->GetTextureObject()->Activate();
@@ -911,7 +888,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   state->vtkglCullFace(GL_BACK);
   impl.Scalars->GetTextureObject()->Deactivate();
-  impl.Table->Deactivate();
+  impl.Table->GetTextureObject()->Deactivate();
   if (useDepth)
   {
     depth->GetTextureObject()->Deactivate();
