@@ -97,8 +97,10 @@ std::vector<double> ComputeTable(int n)
         out[1] = 1.0 / (1.0 + e2);
         continue;
       }
+      // m = p^2 / (1 - p^2): G has a k log k term at m = 0 that a uniform grid in
+      // m / (1 + m) would only resolve to first order.
       const double p = static_cast<double>(i) / (n - 1);
-      const double m = p / (1.0 - p);
+      const double m = p * p / (1.0 - p * p);
       auto h = [m, e2](double q) { return std::exp(-m * q) / (1.0 + e2 * q * q); };
       // y = z / (1 - z) maps [0, inf) to [0, 1); the integrand stays bounded.
       auto g = [m, e2](double z) {

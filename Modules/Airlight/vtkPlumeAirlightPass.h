@@ -27,7 +27,7 @@
  * with m = kt (t + d), tau = eps = h / (t + d) in [0, 1] and two smooth
  * bounded functions H, G tabulated once in double precision on the CPU
  * (GetScatteringTable) over the whole unbounded domain (m mapped to
- * m / (1 + m)): this is Sun's F(u, v) split at the foot of the perpendicular
+ * sqrt(m / (1 + m))): this is Sun's F(u, v) split at the foot of the perpendicular
  * and normalised so that nothing overflows (no exp(+kt d)), nothing is
  * divided by h (exact limits for gamma -> 0 and pi) and no arctan is
  * evaluated. A point light costs two table look-ups per channel (four if
@@ -119,7 +119,7 @@ public:
   /**
    * The scattering table for resolution n (computed once per n in double
    * precision; shared, thread-safe): n*n pairs (H, G) row-major, row j =
-   * eps = j/(n-1), column i = p = i/(n-1), m = p/(1-p), storing
+   * eps = j/(n-1), column i = p = i/(n-1), m = p^2/(1-p^2), storing
    *   H = (1+m) * integral_0^1 exp(-m q) / (1 + eps^2 q^2) dq,
    *   G = (1+m) * integral_0^inf exp(-m y) / (eps^2 + (1+y)^2) dy,
    * each to an absolute accuracy of 1e-10 (adaptive Simpson). Column p = 1

@@ -51,7 +51,11 @@ RGB Simpson(const F& f, double a, const RGB& fa, double m, const RGB& fm, double
   const RGB left = ((m - a) / 6.0) * (fa + 4.0 * flm + fm);
   const RGB right = ((b - m) / 6.0) * (fm + 4.0 * frm + fb);
   const RGB delta = (left + right) - whole;
-  if (depth <= 0 || MaxAbs(delta) <= 15.0 * tol)
+  // (A non-finite difference cannot shrink by subdividing: stop there too.)
+  // The floor 1e-14 |left + right|: below it the difference is round-off and
+  // halving the tolerance further would only multiply evaluations.
+  const double floor = 1e-14 * MaxAbs(left + right);
+  if (depth <= 0 || MaxAbs(delta) <= 15.0 * std::max(tol, floor) || !std::isfinite(MaxAbs(delta)))
   {
     return (left + right) + (1.0 / 15.0) * delta;
   }
@@ -163,7 +167,8 @@ void vtkPlumeAirlightReference::ComputeRay(
       RGB value;
       for (int c = 0; c < 3; ++c)
       {
-        value[c] = d2 > 0.0 ? coef[c] * w / d2 * std::exp(-kt[c] * (x + d)) : 0.0;
+        // exp of the sum: 1/d^2 and the extinction never meet as inf * 0.
+        value[c] = (d2 > 0.0 && w > 0.0) ? coef[c] * w * std::exp(-kt[c] * (x + d) - std::log(d2)) : 0.0;
       }
       return value;
     };

@@ -14,6 +14,9 @@
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
+#include "vtkFramebufferPass.h"
+#include "vtkPixelBufferObject.h"
+#include "vtkTextureObject.h"
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
@@ -141,17 +144,55 @@ struct Scene
   }
 
   /**
+   * The scene through `pass` (nullptr: the plain scene) into an RGBA32F
+   * target, read back as floats (no 8-bit rounding, values above 1 kept);
+   * depth from the same target (the window's depth format).
+   */
+  FloatImage RenderFloat(vtkRenderPass* pass)
+  {
+    vtkNew<vtkFramebufferPass> framebuffer;
+    framebuffer->SetDelegatePass(pass ? pass : this->Steps.Get());
+    framebuffer->SetColorFormat(vtkTextureObject::Float32);
+    this->Renderer->SetPass(framebuffer);
+    this->Window->Render();
+    FloatImage image;
+    vtkTextureObject* color = framebuffer->GetColorTexture();
+    vtkTextureObject* depth = framebuffer->GetDepthTexture();
+    image.Width = static_cast<int>(color->GetWidth());
+    image.Height = static_cast<int>(color->GetHeight());
+    auto download = [](vtkTextureObject* texture, int components) {
+      vtkSmartPointer<vtkPixelBufferObject> pbo;
+      pbo.TakeReference(texture->Download());
+      const size_t n = static_cast<size_t>(texture->GetWidth()) * texture->GetHeight() * components;
+      std::vector<float> values(n);
+      const auto* mapped = static_cast<const float*>(pbo->MapPackedBuffer());
+      std::copy(mapped, mapped + n, values.begin());
+      pbo->UnmapPackedBuffer();
+      return values;
+    };
+    image.RGBA = download(color, 4);
+    image.Depth = download(depth, 1);
+    framebuffer->ReleaseGraphicsResources(this->Window);
+    this->Renderer->SetPass(nullptr);
+    return image;
+  }
+
+  /**
    * The reference frame for the pass's medium, clamped to [0, 1] like the
    * window; `airlight` (optional) gets the airlight alone (surfaces black), clamped too.
    */
-  FloatImage Reference(const FloatImage& plain, int stride = 1, FloatImage* airlight = nullptr)
+  FloatImage Reference(const FloatImage& plain, int stride = 1, FloatImage* airlight = nullptr, bool clampOutput = true)
   {
     vtkNew<vtkPlumeAirlightReference> ref;
     ref->SetScattering(this->Pass->GetScattering());
     ref->SetAbsorption(this->Pass->GetAbsorption());
     ref->SetIntensityScale(this->Pass->GetIntensityScale());
     ref->SetLights(this->Renderer);
-    auto clamp = [](FloatImage& img) {
+    auto clamp = [clampOutput](FloatImage& img) {
+      if (!clampOutput)
+      {
+        return;
+      }
       for (float& v : img.RGBA)
       {
         if (!std::isnan(v))
@@ -160,8 +201,14 @@ struct Scene
         }
       }
     };
+    // Surfaces as the window shows them without the medium (the pass clamps them too).
+    std::vector<float> surface(plain.RGBA);
+    for (float& v : surface)
+    {
+      v = std::min(std::max(v, 0.0f), 1.0f);
+    }
     FloatImage out = plain;
-    ref->ComputeImage(this->Renderer, plain.Width, plain.Height, plain.RGBA.data(), plain.Depth.data(),
+    ref->ComputeImage(this->Renderer, plain.Width, plain.Height, surface.data(), plain.Depth.data(),
       out.RGBA, stride);
     clamp(out);
     if (airlight)
