@@ -46,7 +46,7 @@ const float HUGE = 1e20;
 // (exact float weights; no dependence on the GL's filtering precision).
 vec2 lookup(float m, float eps)
 {
-  float p = m / (1.0 + m); // m in [0, inf) -> p in [0, 1]
+  float p = sqrt(m / (1.0 + m)); // m in [0, inf) -> p in [0, 1], finer near m = 0
   float n1 = float(TableSize - 1);
   vec2 c = clamp(vec2(p, eps), 0.0, 1.0) * n1;
   vec2 i0 = min(floor(c), vec2(n1 - 1.0));
