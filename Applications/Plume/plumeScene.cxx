@@ -4,7 +4,9 @@
 #include "plumeProgress.h"
 #include "plumeSceneError.h"
 
+#include "vtkPlumeAirlightPass.h"
 #include "vtkPlumeDatasetReader.h"
+#include "vtkPlumeParameterTable.h"
 #include "vtkPlumeResampleToImage.h"
 #include "vtkPlumeVortexSource.h"
 
@@ -19,6 +21,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
 #include "vtksys/SystemTools.hxx"
 
@@ -399,10 +402,79 @@ void BuildLights(const nlohmann::json* spec, vtkRenderer* renderer)
     light->SetIntensity(p.Number("intensity", 1.0, 0.0));
     light->SetPositional(p.Boolean("positional", false));
     light->SetConeAngle(p.Number("cone_angle", 30.0, 0.0, 180.0));
+    light->SetExponent(p.Number("exponent", 1.0, 0.0, 128.0));
+    light->SetAttenuationValues(p.Vector<3>("attenuation", { 1, 0, 0 }).data());
     p.RejectUnknown();
     renderer->AddLight(light);
   }
 }
+}
+
+// The scene's "medium": a vtkPlumeAirlightPass around the renderer's usual
+// passes, its keys checked and set through the pass's parameter table.
+void BuildMedium(const nlohmann::json* spec, vtkRenderer* renderer)
+{
+  if (!spec)
+  {
+    return;
+  }
+  if (!spec->is_object())
+  {
+    throw SceneError("scene: 'medium' must be an object, got " + spec->dump());
+  }
+  const vtkPlumeParameterTable& table = vtkPlumeAirlightPass::GetParameterTable();
+  vtkNew<vtkPlumeAirlightPass> pass;
+  for (const auto& item : spec->items())
+  {
+    const vtkPlumeParameterTable::Parameter* parameter = table.Find(item.key());
+    if (!parameter)
+    {
+      std::string known;
+      for (const auto& q : table.GetParameters())
+      {
+        known += (known.empty() ? "" : ", ") + q.Key;
+      }
+      throw SceneError("medium: unknown key '" + item.key() + "' (known: " + known + ")");
+    }
+    const nlohmann::json& v = item.value();
+    vtkPlumeParameterTable::Value value;
+    using Kind = vtkPlumeParameterTable::Kind;
+    if ((parameter->Type == Kind::Vector3 || parameter->Type == Kind::Color) && v.is_array() && v.size() == 3 &&
+      v[0].is_number() && v[1].is_number() && v[2].is_number())
+    {
+      value = std::array<double, 3>{ v[0].get<double>(), v[1].get<double>(), v[2].get<double>() };
+    }
+    else if ((parameter->Type == Kind::Vector3 || parameter->Type == Kind::Color) && v.is_number())
+    {
+      value = std::array<double, 3>{ v.get<double>(), v.get<double>(), v.get<double>() }; // grey
+    }
+    else if (parameter->Type == Kind::Integer && v.is_number_integer())
+    {
+      value = v.get<long long>();
+    }
+    else if (parameter->Type == Kind::Real && v.is_number())
+    {
+      value = v.get<double>();
+    }
+    else if (parameter->Type == Kind::Boolean && v.is_boolean())
+    {
+      value = v.get<bool>();
+    }
+    else
+    {
+      throw SceneError("medium: '" + item.key() + "' must be a " +
+        vtkPlumeParameterTable::KindName(parameter->Type) + ", got " + v.dump());
+    }
+    const std::string problem = parameter->Check(value);
+    if (!problem.empty())
+    {
+      throw SceneError("medium: '" + item.key() + "' " + problem);
+    }
+    parameter->Set(pass, value);
+  }
+  vtkNew<vtkRenderStepsPass> steps;
+  pass->SetDelegatePass(steps);
+  renderer->SetPass(pass);
 }
 
 void Scene::Build(
@@ -436,6 +508,7 @@ void Scene::Build(
 
   const nlohmann::json* camera = top.Object("camera");
   const nlohmann::json* lights = top.Raw("lights");
+  const nlohmann::json* medium = top.Raw("medium");
   const nlohmann::json* reps = top.Raw("representations");
   top.RejectUnknown(); // before any slow loading
   if (!reps || !reps->is_array() || reps->empty())
@@ -485,6 +558,7 @@ void Scene::Build(
   }
   BuildCamera(camera, renderer);
   BuildLights(lights, renderer);
+  BuildMedium(medium, renderer);
 }
 
 }
