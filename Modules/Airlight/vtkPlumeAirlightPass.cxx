@@ -26,6 +26,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -157,11 +158,11 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Panel("Medium")
       .Doc("Multiplies every positional light's intensity for the airlight only (inverse-square falloff).")
       .Bind(&T::SetIntensityScale, &T::GetIntensityScale);
-    t.Integer("spot_steps", "SpotSteps", 16)
+    t.Integer("spot_steps", "SpotSteps", 8)
       .Between(1, 256)
       .Panel("Medium")
       .Advanced()
-      .Doc("Sub-intervals per spot light cone for its exponent weight (one when the exponent is 0).")
+      .Doc("Sub-intervals per spot light cone for its exponent weight, per unit of sqrt(exponent/2) (one when the exponent is 0).")
       .Bind(&T::SetSpotSteps, &T::GetSpotSteps);
     t.Integer("table_resolution", "TableResolution", 256)
       .Between(8, 2048)
@@ -169,6 +170,12 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Advanced()
       .Doc("Resolution N of the N x N scattering table (computed once in double precision).")
       .Bind(&T::SetTableResolution, &T::GetTableResolution);
+    t.Integer("march_steps", "MarchSteps", 0)
+      .Between(0, 65536)
+      .Panel("Medium")
+      .Advanced()
+      .Doc("0: the closed form; N > 0: brute-force ray marching with N samples (for comparisons).")
+      .Bind(&T::SetMarchSteps, &T::GetMarchSteps);
     return t;
   }();
   return table;
@@ -199,6 +206,7 @@ void vtkPlumeAirlightPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntensityScale: " << this->IntensityScale << "\n";
   os << indent << "SpotSteps: " << this->SpotSteps << "\n";
   os << indent << "TableResolution: " << this->TableResolution << "\n";
+  os << indent << "MarchSteps: " << this->MarchSteps << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -250,8 +258,8 @@ bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w,
       this->TableTexture = vtkTextureObject::New();
       this->TableTexture->SetContext(renWin);
     }
-    this->TableTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->TableTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->TableTexture->SetMinificationFilter(vtkTextureObject::Linear);
+    this->TableTexture->SetMagnificationFilter(vtkTextureObject::Linear);
     this->TableTexture->SetWrapS(vtkTextureObject::ClampToEdge);
     this->TableTexture->SetWrapT(vtkTextureObject::ClampToEdge);
     if (!this->TableTexture->Create2DFromRaw(n, n, 2, VTK_FLOAT, data.data()))
@@ -364,8 +372,13 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   if (anySpot)
   {
     features.insert("SPOT");
+    defines << "#define HAS_SPOT\n";
   }
-  const std::string key = defines.str() + (anySpot ? "spot" : "");
+  if (this->MarchSteps > 0)
+  {
+    defines << "#define MARCH\n#define MARCH_STEPS " << this->MarchSteps << "\n";
+  }
+  const std::string key = defines.str();
   if (this->Quad && this->ProgramKey != key)
   {
     delete this->Quad;
@@ -415,6 +428,18 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   program->SetUniform3f("KappaS", ks);
   program->SetUniform3f("KappaT", kt);
   program->SetUniformi("NumberOfLights", numberOfLights);
+  if (this->MarchSteps > 0)
+  {
+    double ktMin = HUGE_VAL;
+    for (int c = 0; c < 3; ++c)
+    {
+      if (kt[c] > 0)
+      {
+        ktMin = std::min(ktMin, static_cast<double>(kt[c]));
+      }
+    }
+    program->SetUniformf("MarchFar", static_cast<float>(std::log(1e6) / ktMin));
+  }
   if (numberOfLights > 0)
   {
     program->SetUniform3fv("LightPosition", numberOfLights, reinterpret_cast<const float(*)[3]>(positions.data()));

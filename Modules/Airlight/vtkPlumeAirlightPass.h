@@ -33,8 +33,8 @@
  * evaluated. A point light costs two table look-ups per channel (four if
  * the ray segment crosses the foot). A spot light's hard cone boundary is
  * exact (ray-cone interval); its exponent weight pow(cos, e) is applied per
- * sub-interval, SpotSteps sub-intervals uniform in the angle seen from the
- * light (one when e = 0, then exact).
+ * sub-interval, SpotSteps * ceil(sqrt(e/2)) sub-intervals uniform in the
+ * angle seen from the light (one when e = 0, then exact).
  *
  * Lights: every switched-on positional vtkLight of the renderer (after the
  * delegate has updated the light geometry, so head/camera lights work);
@@ -102,9 +102,23 @@ public:
   ///@}
 
   ///@{
-  /** Sub-intervals along a spot light's cone for its exponent weight (unused when the exponent is 0). Default 16. */
+  /**
+   * Sub-intervals along a spot light's cone for its exponent weight, per unit
+   * of sqrt(exponent / 2) (at most 256 in all; unused when the exponent is 0). Default 8.
+   */
   vtkSetClampMacro(SpotSteps, int, 1, 256);
   vtkGetMacro(SpotSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * For comparisons and benchmarks only: 0 uses the closed form; N > 0
+   * replaces it by brute-force ray marching of the same integral (midpoint
+   * rule, N samples per ray and light, rays that hit nothing stop where the
+   * transmittance is 1e-6), what a user would write in a shader. Default 0.
+   */
+  vtkSetClampMacro(MarchSteps, int, 0, 65536);
+  vtkGetMacro(MarchSteps, int);
   ///@}
 
   ///@{
@@ -136,8 +150,9 @@ protected:
   double Scattering[3];
   double Absorption[3];
   double IntensityScale = 1.0;
-  int SpotSteps = 16;
+  int SpotSteps = 8;
   int TableResolution = 256;
+  int MarchSteps = 0;
 
   vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
   vtkTextureObject* ColorTexture = nullptr;

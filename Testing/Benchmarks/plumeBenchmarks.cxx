@@ -17,6 +17,7 @@ const std::map<std::string, Benchmark>& Registry()
     RegisterSplat(r);
     RegisterVolume(r);
     RegisterSheets(r);
+    RegisterAirlight(r);
     return r;
   }();
   return registry;

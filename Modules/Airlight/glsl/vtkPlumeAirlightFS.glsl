@@ -42,21 +42,14 @@ uniform int SpotSteps;
 const float INV_2PI = 0.15915494309189535;
 const float HUGE = 1e20;
 
-// Bilinear look-up of both tables at (m, eps) with explicit texel fetches
-// (exact float weights; no dependence on the GL's filtering precision).
+// Bilinear look-up of both tables at (m, eps): one filtered fetch, texel
+// centres at (i + 0.5)/N (GL_LINEAR on the RG32F texture).
 vec2 lookup(float m, float eps)
 {
   float p = sqrt(m / (1.0 + m)); // m in [0, inf) -> p in [0, 1], finer near m = 0
   float n1 = float(TableSize - 1);
-  vec2 c = clamp(vec2(p, eps), 0.0, 1.0) * n1;
-  vec2 i0 = min(floor(c), vec2(n1 - 1.0));
-  vec2 f = c - i0;
-  ivec2 i = ivec2(i0);
-  vec2 v00 = texelFetch(Table, i, 0).rg;
-  vec2 v10 = texelFetch(Table, i + ivec2(1, 0), 0).rg;
-  vec2 v01 = texelFetch(Table, i + ivec2(0, 1), 0).rg;
-  vec2 v11 = texelFetch(Table, i + ivec2(1, 1), 0).rg;
-  return mix(mix(v00, v10, f.x), mix(v01, v11, f.x), f.y);
+  vec2 c = (clamp(vec2(p, eps), 0.0, 1.0) * n1 + 0.5) / float(TableSize);
+  return texture(Table, c).rg;
 }
 
 // P_head(t) without the factor ks I0/(2 pi) exp(-kt tc), for t <= 0, per channel.
@@ -119,6 +112,20 @@ vec3 segment(float a, float b, float tc, float h)
 }
 
 //PLUME::IF SPOT
+// A running integral Phi(x) of the unit airlight along the ray, so that the
+// integral over [a, b] is Phi(b) - Phi(a): the head potential before the foot,
+// then the foot's value minus the tail's decrease. `footPhi` = Phi(tc) (0 if
+// the foot lies behind the origin), `footTail` = P_tail(foot) (or at x = 0).
+vec3 runningIntegral(float x, float tc, float h, vec3 footPhi, vec3 footTail)
+{
+  float t = x - tc;
+  if (t <= 0.0)
+  {
+    return exp(-KappaT * tc) * headPotential(t, h);
+  }
+  return footPhi + footTail - tailPotential(t, h, x);
+}
+
 bool insideCone(vec3 p, vec3 apex, vec3 axis, float cosCone)
 {
   vec3 v = p - apex;
@@ -186,6 +193,37 @@ vec2 coneInterval(vec3 o, vec3 r, float xs, vec3 apex, vec3 axis, float c)
 }
 //PLUME::ENDIF
 
+#ifdef MARCH
+// The brute-force peer (vtkPlumeAirlightPass::MarchSteps > 0): the same
+// integral by the midpoint rule with MARCH_STEPS samples per ray and light,
+// as a user would write it; rays that hit nothing stop at MarchFar. Returns
+// (1/2) integral w exp(-kt (x + d)) / d^2 dx, the closed form's `unit`.
+uniform float MarchFar;
+vec3 march(vec3 o, vec3 r, float xs, int l)
+{
+  float xe = isinf(xs) ? MarchFar : xs;
+  float dx = xe / float(MARCH_STEPS);
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < MARCH_STEPS; ++k)
+  {
+    float x = (float(k) + 0.5) * dx;
+    vec3 v = o + x * r - LightPosition[l];
+    float d2 = max(dot(v, v), 1e-30);
+    float d = sqrt(d2);
+    float w = 1.0;
+#ifdef HAS_SPOT
+    if (LightCosCone[l] > -1.5)
+    {
+      float c = dot(v, LightAxis[l]) / d;
+      w = c >= LightCosCone[l] ? pow(max(c, 0.0), LightExponent[l]) : 0.0;
+    }
+#endif
+    sum += w * exp(-KappaT * (x + d)) / d2;
+  }
+  return 0.5 * dx * sum;
+}
+#endif
+
 void main()
 {
   ivec2 pixel = ivec2(gl_FragCoord.xy - ViewportOrigin);
@@ -220,6 +258,9 @@ void main()
     float h = length(toLight - tc * r);         // distance of the light from the ray's line
     h = max(h, 1e-30);
     vec3 unit = vec3(0.0);
+#ifdef MARCH
+    unit = march(o, r, xs, l);
+#else
 //PLUME::IF SPOT
     if (LightCosCone[l] > -1.5)
     {
@@ -236,16 +277,23 @@ void main()
           // light; each weighted by pow(cos angle to the axis) at its middle.
           float th0 = atan(span.x - tc, h);
           float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
-          float dth = (th1 - th0) / float(SpotSteps);
-          float xa = span.x;
-          for (int k = 1; k <= SpotSteps; ++k)
+          // The weight's angular width shrinks as 1/sqrt(exponent): SpotSteps
+          // sub-intervals per unit of sqrt(exponent / 2), at most 256.
+          int steps = min(SpotSteps * int(ceil(sqrt(max(LightExponent[l], 2.0) / 2.0))), 256);
+          float dth = (th1 - th0) / float(steps);
+          vec3 footPhi = tc > 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
+          float tStart = max(-tc, 0.0);
+          vec3 footTail = tailPotential(tStart, h, tStart + tc);
+          vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
+          for (int k = 1; k <= steps; ++k)
           {
-            float xb = (k == SpotSteps) ? span.y : tc + h * tan(th0 + float(k) * dth);
+            float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
             float thm = th0 + (float(k) - 0.5) * dth;
             vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
             float w = pow(max(dot(dir, LightAxis[l]), 0.0), LightExponent[l]);
-            unit += w * segment(xa, xb, tc, h);
-            xa = xb;
+            vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
+            unit += w * max(phiB - phiA, vec3(0.0));
+            phiA = phiB;
           }
         }
       }
@@ -255,6 +303,7 @@ void main()
     {
       unit = segment(0.0, xs, tc, h);
     }
+#endif
     airlight += min(KappaS * LightI0[l] * INV_2PI * unit, vec3(HUGE));
   }
   // The surface as the window would show it without the medium (the float
