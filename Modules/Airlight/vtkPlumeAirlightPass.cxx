@@ -184,6 +184,10 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
 //------------------------------------------------------------------------------
 vtkPlumeAirlightPass::vtkPlumeAirlightPass()
 {
+  for (int c = 0; c < 3; ++c)
+  {
+    this->Scattering[c] = this->Absorption[c] = 0.0;
+  }
   GetParameterTable().ApplyDefaults(this);
 }
 
@@ -207,6 +211,39 @@ void vtkPlumeAirlightPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SpotSteps: " << this->SpotSteps << "\n";
   os << indent << "TableResolution: " << this->TableResolution << "\n";
   os << indent << "MarchSteps: " << this->MarchSteps << "\n";
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+bool SetCoefficients(double target[3], double r, double g, double b)
+{
+  const double in[3] = { r, g, b };
+  bool changed = false;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double v = std::isnan(in[c]) ? 0.0 : std::min(std::max(in[c], 0.0), 1e30);
+    changed = changed || v != target[c];
+    target[c] = v;
+  }
+  return changed;
+}
+}
+
+void vtkPlumeAirlightPass::SetScattering(double r, double g, double b)
+{
+  if (SetCoefficients(this->Scattering, r, g, b))
+  {
+    this->Modified();
+  }
+}
+
+void vtkPlumeAirlightPass::SetAbsorption(double r, double g, double b)
+{
+  if (SetCoefficients(this->Absorption, r, g, b))
+  {
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------

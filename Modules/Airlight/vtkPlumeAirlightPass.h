@@ -84,14 +84,22 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
   ///@{
-  /** Scattering coefficient ks per RGB channel, per model unit of length. Default (0, 0, 0). */
-  vtkSetVector3Macro(Scattering, double);
+  /**
+   * Scattering coefficient ks per RGB channel, per model unit of length,
+   * each clamped to [0, 1e30] (NaN counts as 0). Default (0, 0, 0).
+   */
+  void SetScattering(double r, double g, double b);
+  void SetScattering(const double rgb[3]) { this->SetScattering(rgb[0], rgb[1], rgb[2]); }
   vtkGetVector3Macro(Scattering, double);
   ///@}
 
   ///@{
-  /** Absorption coefficient ka per RGB channel, per model unit of length. Default (0, 0, 0). */
-  vtkSetVector3Macro(Absorption, double);
+  /**
+   * Absorption coefficient ka per RGB channel, per model unit of length,
+   * each clamped to [0, 1e30] (NaN counts as 0). Default (0, 0, 0).
+   */
+  void SetAbsorption(double r, double g, double b);
+  void SetAbsorption(const double rgb[3]) { this->SetAbsorption(rgb[0], rgb[1], rgb[2]); }
   vtkGetVector3Macro(Absorption, double);
   ///@}
 
