@@ -448,9 +448,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   program->SetUniformi("Table", this->TableTexture->GetTextureUnit());
   program->SetUniformi("TableSize", this->UploadedTableResolution);
   const float origin[2] = { static_cast<float>(x), static_cast<float>(y) };
-  const float size[2] = { static_cast<float>(w), static_cast<float>(h) };
   program->SetUniform2f("ViewportOrigin", origin);
-  program->SetUniform2f("ViewportSize", size);
   vtkNew<vtkMatrix4x4> inverse;
   inverse->DeepCopy(camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0));
   inverse->Invert();

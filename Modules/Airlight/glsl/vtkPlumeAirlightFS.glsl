@@ -20,7 +20,6 @@ uniform sampler2D SceneDepth;
 uniform sampler2D Table;      // RG32F, TableSize^2: (1+m) H and (1+m) G, see vtkPlumeAirlightPass.h
 uniform int TableSize;
 uniform vec2 ViewportOrigin;  // window pixels of the viewport's lower-left corner
-uniform vec2 ViewportSize;
 uniform mat4 InverseProjection; // NDC -> eye coordinates
 uniform int Perspective;      // 1: rays start at the eye; 0: at the near plane
 
