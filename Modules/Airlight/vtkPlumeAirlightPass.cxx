@@ -415,6 +415,11 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   {
     defines << "#define MARCH\n#define MARCH_STEPS " << this->MarchSteps << "\n";
   }
+  const double kt0 = this->Scattering[0] + this->Absorption[0];
+  if (kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2])
+  {
+    defines << "#define GREY\n"; // one table look-up for the three channels
+  }
   const std::string key = defines.str();
   if (this->Quad && this->ProgramKey != key)
   {

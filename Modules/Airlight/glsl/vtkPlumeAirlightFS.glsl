@@ -58,6 +58,11 @@ vec3 headPotential(float t, float h)
   float dm = max(d - t, 1e-30); // = d + |t| >= d: no cancellation
   float tau = min(h / dm, 1.0);
   float hh = h * (h / dm);      // = t + d without cancellation
+#ifdef GREY
+  // kt is the same in R, G and B: one look-up serves the three channels.
+  float m = KappaT.x * hh;
+  return vec3(lookup(m, tau).x / ((1.0 + m) * dm));
+#else
   vec3 r;
   for (int c = 0; c < 3; ++c)
   {
@@ -65,6 +70,7 @@ vec3 headPotential(float t, float h)
     r[c] = lookup(m, tau).x / ((1.0 + m) * dm);
   }
   return r;
+#endif
 }
 
 // P_tail(t) without the factor ks I0/(2 pi), for t >= 0, per channel; x = t + tc.
@@ -77,6 +83,10 @@ vec3 tailPotential(float t, float h, float x)
   float d = sqrt(t * t + h * h);
   float dp = max(t + d, 1e-30);
   float eps = min(h / dp, 1.0);
+#ifdef GREY
+  float m = KappaT.x * dp;
+  return vec3(exp(-KappaT.x * (x + d)) * lookup(m, eps).y / ((1.0 + m) * dp));
+#else
   vec3 r;
   for (int c = 0; c < 3; ++c)
   {
@@ -84,6 +94,7 @@ vec3 tailPotential(float t, float h, float x)
     r[c] = exp(-KappaT[c] * (x + d)) * lookup(m, eps).y / ((1.0 + m) * dp);
   }
   return r;
+#endif
 }
 
 // Integral of exp(-kt (x + d)) / d^2 dx * (2 pi)... over [a, b] (b may be inf),
