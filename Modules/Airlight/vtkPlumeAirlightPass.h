@@ -31,7 +31,8 @@
  * and normalised so that nothing overflows (no exp(+kt d)), nothing is
  * divided by h (exact limits for gamma -> 0 and pi) and no arctan is
  * evaluated. A point light costs two table look-ups per channel (four if
- * the ray segment crosses the foot). A spot light's hard cone boundary is
+ * the ray segment crosses the foot; a grey medium, kt equal in R, G and B,
+ * compiles a variant with one look-up for the three channels). A spot light's hard cone boundary is
  * exact (ray-cone interval); its exponent weight pow(cos, e) is applied per
  * sub-interval, SpotSteps * ceil(sqrt(e/2)) sub-intervals uniform in the
  * angle seen from the light (one when e = 0, then exact).

@@ -6,7 +6,7 @@
  * integrates, per RGB channel,
  *   L = integral_0^ds  ks/(4 pi) * I0 * w(x) / d(x)^2 * exp(-kt (x + d(x))) dx
  * with adaptive Simpson quadrature (relative tolerance RelativeTolerance),
- * split at the light's foot point and at +-h, +-4h around it (the peak's
+ * split at the light's foot point and at +-h, +-4h, +-16h around it (the peak's
  * width), at the spot cone's boundaries (found by sampling the inside test
  * and bisection, not by solving the cone's quadratic), and over [X, inf) by
  * the map x = X + s/(1-s) when the ray hits nothing. The lights follow the
