@@ -346,7 +346,12 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   this->FrameBuffer->ActivateDrawBuffers(1);
   this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
   this->FrameBuffer->StartNonOrtho(w, h);
-  this->DelegatePass->Render(s);
+  // A state naming our framebuffer: the camera pass then draws the viewport
+  // at (0, 0) of the w x h target, whatever the renderer's place in the window.
+  vtkRenderState inner(r);
+  inner.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  inner.SetFrameBuffer(this->FrameBuffer);
+  this->DelegatePass->Render(&inner);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->FrameBuffer->RemoveColorAttachments(1);
   this->FrameBuffer->RemoveDepthAttachment();
