@@ -20,6 +20,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
@@ -84,7 +85,9 @@ std::vector<double> ComputeTable(int n)
 {
   std::vector<double> table(2 * static_cast<size_t>(n) * n);
   const double tol = 1e-11;
-  for (int j = 0; j < n; ++j)
+  // Rows are independent: vtkSMPTools (threads with the STDThread backend).
+  vtkSMPTools::For(0, n, [&](int rowBegin, int rowEnd) {
+  for (int j = rowBegin; j < rowEnd; ++j)
   {
     const double eps = static_cast<double>(j) / (n - 1);
     const double e2 = eps * eps;
@@ -116,6 +119,7 @@ std::vector<double> ComputeTable(int n)
       out[1] = (1.0 + m) * Integrate(g, 0.0, 1.0, tol / (1.0 + m));
     }
   }
+  });
   return table;
 }
 }
@@ -164,7 +168,7 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Advanced()
       .Doc("Sub-intervals per spot light cone for its exponent weight, per unit of sqrt(exponent/2) (one when the exponent is 0).")
       .Bind(&T::SetSpotSteps, &T::GetSpotSteps);
-    t.Integer("table_resolution", "TableResolution", 256)
+    t.Integer("table_resolution", "TableResolution", 64)
       .Between(8, 2048)
       .Panel("Medium")
       .Advanced()
