@@ -63,6 +63,11 @@ void Parameters::Apply(const vtkPlumeParameterTable& table, vtkObject* object)
       value = parameter.Type == Kind::Integer ? vtkPlumeParameterTable::Value(json->get<long long>())
                                               : vtkPlumeParameterTable::Value(json->get<double>());
     }
+    else if (json->is_number() && (parameter.Type == Kind::Vector3 || parameter.Type == Kind::Color))
+    {
+      const double x = json->get<double>(); // one number: grey, or the same on every axis
+      value = std::array<double, 3>{ x, x, x };
+    }
     else if (json->is_number())
     {
       value = json->get<double>();

@@ -4,7 +4,9 @@
 #include "plumeProgress.h"
 #include "plumeSceneError.h"
 
+#include "vtkPlumeAirlightPass.h"
 #include "vtkPlumeDatasetReader.h"
+#include "vtkPlumeParameterTable.h"
 #include "vtkPlumeResampleToImage.h"
 #include "vtkPlumeVortexSource.h"
 
@@ -405,10 +407,33 @@ void BuildLights(const nlohmann::json* spec, vtkRenderer* renderer)
     light->SetIntensity(p.Number("intensity", 1.0, 0.0));
     light->SetPositional(p.Boolean("positional", false));
     light->SetConeAngle(p.Number("cone_angle", 30.0, 0.0, 180.0));
+    light->SetExponent(p.Number("exponent", 1.0, 0.0, 128.0));
+    light->SetAttenuationValues(p.Vector<3>("attenuation", { 1, 0, 0 }).data());
     p.RejectUnknown();
     renderer->AddLight(light);
   }
 }
+}
+
+// The scene's "medium": a vtkPlumeAirlightPass around the compositing pass,
+// its keys checked and set through the pass's parameter table.
+void BuildMedium(const nlohmann::json* spec, vtkRenderer* renderer)
+{
+  if (!spec)
+  {
+    return;
+  }
+  if (!spec->is_object())
+  {
+    throw SceneError("scene: 'medium' must be an object, got " + spec->dump());
+  }
+  Parameters p(*spec, "medium");
+  vtkNew<vtkPlumeAirlightPass> pass;
+  p.Apply(vtkPlumeAirlightPass::GetParameterTable(), pass);
+  p.RejectUnknown();
+  // the medium is seen through after the whole compositing frame: it wraps it
+  pass->SetDelegatePass(vtkPlumeCompositingPass::Install(renderer));
+  renderer->SetPass(pass);
 }
 
 void Scene::Build(
@@ -442,6 +467,7 @@ void Scene::Build(
 
   const nlohmann::json* camera = top.Object("camera");
   const nlohmann::json* lights = top.Raw("lights");
+  const nlohmann::json* medium = top.Raw("medium");
   const nlohmann::json* reps = top.Raw("representations");
   top.RejectUnknown(); // before any slow loading
   if (!reps || !reps->is_array() || reps->empty())
@@ -477,6 +503,7 @@ void Scene::Build(
   }
   BuildCamera(camera, renderer);
   BuildLights(lights, renderer);
+  BuildMedium(medium, renderer);
 }
 
 }

@@ -18,6 +18,7 @@ const std::map<std::string, Benchmark>& Registry()
     RegisterVolume(r);
     RegisterSheets(r);
     RegisterSolver(r);
+    RegisterAirlight(r);
     return r;
   }();
   return registry;

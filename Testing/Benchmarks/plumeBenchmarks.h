@@ -48,6 +48,7 @@ void RegisterSplat(std::map<std::string, Benchmark>& registry);
 void RegisterVolume(std::map<std::string, Benchmark>& registry);
 void RegisterSheets(std::map<std::string, Benchmark>& registry);
 void RegisterSolver(std::map<std::string, Benchmark>& registry);
+void RegisterAirlight(std::map<std::string, Benchmark>& registry);
 
 /** Seconds on a monotonic clock. */
 double Now();

@@ -1,0 +1,304 @@
+// Helpers for the Plume::Airlight tests: an asymmetric room-like scene (floor,
+// back wall, a box and a sphere), lights, rendering with and without the pass,
+// and the comparison with vtkPlumeAirlightReference. Windows, float read-back
+// and GL error checks come from PlumeTestSupport (Testing/Support).
+#ifndef plumeAirlightTestUtil_h
+#define plumeAirlightTestUtil_h
+
+#include "plumeTestSupport.h"
+
+#include "vtkPlumeAirlightPass.h"
+#include "vtkPlumeAirlightReference.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkFloatArray.h"
+#include "vtkFramebufferPass.h"
+#include "vtkPixelBufferObject.h"
+#include "vtkTextureObject.h"
+#include "vtkImageData.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace airtest
+{
+using plume::test::FloatImage;
+
+struct Scene
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkPlumeAirlightPass> Pass;
+  vtkNew<vtkRenderStepsPass> Steps;
+
+  Scene(int w, int h)
+  {
+    this->Window = plume::test::MakeOffscreenWindow(w, h);
+    this->Renderer->SetBackground(0.1, 0.15, 0.3);
+    this->Window->AddRenderer(this->Renderer);
+    this->Pass->SetDelegatePass(this->Steps);
+  }
+
+  vtkActor* AddBox(double x0, double x1, double y0, double y1, double z0, double z1, double r, double g, double b)
+  {
+    vtkNew<vtkCubeSource> cube;
+    cube->SetBounds(x0, x1, y0, y1, z0, z1);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(cube->GetOutputPort());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(r, g, b);
+    this->Renderer->AddActor(actor);
+    return actor;
+  }
+
+  vtkActor* AddSphere(double x, double y, double z, double radius, double r, double g, double b)
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetCenter(x, y, z);
+    sphere->SetRadius(radius);
+    sphere->SetThetaResolution(40);
+    sphere->SetPhiResolution(20);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(sphere->GetOutputPort());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(r, g, b);
+    this->Renderer->AddActor(actor);
+    return actor;
+  }
+
+  /** A room: floor y = 0, back wall z = -4, a box left and a sphere right (asymmetric). */
+  void AddRoom()
+  {
+    this->AddBox(-5, 5, -0.1, 0, -4, 4, 0.6, 0.6, 0.55);
+    this->AddBox(-5, 5, 0, 5, -4.1, -4, 0.5, 0.55, 0.6);
+    this->AddBox(-2.5, -1.2, 0, 1.6, -2, -0.8, 0.8, 0.3, 0.2);
+    this->AddSphere(1.6, 0.7, -1.0, 0.7, 0.2, 0.5, 0.8);
+  }
+
+  vtkLight* AddPointLight(double x, double y, double z, double r, double g, double b, double intensity = 1.0)
+  {
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(true);
+    light->SetConeAngle(180);
+    light->SetPosition(x, y, z);
+    light->SetFocalPoint(x, y - 1, z);
+    light->SetColor(r, g, b);
+    light->SetIntensity(intensity);
+    this->Renderer->AddLight(light);
+    return light;
+  }
+
+  vtkLight* AddSpotLight(const double p[3], const double f[3], double cone, double exponent, double r,
+    double g, double b, double intensity = 1.0)
+  {
+    vtkLight* light = this->AddPointLight(p[0], p[1], p[2], r, g, b, intensity);
+    light->SetFocalPoint(f[0], f[1], f[2]);
+    light->SetConeAngle(cone);
+    light->SetExponent(exponent);
+    return light;
+  }
+
+  void Camera(double px, double py, double pz, double fx, double fy, double fz, double angle = 50)
+  {
+    vtkCamera* cam = this->Renderer->GetActiveCamera();
+    cam->SetPosition(px, py, pz);
+    cam->SetFocalPoint(fx, fy, fz);
+    cam->SetViewUp(0, 1, 0);
+    cam->SetViewAngle(angle);
+    this->Renderer->ResetCameraClippingRange();
+  }
+
+  /** The scene without the pass. */
+  FloatImage RenderPlain()
+  {
+    this->Renderer->SetPass(nullptr);
+    return plume::test::ReadBack(this->Window);
+  }
+
+  /** The scene through the pass. */
+  FloatImage RenderAirlight()
+  {
+    this->Renderer->SetPass(this->Pass);
+    return plume::test::ReadBack(this->Window);
+  }
+
+  /**
+   * The scene through `pass` (nullptr: the plain scene) into an RGBA32F
+   * target, read back as floats (no 8-bit rounding, values above 1 kept);
+   * depth from the same target (the window's depth format).
+   */
+  FloatImage RenderFloat(vtkRenderPass* pass)
+  {
+    vtkNew<vtkFramebufferPass> framebuffer;
+    framebuffer->SetDelegatePass(pass ? pass : this->Steps.Get());
+    framebuffer->SetColorFormat(vtkTextureObject::Float32);
+    this->Renderer->SetPass(framebuffer);
+    this->Window->Render();
+    FloatImage image;
+    vtkTextureObject* color = framebuffer->GetColorTexture();
+    vtkTextureObject* depth = framebuffer->GetDepthTexture();
+    image.Width = static_cast<int>(color->GetWidth());
+    image.Height = static_cast<int>(color->GetHeight());
+    auto download = [](vtkTextureObject* texture, int components) {
+      vtkSmartPointer<vtkPixelBufferObject> pbo;
+      pbo.TakeReference(texture->Download());
+      const size_t n = static_cast<size_t>(texture->GetWidth()) * texture->GetHeight() * components;
+      std::vector<float> values(n);
+      const auto* mapped = static_cast<const float*>(pbo->MapPackedBuffer());
+      std::copy(mapped, mapped + n, values.begin());
+      pbo->UnmapPackedBuffer();
+      return values;
+    };
+    image.RGBA = download(color, 4);
+    image.Depth = download(depth, 1);
+    framebuffer->ReleaseGraphicsResources(this->Window);
+    this->Renderer->SetPass(nullptr);
+    return image;
+  }
+
+  /**
+   * The reference frame for the pass's medium, clamped to [0, 1] like the
+   * window; `airlight` (optional) gets the airlight alone (surfaces black), clamped too.
+   */
+  FloatImage Reference(const FloatImage& plain, int stride = 1, FloatImage* airlight = nullptr, bool clampOutput = true)
+  {
+    vtkNew<vtkPlumeAirlightReference> ref;
+    ref->SetScattering(this->Pass->GetScattering());
+    ref->SetAbsorption(this->Pass->GetAbsorption());
+    ref->SetIntensityScale(this->Pass->GetIntensityScale());
+    ref->SetLights(this->Renderer);
+    auto clamp = [clampOutput](FloatImage& img) {
+      if (!clampOutput)
+      {
+        return;
+      }
+      for (float& v : img.RGBA)
+      {
+        if (!std::isnan(v))
+        {
+          v = std::min(std::max(v, 0.0f), 1.0f);
+        }
+      }
+    };
+    // Surfaces as the window shows them without the medium (the pass clamps them too).
+    std::vector<float> surface(plain.RGBA);
+    for (float& v : surface)
+    {
+      v = std::min(std::max(v, 0.0f), 1.0f);
+    }
+    FloatImage out = plain;
+    ref->ComputeImage(this->Renderer, plain.Width, plain.Height, surface.data(), plain.Depth.data(),
+      out.RGBA, stride);
+    clamp(out);
+    if (airlight)
+    {
+      *airlight = plain;
+      std::vector<float> black(plain.RGBA.size(), 0.0f);
+      ref->ComputeImage(this->Renderer, plain.Width, plain.Height, black.data(), plain.Depth.data(),
+        airlight->RGBA, stride);
+      clamp(*airlight);
+    }
+    return out;
+  }
+};
+
+/** Error of `image` against `reference` over the pixels the reference computed, relative to the range of `airlight`. */
+struct Error
+{
+  double RMS = 0;   // fraction of the airlight range
+  double Max = 0;   // fraction of the airlight range
+  double Range = 0; // max - min of the (clamped) reference airlight over all channels
+  size_t Pixels = 0;
+  int MaxX = 0, MaxY = 0;
+};
+
+inline Error Compare(const FloatImage& image, const FloatImage& reference, const FloatImage& airlight)
+{
+  Error e;
+  double lo = HUGE_VAL, hi = -HUGE_VAL, sum = 0;
+  const size_t n = static_cast<size_t>(image.Width) * image.Height;
+  for (size_t p = 0; p < n; ++p)
+  {
+    if (std::isnan(reference.RGBA[4 * p]))
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      lo = std::min(lo, double(airlight.RGBA[4 * p + c]));
+      hi = std::max(hi, double(airlight.RGBA[4 * p + c]));
+      const double d = std::fabs(double(image.RGBA[4 * p + c]) - reference.RGBA[4 * p + c]);
+      sum += d * d;
+      if (d > e.Max)
+      {
+        e.Max = d;
+        e.MaxX = static_cast<int>(p % image.Width);
+        e.MaxY = static_cast<int>(p / image.Width);
+      }
+    }
+    ++e.Pixels;
+  }
+  e.Range = hi - lo;
+  const double scale = e.Range > 0 ? e.Range : 1.0;
+  e.RMS = std::sqrt(sum / std::max<size_t>(3 * e.Pixels, 1)) / scale;
+  e.Max /= scale;
+  return e;
+}
+
+/** Writes `image` (RGB in [0, 1], scaled by `gain`) as a PNG: for looking at test images ($PLUME_AIRLIGHT_DUMP). */
+inline void Dump(const FloatImage& image, const std::string& name, double gain = 1.0)
+{
+  const char* dir = std::getenv("PLUME_AIRLIGHT_DUMP");
+  if (!dir)
+  {
+    return;
+  }
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(image.Width, image.Height, 1);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(static_cast<vtkIdType>(image.Width) * image.Height);
+  for (vtkIdType p = 0; p < rgb->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double v = gain * image.RGBA[4 * p + c];
+      rgb->SetComponent(p, c, std::isnan(v) ? 255 : std::min(255.0, std::max(0.0, 255.0 * v + 0.5)));
+    }
+  }
+  img->GetPointData()->SetScalars(rgb);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(img);
+  writer->SetFileName((std::string(dir) + "/" + name + ".png").c_str());
+  writer->Write();
+}
+
+inline void Print(const char* what, const Error& e)
+{
+  std::cout << what << ": RMS " << 100 * e.RMS << " %, max " << 100 * e.Max << " % (at " << e.MaxX << ", "
+            << e.MaxY << ") of the airlight range " << e.Range << " over " << e.Pixels << " pixels\n";
+}
+}
+
+#endif

@@ -1,0 +1,323 @@
+//VTK::System::Dec
+
+// vtkPlumeAirlightPass: one full-screen pass over the delegate's colour and
+// depth. Per pixel and channel: C * exp(-kt ds) + sum of the lights' single
+// scattering, in the closed form of Documentation/Airlight.md:
+//   integral over [a, b] = P_head(b) - P_head(a)   (the part with t <= 0)
+//                        + P_tail(a) - P_tail(b)   (the part with t >= 0)
+//   P_head = ks I0/(2 pi) exp(-kt tc) H(m, tau) / (d - t),  tau = h/(d - t), m = kt h^2/(d - t)
+//   P_tail = ks I0/(2 pi) exp(-kt (x + d)) G(m, eps) / (t + d), eps = h/(t + d), m = kt (t + d)
+// t = x - tc: position along the ray from the foot of the perpendicular from
+// the light; h: the light's distance from the ray's line; d = sqrt(t^2 + h^2).
+// Everything is computed in eye coordinates (VTK's view transform is rigid).
+
+//PLUME::Defines
+
+in vec2 texCoord;
+
+uniform sampler2D SceneColor;
+uniform sampler2D SceneDepth;
+uniform sampler2D Table;      // RG32F, TableSize^2: (1+m) H and (1+m) G, see vtkPlumeAirlightPass.h
+uniform int TableSize;
+uniform vec2 ViewportOrigin;  // window pixels of the viewport's lower-left corner
+uniform mat4 InverseProjection; // NDC -> eye coordinates
+uniform int Perspective;      // 1: rays start at the eye; 0: at the near plane
+
+uniform vec3 KappaS;
+uniform vec3 KappaT;
+
+uniform int NumberOfLights;
+uniform vec3 LightPosition[NUMBER_OF_LIGHTS]; // eye coordinates
+uniform vec3 LightI0[NUMBER_OF_LIGHTS];       // RGB radiant intensity
+//PLUME::IF SPOT
+uniform vec3 LightAxis[NUMBER_OF_LIGHTS];     // spot direction (unit, eye coordinates)
+uniform float LightCosCone[NUMBER_OF_LIGHTS]; // cos(cone angle); -2 for point lights
+uniform float LightExponent[NUMBER_OF_LIGHTS];
+uniform int SpotSteps;
+//PLUME::ENDIF
+
+//VTK::Output::Dec
+
+const float INV_2PI = 0.15915494309189535;
+const float HUGE = 1e20;
+
+// Bilinear look-up of both tables at (m, eps): one filtered fetch, texel
+// centres at (i + 0.5)/N (GL_LINEAR on the RG32F texture).
+vec2 lookup(float m, float eps)
+{
+  float p = sqrt(m / (1.0 + m)); // m in [0, inf) -> p in [0, 1], finer near m = 0
+  float n1 = float(TableSize - 1);
+  vec2 c = (clamp(vec2(p, eps), 0.0, 1.0) * n1 + 0.5) / float(TableSize);
+  return texture(Table, c).rg;
+}
+
+// P_head(t) without the factor ks I0/(2 pi) exp(-kt tc), for t <= 0, per channel.
+vec3 headPotential(float t, float h)
+{
+  float d = sqrt(t * t + h * h);
+  float dm = max(d - t, 1e-30); // = d + |t| >= d: no cancellation
+  float tau = min(h / dm, 1.0);
+  float hh = h * (h / dm);      // = t + d without cancellation
+#ifdef GREY
+  // kt is the same in R, G and B: one look-up serves the three channels.
+  float m = KappaT.x * hh;
+  return vec3(lookup(m, tau).x / ((1.0 + m) * dm));
+#else
+  vec3 r;
+  for (int c = 0; c < 3; ++c)
+  {
+    float m = KappaT[c] * hh;
+    r[c] = lookup(m, tau).x / ((1.0 + m) * dm);
+  }
+  return r;
+#endif
+}
+
+// P_tail(t) without the factor ks I0/(2 pi), for t >= 0, per channel; x = t + tc.
+vec3 tailPotential(float t, float h, float x)
+{
+  if (isinf(t))
+  {
+    return vec3(0.0);
+  }
+  float d = sqrt(t * t + h * h);
+  float dp = max(t + d, 1e-30);
+  float eps = min(h / dp, 1.0);
+#ifdef GREY
+  float m = KappaT.x * dp;
+  return vec3(exp(-KappaT.x * (x + d)) * lookup(m, eps).y / ((1.0 + m) * dp));
+#else
+  vec3 r;
+  for (int c = 0; c < 3; ++c)
+  {
+    float m = KappaT[c] * dp;
+    r[c] = exp(-KappaT[c] * (x + d)) * lookup(m, eps).y / ((1.0 + m) * dp);
+  }
+  return r;
+#endif
+}
+
+// Integral of exp(-kt (x + d)) / d^2 dx * (2 pi)... over [a, b] (b may be inf),
+// i.e. the airlight of a unit light without the factor ks I0 / (2 pi).
+vec3 segment(float a, float b, float tc, float h)
+{
+  if (!(b > a))
+  {
+    return vec3(0.0);
+  }
+  float ta = a - tc;
+  float tb = b - tc;
+  vec3 sum = vec3(0.0);
+  if (ta < 0.0)
+  {
+    float te = min(tb, 0.0);
+    sum += exp(-KappaT * tc) * (headPotential(te, h) - headPotential(ta, h));
+  }
+  if (tb > 0.0)
+  {
+    float ts = max(ta, 0.0);
+    sum += tailPotential(ts, h, ts + tc) - tailPotential(tb, h, b);
+  }
+  return max(sum, vec3(0.0));
+}
+
+//PLUME::IF SPOT
+// A running integral Phi(x) of the unit airlight along the ray, so that the
+// integral over [a, b] is Phi(b) - Phi(a): the head potential before the foot,
+// then the foot's value minus the tail's decrease. `footPhi` = Phi(tc) (0 if
+// the foot lies behind the origin), `footTail` = P_tail(foot) (or at x = 0).
+vec3 runningIntegral(float x, float tc, float h, vec3 footPhi, vec3 footTail)
+{
+  float t = x - tc;
+  if (t <= 0.0)
+  {
+    return exp(-KappaT * tc) * headPotential(t, h);
+  }
+  return footPhi + footTail - tailPotential(t, h, x);
+}
+
+bool insideCone(vec3 p, vec3 apex, vec3 axis, float cosCone)
+{
+  vec3 v = p - apex;
+  return dot(v, axis) >= cosCone * length(v);
+}
+
+// The interval of the ray o + x r (x in [0, xs]) inside the cone; empty if lo >= hi.
+// The cone (half-angle <= 90 degrees) is convex, so it is one interval; its ends
+// are among the roots of (v.a)^2 - c^2 |v|^2 = 0 and the segment's ends. Each piece
+// between consecutive candidates is classified by the exact test at its middle.
+vec2 coneInterval(vec3 o, vec3 r, float xs, vec3 apex, vec3 axis, float c)
+{
+  vec3 v = o - apex;
+  float ra = dot(r, axis);
+  float va = dot(v, axis);
+  float A = ra * ra - c * c;
+  float B = va * ra - c * c * dot(v, r);
+  float C = va * va - c * c * dot(v, v);
+  float roots[2];
+  int nroots = 0;
+  if (abs(A) > 1e-12)
+  {
+    float disc = B * B - A * C;
+    if (disc >= 0.0)
+    {
+      // stable quadratic roots
+      float q = -(B + (B >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
+      float x1 = q / A;
+      float x2 = (q != 0.0) ? C / q : x1;
+      roots[0] = min(x1, x2);
+      roots[1] = max(x1, x2);
+      nroots = 2;
+    }
+  }
+  else if (abs(B) > 1e-20)
+  {
+    roots[0] = -C / (2.0 * B);
+    nroots = 1;
+  }
+  float bounds[4];
+  int nb = 0;
+  bounds[nb++] = 0.0;
+  for (int k = 0; k < nroots; ++k)
+  {
+    if (roots[k] > 0.0 && roots[k] < xs)
+    {
+      bounds[nb++] = roots[k];
+    }
+  }
+  bounds[nb++] = xs;
+  float lo = HUGE;
+  float hi = -HUGE;
+  for (int k = 0; k + 1 < nb; ++k)
+  {
+    float a = bounds[k];
+    float b = bounds[k + 1];
+    float mid = isinf(b) ? a + 1.0 + abs(a) : 0.5 * (a + b);
+    if (b > a && insideCone(o + mid * r, apex, axis, c))
+    {
+      lo = min(lo, a);
+      hi = max(hi, b);
+    }
+  }
+  return vec2(lo, hi);
+}
+//PLUME::ENDIF
+
+#ifdef MARCH
+// The brute-force peer (vtkPlumeAirlightPass::MarchSteps > 0): the same
+// integral by the midpoint rule with MARCH_STEPS samples per ray and light,
+// as a user would write it; rays that hit nothing stop at MarchFar. Returns
+// (1/2) integral w exp(-kt (x + d)) / d^2 dx, the closed form's `unit`.
+uniform float MarchFar;
+vec3 march(vec3 o, vec3 r, float xs, int l)
+{
+  float xe = isinf(xs) ? MarchFar : xs;
+  float dx = xe / float(MARCH_STEPS);
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < MARCH_STEPS; ++k)
+  {
+    float x = (float(k) + 0.5) * dx;
+    vec3 v = o + x * r - LightPosition[l];
+    float d2 = max(dot(v, v), 1e-30);
+    float d = sqrt(d2);
+    float w = 1.0;
+#ifdef HAS_SPOT
+    if (LightCosCone[l] > -1.5)
+    {
+      float c = dot(v, LightAxis[l]) / d;
+      w = c >= LightCosCone[l] ? pow(max(c, 0.0), LightExponent[l]) : 0.0;
+    }
+#endif
+    sum += w * exp(-KappaT * (x + d)) / d2;
+  }
+  return 0.5 * dx * sum;
+}
+#endif
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy - ViewportOrigin);
+  vec4 color = texelFetch(SceneColor, pixel, 0);
+  float depth = texelFetch(SceneDepth, pixel, 0).r;
+  gl_FragDepth = depth;
+
+  // The view ray in eye coordinates.
+  vec2 ndc = texCoord * 2.0 - 1.0; // the pixel's centre
+  vec4 pn = InverseProjection * vec4(ndc, -1.0, 1.0);
+  vec4 pf = InverseProjection * vec4(ndc, 1.0, 1.0);
+  vec3 nearPoint = pn.xyz / pn.w;
+  vec3 farPoint = pf.xyz / pf.w;
+  vec3 o = Perspective == 1 ? vec3(0.0) : nearPoint;
+  vec3 r = normalize(farPoint - o);
+  float xs = 1.0 / 0.0; // nothing drawn: the ray runs through the medium to infinity
+  if (depth < 1.0)
+  {
+    vec4 ps = InverseProjection * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+    xs = length(ps.xyz / ps.w - o);
+  }
+
+  vec3 transmittance = isinf(xs) ? vec3(0.0) : exp(-KappaT * xs);
+  // A channel with kt = 0 keeps its colour even at infinity.
+  transmittance = mix(transmittance, vec3(1.0), vec3(equal(KappaT, vec3(0.0))));
+  vec3 airlight = vec3(0.0);
+  for (int l = 0; l < NumberOfLights; ++l)
+  {
+    vec3 L = LightPosition[l];
+    vec3 toLight = L - o;
+    float tc = dot(toLight, r);                 // foot of the perpendicular
+    float h = length(toLight - tc * r);         // distance of the light from the ray's line
+    h = max(h, 1e-30);
+    vec3 unit = vec3(0.0);
+#ifdef MARCH
+    unit = march(o, r, xs, l);
+#else
+//PLUME::IF SPOT
+    if (LightCosCone[l] > -1.5)
+    {
+      vec2 span = coneInterval(o, r, xs, L, LightAxis[l], LightCosCone[l]);
+      if (span.x < span.y)
+      {
+        if (LightExponent[l] == 0.0)
+        {
+          unit = segment(span.x, span.y, tc, h);
+        }
+        else
+        {
+          // Sub-intervals uniform in the angle theta = atan(t/h) seen from the
+          // light; each weighted by pow(cos angle to the axis) at its middle.
+          float th0 = atan(span.x - tc, h);
+          float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
+          // The weight's angular width shrinks as 1/sqrt(exponent): SpotSteps
+          // sub-intervals per unit of sqrt(exponent / 2), at most 256.
+          int steps = min(SpotSteps * int(ceil(sqrt(max(LightExponent[l], 2.0) / 2.0))), 256);
+          float dth = (th1 - th0) / float(steps);
+          vec3 footPhi = tc > 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
+          float tStart = max(-tc, 0.0);
+          vec3 footTail = tailPotential(tStart, h, tStart + tc);
+          vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
+          for (int k = 1; k <= steps; ++k)
+          {
+            float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
+            float thm = th0 + (float(k) - 0.5) * dth;
+            vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
+            float w = pow(max(dot(dir, LightAxis[l]), 0.0), LightExponent[l]);
+            vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
+            unit += w * max(phiB - phiA, vec3(0.0));
+            phiA = phiB;
+          }
+        }
+      }
+    }
+    else
+//PLUME::ENDIF
+    {
+      unit = segment(0.0, xs, tc, h);
+    }
+#endif
+    airlight += min(KappaS * LightI0[l] * INV_2PI * unit, vec3(HUGE));
+  }
+  // The surface as the window would show it without the medium (the float
+  // target keeps values above 1 that an 8-bit window clamps), then attenuated.
+  vec3 result = clamp(color.rgb, 0.0, 1.0) * transmittance + airlight;
+  gl_FragData[0] = vec4(result, 1.0);
+}

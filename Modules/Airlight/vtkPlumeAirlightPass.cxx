@@ -1,0 +1,542 @@
+#include "vtkPlumeAirlightPass.h"
+
+#include "vtkPlumeAirlightFS.h"
+#include "vtkPlumeGLMatrix.h"
+#include "vtkPlumeParameterTable.h"
+#include "vtkPlumeShaderVariants.h"
+
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <string>
+
+vtkStandardNewMacro(vtkPlumeAirlightPass);
+
+namespace
+{
+constexpr int MaximumLights = 8;
+
+// Adaptive Simpson on [a, b] to absolute tolerance `tol` (the table's
+// integrands are smooth and bounded; the depth limit only guards round-off).
+template <class F>
+double Simpson(const F& f, double a, double fa, double m, double fm, double b, double fb,
+  double whole, double tol, int depth)
+{
+  const double lm = 0.5 * (a + m);
+  const double rm = 0.5 * (m + b);
+  const double flm = f(lm);
+  const double frm = f(rm);
+  const double left = (m - a) / 6.0 * (fa + 4.0 * flm + fm);
+  const double right = (b - m) / 6.0 * (fm + 4.0 * frm + fb);
+  const double delta = left + right - whole;
+  if (depth <= 0 || std::fabs(delta) <= 15.0 * tol)
+  {
+    return left + right + delta / 15.0;
+  }
+  return Simpson(f, a, fa, lm, flm, m, fm, left, 0.5 * tol, depth - 1) +
+    Simpson(f, m, fm, rm, frm, b, fb, right, 0.5 * tol, depth - 1);
+}
+
+template <class F>
+double Integrate(const F& f, double a, double b, double tol)
+{
+  // Start from 8 panels so that a narrow boundary layer is not missed.
+  double sum = 0.0;
+  const int panels = 8;
+  for (int k = 0; k < panels; ++k)
+  {
+    const double x0 = a + (b - a) * k / panels;
+    const double x1 = a + (b - a) * (k + 1) / panels;
+    const double xm = 0.5 * (x0 + x1);
+    const double f0 = f(x0), fm = f(xm), f1 = f(x1);
+    sum += Simpson(f, x0, f0, xm, fm, x1, f1, (x1 - x0) / 6.0 * (f0 + 4.0 * fm + f1),
+      tol / panels, 48);
+  }
+  return sum;
+}
+
+std::vector<double> ComputeTable(int n)
+{
+  std::vector<double> table(2 * static_cast<size_t>(n) * n);
+  const double tol = 1e-11;
+  // Rows are independent: vtkSMPTools (threads with the STDThread backend).
+  vtkSMPTools::For(0, n, [&](int rowBegin, int rowEnd) {
+  for (int j = rowBegin; j < rowEnd; ++j)
+  {
+    const double eps = static_cast<double>(j) / (n - 1);
+    const double e2 = eps * eps;
+    for (int i = 0; i < n; ++i)
+    {
+      double* out = &table[2 * (static_cast<size_t>(j) * n + i)];
+      if (i == n - 1)
+      {
+        // p = 1, m = infinity: (1+m) times the integrals tend to the integrands at 0.
+        out[0] = 1.0;
+        out[1] = 1.0 / (1.0 + e2);
+        continue;
+      }
+      // m = p^2 / (1 - p^2): G has a k log k term at m = 0 that a uniform grid in
+      // m / (1 + m) would only resolve to first order.
+      const double p = static_cast<double>(i) / (n - 1);
+      const double m = p * p / (1.0 - p * p);
+      auto h = [m, e2](double q) { return std::exp(-m * q) / (1.0 + e2 * q * q); };
+      // y = z / (1 - z) maps [0, inf) to [0, 1); the integrand stays bounded.
+      auto g = [m, e2](double z) {
+        if (z >= 1.0)
+        {
+          return m > 0.0 ? 0.0 : 1.0;
+        }
+        const double w = 1.0 - z;
+        return std::exp(-m * z / w) / (e2 * w * w + 1.0);
+      };
+      out[0] = (1.0 + m) * Integrate(h, 0.0, 1.0, tol / (1.0 + m));
+      out[1] = (1.0 + m) * Integrate(g, 0.0, 1.0, tol / (1.0 + m));
+    }
+  }
+  });
+  return table;
+}
+}
+
+//------------------------------------------------------------------------------
+const std::vector<double>& vtkPlumeAirlightPass::GetScatteringTable(int n)
+{
+  static std::mutex mutex;
+  static std::map<int, std::unique_ptr<std::vector<double>>> tables;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = tables[n];
+  if (!slot)
+  {
+    slot.reset(new std::vector<double>(ComputeTable(n)));
+  }
+  return *slot;
+}
+
+//------------------------------------------------------------------------------
+const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
+{
+  static const vtkPlumeParameterTable table = [] {
+    using T = vtkPlumeAirlightPass;
+    using SetV = void (T::*)(const double*);
+    vtkPlumeParameterTable t("vtkPlumeAirlightPass", "medium");
+    t.Vector3("scattering", "Scattering", { 0.0, 0.0, 0.0 })
+      .Between(0.0, 1e30)
+      .Units("1/model units")
+      .Panel("Medium")
+      .Doc("Scattering coefficient ks per RGB channel: the fraction of light scattered per unit length.")
+      .Bind(static_cast<SetV>(&T::SetScattering), &T::GetScattering);
+    t.Vector3("absorption", "Absorption", { 0.0, 0.0, 0.0 })
+      .Between(0.0, 1e30)
+      .Units("1/model units")
+      .Panel("Medium")
+      .Doc("Absorption coefficient ka per RGB channel; light is extinguished by ks + ka.")
+      .Bind(static_cast<SetV>(&T::SetAbsorption), &T::GetAbsorption);
+    t.Real("intensity_scale", "IntensityScale", 1.0)
+      .Between(0.0, 1e30)
+      .Panel("Medium")
+      .Doc("Multiplies every positional light's intensity for the airlight only (inverse-square falloff).")
+      .Bind(&T::SetIntensityScale, &T::GetIntensityScale);
+    t.Integer("spot_steps", "SpotSteps", 8)
+      .Between(1, 256)
+      .Panel("Medium")
+      .Advanced()
+      .Doc("Sub-intervals per spot light cone for its exponent weight, per unit of sqrt(exponent/2) (one when the exponent is 0).")
+      .Bind(&T::SetSpotSteps, &T::GetSpotSteps);
+    t.Integer("table_resolution", "TableResolution", 64)
+      .Between(8, 2048)
+      .Panel("Medium")
+      .Advanced()
+      .Doc("Resolution N of the N x N scattering table (computed once in double precision).")
+      .Bind(&T::SetTableResolution, &T::GetTableResolution);
+    t.Integer("march_steps", "MarchSteps", 0)
+      .Between(0, 65536)
+      .Panel("Medium")
+      .Advanced()
+      .Doc("0: the closed form; N > 0: brute-force ray marching with N samples (for comparisons).")
+      .Bind(&T::SetMarchSteps, &T::GetMarchSteps);
+    return t;
+  }();
+  return table;
+}
+
+//------------------------------------------------------------------------------
+vtkPlumeAirlightPass::vtkPlumeAirlightPass()
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    this->Scattering[c] = this->Absorption[c] = 0.0;
+  }
+  GetParameterTable().ApplyDefaults(this);
+}
+
+//------------------------------------------------------------------------------
+vtkPlumeAirlightPass::~vtkPlumeAirlightPass()
+{
+  // GL objects are released by the renderer (ReleaseGraphicsResources); the
+  // helper holds no context of its own.
+  delete this->Quad;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scattering: " << this->Scattering[0] << " " << this->Scattering[1] << " "
+     << this->Scattering[2] << "\n";
+  os << indent << "Absorption: " << this->Absorption[0] << " " << this->Absorption[1] << " "
+     << this->Absorption[2] << "\n";
+  os << indent << "IntensityScale: " << this->IntensityScale << "\n";
+  os << indent << "SpotSteps: " << this->SpotSteps << "\n";
+  os << indent << "TableResolution: " << this->TableResolution << "\n";
+  os << indent << "MarchSteps: " << this->MarchSteps << "\n";
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+bool SetCoefficients(double target[3], double r, double g, double b)
+{
+  const double in[3] = { r, g, b };
+  bool changed = false;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double v = std::isnan(in[c]) ? 0.0 : std::min(std::max(in[c], 0.0), 1e30);
+    changed = changed || v != target[c];
+    target[c] = v;
+  }
+  return changed;
+}
+}
+
+void vtkPlumeAirlightPass::SetScattering(double r, double g, double b)
+{
+  if (SetCoefficients(this->Scattering, r, g, b))
+  {
+    this->Modified();
+  }
+}
+
+void vtkPlumeAirlightPass::SetAbsorption(double r, double g, double b)
+{
+  if (SetCoefficients(this->Absorption, r, g, b))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeAirlightPass::HasMedium() const
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (this->Scattering[c] > 0.0 || this->Absorption[c] > 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w, int h)
+{
+  if (!this->ColorTexture)
+  {
+    this->ColorTexture = vtkTextureObject::New();
+    this->ColorTexture->SetContext(renWin);
+    this->ColorTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->ColorTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->ColorTexture->Allocate2D(w, h, 4, VTK_FLOAT);
+  }
+  this->ColorTexture->Resize(w, h);
+  if (!this->DepthTexture)
+  {
+    this->DepthTexture = vtkTextureObject::New();
+    this->DepthTexture->SetContext(renWin);
+    this->DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture->AllocateDepth(w, h, vtkTextureObject::Float32);
+  }
+  this->DepthTexture->Resize(w, h);
+  if (!this->FrameBuffer)
+  {
+    this->FrameBuffer = vtkOpenGLFramebufferObject::New();
+    this->FrameBuffer->SetContext(renWin);
+  }
+  if (!this->TableTexture || this->UploadedTableResolution != this->TableResolution)
+  {
+    const int n = this->TableResolution;
+    const std::vector<double>& table = GetScatteringTable(n);
+    std::vector<float> data(table.begin(), table.end());
+    if (!this->TableTexture)
+    {
+      this->TableTexture = vtkTextureObject::New();
+      this->TableTexture->SetContext(renWin);
+    }
+    this->TableTexture->SetMinificationFilter(vtkTextureObject::Linear);
+    this->TableTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+    this->TableTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->TableTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (!this->TableTexture->Create2DFromRaw(n, n, 2, VTK_FLOAT, data.data()))
+    {
+      vtkErrorMacro("Could not upload the " << n << "x" << n << " scattering table.");
+      return false;
+    }
+    this->UploadedTableResolution = n;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro("no delegate in vtkPlumeAirlightPass.");
+    return;
+  }
+  // Nothing to scatter or absorb: the scene as it is, no framebuffer, no pass.
+  if (!this->HasMedium())
+  {
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
+
+  vtkRenderer* r = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(r->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  int x, y, w, h;
+  r->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+  if (!this->UpdateResources(renWin, w, h))
+  {
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
+
+  // 1. The scene into our float colour + depth targets.
+  ostate->PushFramebufferBindings();
+  this->FrameBuffer->Bind();
+  this->FrameBuffer->AddColorAttachment(0, this->ColorTexture);
+  this->FrameBuffer->ActivateDrawBuffers(1);
+  this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
+  this->FrameBuffer->StartNonOrtho(w, h);
+  // A state naming our framebuffer: the camera pass then draws the viewport
+  // at (0, 0) of the w x h target, whatever the renderer's place in the window.
+  vtkRenderState inner(r);
+  inner.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  inner.SetFrameBuffer(this->FrameBuffer);
+  this->DelegatePass->Render(&inner);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  this->FrameBuffer->RemoveColorAttachments(1);
+  this->FrameBuffer->RemoveDepthAttachment();
+  ostate->PopFramebufferBindings();
+
+  // 2. The lights, in eye coordinates (the delegate has updated their geometry).
+  vtkCamera* camera = r->GetActiveCamera();
+  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+  auto toEye = [view](const double p[3], double w4) {
+    double in[4] = { p[0], p[1], p[2], w4 };
+    double out[4];
+    view->MultiplyPoint(in, out);
+    return glm::dvec3(out[0], out[1], out[2]);
+  };
+  std::vector<float> positions, intensities, axes, cosCones, exponents;
+  bool anySpot = false;
+  vtkLightCollection* lights = r->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (!light->GetSwitch() || !light->GetPositional() ||
+      static_cast<int>(cosCones.size()) >= MaximumLights)
+    {
+      continue;
+    }
+    double position[3], focal[3], color[3], attenuation[3];
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focal);
+    light->GetDiffuseColor(color);
+    light->GetAttenuationValues(attenuation);
+    double scale = light->GetIntensity() * this->IntensityScale;
+    if (attenuation[0] == 0.0 && attenuation[1] == 0.0 && attenuation[2] > 0.0)
+    {
+      scale /= attenuation[2];
+    }
+    const glm::dvec3 pe = toEye(position, 1.0);
+    const glm::dvec3 fe = toEye(focal, 1.0);
+    glm::dvec3 axis = fe - pe;
+    const double axisLength = glm::length(axis);
+    axis = axisLength > 0.0 ? axis / axisLength : glm::dvec3(0.0, 0.0, -1.0);
+    const bool spot = light->GetConeAngle() < 90.0;
+    anySpot = anySpot || spot;
+    for (int c = 0; c < 3; ++c)
+    {
+      positions.push_back(static_cast<float>(pe[c]));
+      intensities.push_back(static_cast<float>(scale * color[c]));
+      axes.push_back(static_cast<float>(axis[c]));
+    }
+    cosCones.push_back(
+      spot ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()))) : -2.0f);
+    exponents.push_back(static_cast<float>(light->GetExponent()));
+  }
+  const int numberOfLights = static_cast<int>(cosCones.size());
+
+  // 3. The program for this variant (lights count, spot lights or not).
+  std::ostringstream defines;
+  defines << "#define NUMBER_OF_LIGHTS " << std::max(numberOfLights, 1) << "\n";
+  std::set<std::string> features;
+  if (anySpot)
+  {
+    features.insert("SPOT");
+    defines << "#define HAS_SPOT\n";
+  }
+  if (this->MarchSteps > 0)
+  {
+    defines << "#define MARCH\n#define MARCH_STEPS " << this->MarchSteps << "\n";
+  }
+  const double kt0 = this->Scattering[0] + this->Absorption[0];
+  if (kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2])
+  {
+    defines << "#define GREY\n"; // one table look-up for the three channels
+  }
+  const std::string key = defines.str();
+  if (this->Quad && this->ProgramKey != key)
+  {
+    delete this->Quad;
+    this->Quad = nullptr;
+  }
+  if (!this->Quad)
+  {
+    const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeAirlightFS, features, defines.str());
+    this->Quad = new vtkOpenGLQuadHelper(
+      renWin, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
+    this->ProgramKey = key;
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+  }
+  vtkShaderProgram* program = this->Quad->Program;
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro("Could not build the airlight shader program.");
+    return;
+  }
+
+  // 4. Uniforms and the full-screen pass.
+  this->ColorTexture->Activate();
+  this->DepthTexture->Activate();
+  this->TableTexture->Activate();
+  program->SetUniformi("SceneColor", this->ColorTexture->GetTextureUnit());
+  program->SetUniformi("SceneDepth", this->DepthTexture->GetTextureUnit());
+  program->SetUniformi("Table", this->TableTexture->GetTextureUnit());
+  program->SetUniformi("TableSize", this->UploadedTableResolution);
+  const float origin[2] = { static_cast<float>(x), static_cast<float>(y) };
+  program->SetUniform2f("ViewportOrigin", origin);
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0));
+  inverse->Invert();
+  plume::SetUniformMatrix4x4(program, "InverseProjection", inverse->GetData());
+  program->SetUniformi("Perspective", camera->GetParallelProjection() ? 0 : 1);
+  float ks[3], kt[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    ks[c] = static_cast<float>(this->Scattering[c]);
+    kt[c] = static_cast<float>(this->Scattering[c] + this->Absorption[c]);
+  }
+  program->SetUniform3f("KappaS", ks);
+  program->SetUniform3f("KappaT", kt);
+  program->SetUniformi("NumberOfLights", numberOfLights);
+  if (this->MarchSteps > 0)
+  {
+    double ktMin = HUGE_VAL;
+    for (int c = 0; c < 3; ++c)
+    {
+      if (kt[c] > 0)
+      {
+        ktMin = std::min(ktMin, static_cast<double>(kt[c]));
+      }
+    }
+    program->SetUniformf("MarchFar", static_cast<float>(std::log(1e6) / ktMin));
+  }
+  if (numberOfLights > 0)
+  {
+    program->SetUniform3fv("LightPosition", numberOfLights, reinterpret_cast<const float(*)[3]>(positions.data()));
+    program->SetUniform3fv("LightI0", numberOfLights, reinterpret_cast<const float(*)[3]>(intensities.data()));
+    if (anySpot)
+    {
+      program->SetUniform3fv("LightAxis", numberOfLights, reinterpret_cast<const float(*)[3]>(axes.data()));
+      program->SetUniform1fv("LightCosCone", numberOfLights, cosCones.data());
+      program->SetUniform1fv("LightExponent", numberOfLights, exponents.data());
+      program->SetUniformi("SpotSteps", this->SpotSteps);
+    }
+  }
+
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglViewport(x, y, w, h);
+  ostate->vtkglScissor(x, y, w, h);
+  this->Quad->Render();
+  this->ColorTexture->Deactivate();
+  this->DepthTexture->Deactivate();
+  this->TableTexture->Deactivate();
+  vtkOpenGLCheckErrorMacro("failed after vtkPlumeAirlightPass::Render");
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  delete this->Quad;
+  this->Quad = nullptr;
+  this->ProgramKey.clear();
+  for (vtkTextureObject** t : { &this->ColorTexture, &this->DepthTexture, &this->TableTexture })
+  {
+    if (*t)
+    {
+      (*t)->Delete();
+      *t = nullptr;
+    }
+  }
+  this->UploadedTableResolution = 0;
+  if (this->FrameBuffer)
+  {
+    this->FrameBuffer->Delete();
+    this->FrameBuffer = nullptr;
+  }
+}

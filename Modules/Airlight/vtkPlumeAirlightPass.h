@@ -1,0 +1,183 @@
+/**
+ * @class   vtkPlumeAirlightPass
+ * @brief   light scattered by a homogeneous participating medium (haze, smoke, fog) from positional and spot lights (seed 001)
+ *
+ * A vtkRenderPass that wraps the scene's own passes (its delegate, e.g. a
+ * vtkRenderStepsPass), like VTK's vtkSSAOPass or vtkToneMappingPass: the
+ * delegate renders into a private float colour + depth framebuffer, then one
+ * full-screen pass writes, per pixel and RGB channel,
+ *
+ *   C = C_surface * exp(-kt * ds) + sum over lights of L_airlight,
+ *   L_airlight = integral_0^ds  ks/(4 pi) * I0 * w(x) / d(x)^2 * exp(-kt (x + d(x))) dx,
+ *
+ * x the distance along the view ray, ds the distance to the opaque surface
+ * (infinite where nothing was drawn: the medium fills space, so the
+ * background colour is fully extinguished and only airlight remains), d(x)
+ * the distance from the light, ks the scattering and ka the absorption
+ * coefficient, kt = ks + ka, I0 the light's radiant intensity and w the spot
+ * factor (1 for point lights). Isotropic phase function 1/(4 pi); single
+ * scattering; unshadowed (the light reaches every point of the medium).
+ *
+ * The integral in closed form (Sun et al. 2005, seed 001, derived afresh in
+ * Documentation/Airlight.md): with h the distance from the light to the ray's
+ * line and t = x - tc the position along the ray relative to the foot of the
+ * perpendicular, the integrand is a total derivative of
+ *   P_head(x) = ks I0/(2 pi) exp(-kt tc) H(m, tau) / (d - t)           (t <= 0)
+ *   P_tail(x) = ks I0/(2 pi) exp(-kt (x + d)) G(m, eps) / (t + d)      (t >= 0)
+ * with m = kt (t + d), tau = eps = h / (t + d) in [0, 1] and two smooth
+ * bounded functions H, G tabulated once in double precision on the CPU
+ * (GetScatteringTable) over the whole unbounded domain (m mapped to
+ * sqrt(m / (1 + m))): this is Sun's F(u, v) split at the foot of the perpendicular
+ * and normalised so that nothing overflows (no exp(+kt d)), nothing is
+ * divided by h (exact limits for gamma -> 0 and pi) and no arctan is
+ * evaluated. A point light costs two table look-ups per channel (four if
+ * the ray segment crosses the foot; a grey medium, kt equal in R, G and B,
+ * compiles a variant with one look-up for the three channels). A spot light's hard cone boundary is
+ * exact (ray-cone interval); its exponent weight pow(cos, e) is applied per
+ * sub-interval, SpotSteps * ceil(sqrt(e/2)) sub-intervals uniform in the
+ * angle seen from the light (one when e = 0, then exact).
+ *
+ * Lights: every switched-on positional vtkLight of the renderer (after the
+ * delegate has updated the light geometry, so head/camera lights work);
+ * directional lights have no source point and add no airlight. I0 =
+ * Intensity * DiffuseColor * IntensityScale, with inverse-square falloff
+ * (the closed form needs it); a light whose AttenuationValues are purely
+ * quadratic (0, 0, c2) is divided by c2, other attenuation polynomials are
+ * ignored for the airlight (VTK's default (1, 0, 0) is no falloff, which a
+ * point source in a medium cannot have). A cone angle below 90 degrees makes
+ * a spot light with VTK's rule (inside the cone w = pow(cos angle, exponent),
+ * outside 0). At most 8 lights are used.
+ *
+ * Skipped work: with ks = ka = 0 in every channel the delegate renders
+ * directly (no framebuffer, no pass). The table is built once per process
+ * and resolution and uploaded once per context.
+ *
+ * Limits: a light exactly on a view ray (the integral of 1/d^2 diverges)
+ * gives a huge but finite value, clamped to 1e20. No volumetric shadows yet
+ * (the shadowed path of seed 001 is not implemented).
+ */
+#ifndef vtkPlumeAirlightPass_h
+#define vtkPlumeAirlightPass_h
+
+#include "PlumeAirlightModule.h" // For export macro
+#include "vtkImageProcessingPass.h"
+
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkPlumeParameterTable;
+class vtkTextureObject;
+
+class PLUMEAIRLIGHT_EXPORT vtkPlumeAirlightPass : public vtkImageProcessingPass
+{
+public:
+  static vtkPlumeAirlightPass* New();
+  vtkTypeMacro(vtkPlumeAirlightPass, vtkImageProcessingPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The declaration of the pass's parameters (scene key "medium"). */
+  static const vtkPlumeParameterTable& GetParameterTable();
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * Scattering coefficient ks per RGB channel, per model unit of length,
+   * each clamped to [0, 1e30] (NaN counts as 0). Default (0, 0, 0).
+   */
+  void SetScattering(double r, double g, double b);
+  void SetScattering(const double rgb[3]) { this->SetScattering(rgb[0], rgb[1], rgb[2]); }
+  vtkGetVector3Macro(Scattering, double);
+  ///@}
+
+  ///@{
+  /**
+   * Absorption coefficient ka per RGB channel, per model unit of length,
+   * each clamped to [0, 1e30] (NaN counts as 0). Default (0, 0, 0).
+   */
+  void SetAbsorption(double r, double g, double b);
+  void SetAbsorption(const double rgb[3]) { this->SetAbsorption(rgb[0], rgb[1], rgb[2]); }
+  vtkGetVector3Macro(Absorption, double);
+  ///@}
+
+  ///@{
+  /** Multiplies every light's intensity for the airlight only (surface shading stays VTK's). Default 1. */
+  vtkSetClampMacro(IntensityScale, double, 0.0, 1e30);
+  vtkGetMacro(IntensityScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Sub-intervals along a spot light's cone for its exponent weight, per unit
+   * of sqrt(exponent / 2) (at most 256 in all; unused when the exponent is 0). Default 8.
+   */
+  vtkSetClampMacro(SpotSteps, int, 1, 256);
+  vtkGetMacro(SpotSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * For comparisons and benchmarks only: 0 uses the closed form; N > 0
+   * replaces it by brute-force ray marching of the same integral (midpoint
+   * rule, N samples per ray and light, rays that hit nothing stop where the
+   * transmittance is 1e-6), what a user would write in a shader. Default 0.
+   */
+  vtkSetClampMacro(MarchSteps, int, 0, 65536);
+  vtkGetMacro(MarchSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Resolution N of the N x N scattering table (64: 0.2 s to compute once per
+   * process, 256: 2.2 s on one core; the image error is the same, see
+   * Documentation/Airlight.md). Default 64.
+   */
+  vtkSetClampMacro(TableResolution, int, 8, 2048);
+  vtkGetMacro(TableResolution, int);
+  ///@}
+
+  /** True if the medium scatters or absorbs in some channel (else the pass only runs its delegate). */
+  bool HasMedium() const;
+
+  /**
+   * The scattering table for resolution n (computed once per n in double
+   * precision; shared, thread-safe): n*n pairs (H, G) row-major, row j =
+   * eps = j/(n-1), column i = p = i/(n-1), m = p^2/(1-p^2), storing
+   *   H = (1+m) * integral_0^1 exp(-m q) / (1 + eps^2 q^2) dq,
+   *   G = (1+m) * integral_0^inf exp(-m y) / (eps^2 + (1+y)^2) dy,
+   * each to an absolute accuracy of 1e-10 (adaptive Simpson). Column p = 1
+   * holds the limits H = 1, G = 1/(1+eps^2).
+   */
+  static const std::vector<double>& GetScatteringTable(int n);
+
+protected:
+  vtkPlumeAirlightPass();
+  ~vtkPlumeAirlightPass() override;
+
+  bool UpdateResources(vtkOpenGLRenderWindow* renWin, int w, int h);
+
+  double Scattering[3];
+  double Absorption[3];
+  double IntensityScale = 1.0;
+  int SpotSteps = 8;
+  int TableResolution = 64;
+  int MarchSteps = 0;
+
+  vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
+  vtkTextureObject* ColorTexture = nullptr;
+  vtkTextureObject* DepthTexture = nullptr;
+  vtkTextureObject* TableTexture = nullptr;
+  int UploadedTableResolution = 0;
+  vtkOpenGLQuadHelper* Quad = nullptr;
+  std::string ProgramKey; // the variant Quad was built for
+
+private:
+  vtkPlumeAirlightPass(const vtkPlumeAirlightPass&) = delete;
+  void operator=(const vtkPlumeAirlightPass&) = delete;
+};
+
+#endif

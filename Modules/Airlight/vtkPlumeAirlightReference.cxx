@@ -1,0 +1,327 @@
+#include "vtkPlumeAirlightReference.h"
+
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderer.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkPlumeAirlightReference);
+
+namespace
+{
+using RGB = std::array<double, 3>;
+
+RGB operator+(const RGB& a, const RGB& b)
+{
+  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
+}
+RGB operator-(const RGB& a, const RGB& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+RGB operator*(double s, const RGB& a)
+{
+  return { s * a[0], s * a[1], s * a[2] };
+}
+double MaxAbs(const RGB& a)
+{
+  return std::max({ std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2]) });
+}
+
+// Adaptive Simpson for an RGB-valued integrand (error: the largest channel's).
+template <class F>
+RGB Simpson(const F& f, double a, const RGB& fa, double m, const RGB& fm, double b, const RGB& fb,
+  const RGB& whole, double tol, int depth)
+{
+  const double lm = 0.5 * (a + m);
+  const double rm = 0.5 * (m + b);
+  const RGB flm = f(lm);
+  const RGB frm = f(rm);
+  const RGB left = ((m - a) / 6.0) * (fa + 4.0 * flm + fm);
+  const RGB right = ((b - m) / 6.0) * (fm + 4.0 * frm + fb);
+  const RGB delta = (left + right) - whole;
+  // (A non-finite difference cannot shrink by subdividing: stop there too.)
+  // The floor 1e-14 |left + right|: below it the difference is round-off and
+  // halving the tolerance further would only multiply evaluations.
+  const double floor = 1e-14 * MaxAbs(left + right);
+  if (depth <= 0 || MaxAbs(delta) <= 15.0 * std::max(tol, floor) || !std::isfinite(MaxAbs(delta)))
+  {
+    return (left + right) + (1.0 / 15.0) * delta;
+  }
+  return Simpson(f, a, fa, lm, flm, m, fm, left, 0.5 * tol, depth - 1) +
+    Simpson(f, m, fm, rm, frm, b, fb, right, 0.5 * tol, depth - 1);
+}
+
+template <class F>
+RGB Integrate(const F& f, double a, double b, double tol)
+{
+  const double m = 0.5 * (a + b);
+  const RGB fa = f(a), fm = f(m), fb = f(b);
+  return Simpson(f, a, fa, m, fm, b, fb, ((b - a) / 6.0) * (fa + 4.0 * fm + fb), tol, 50);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkPlumeAirlightReference::vtkPlumeAirlightReference() = default;
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightReference::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Lights: " << this->Lights.size() << "\n";
+  os << indent << "RelativeTolerance: " << this->RelativeTolerance << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightReference::SetLights(vtkRenderer* renderer)
+{
+  this->Lights.clear();
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (!light->GetSwitch() || !light->GetPositional() || this->Lights.size() >= 8)
+    {
+      continue;
+    }
+    Light l;
+    double focal[3], color[3], att[3];
+    light->GetTransformedPosition(l.Position);
+    light->GetTransformedFocalPoint(focal);
+    light->GetDiffuseColor(color);
+    light->GetAttenuationValues(att);
+    double scale = light->GetIntensity() * this->IntensityScale;
+    if (att[0] == 0.0 && att[1] == 0.0 && att[2] > 0.0)
+    {
+      scale /= att[2];
+    }
+    glm::dvec3 axis(focal[0] - l.Position[0], focal[1] - l.Position[1], focal[2] - l.Position[2]);
+    const double len = glm::length(axis);
+    axis = len > 0 ? axis / len : glm::dvec3(0, 0, -1);
+    for (int c = 0; c < 3; ++c)
+    {
+      l.Axis[c] = axis[c];
+      l.I0[c] = scale * color[c];
+    }
+    l.Spot = light->GetConeAngle() < 90.0;
+    l.CosCone = std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()));
+    l.Exponent = light->GetExponent();
+    this->Lights.push_back(l);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightReference::ComputeRay(
+  const double origin[3], const double direction[3], double distance, double airlight[3]) const
+{
+  const glm::dvec3 o(origin[0], origin[1], origin[2]);
+  const glm::dvec3 r = glm::normalize(glm::dvec3(direction[0], direction[1], direction[2]));
+  double ks[3], kt[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    ks[c] = this->Scattering[c];
+    kt[c] = this->Scattering[c] + this->Absorption[c];
+    airlight[c] = 0.0;
+  }
+  const bool infinite = std::isinf(distance);
+  for (const Light& light : this->Lights)
+  {
+    const glm::dvec3 L(light.Position[0], light.Position[1], light.Position[2]);
+    const glm::dvec3 axis(light.Axis[0], light.Axis[1], light.Axis[2]);
+    RGB coef;
+    for (int c = 0; c < 3; ++c)
+    {
+      coef[c] = ks[c] * light.I0[c] / (4.0 * vtkMath::Pi());
+    }
+    auto inside = [&](double x) {
+      if (!light.Spot)
+      {
+        return true;
+      }
+      const glm::dvec3 v = o + x * r - L;
+      const double len = glm::length(v);
+      return len > 0.0 && glm::dot(v, axis) >= light.CosCone * len;
+    };
+    auto f = [&](double x) -> RGB {
+      const glm::dvec3 v = o + x * r - L;
+      const double d2 = glm::dot(v, v);
+      const double d = std::sqrt(d2);
+      double w = 1.0;
+      if (light.Spot)
+      {
+        const double cosAngle = d > 0.0 ? glm::dot(v, axis) / d : 1.0;
+        w = cosAngle >= light.CosCone ? std::pow(std::max(cosAngle, 0.0), light.Exponent) : 0.0;
+      }
+      RGB value;
+      for (int c = 0; c < 3; ++c)
+      {
+        // exp of the sum: 1/d^2 and the extinction never meet as inf * 0.
+        value[c] = (d2 > 0.0 && w > 0.0) ? coef[c] * w * std::exp(-kt[c] * (x + d) - std::log(d2)) : 0.0;
+      }
+      return value;
+    };
+    // Infinite tail [X, inf): x = X + s / (1 - s).
+    auto mapped = [&](double X) {
+      return [&, X](double s) -> RGB {
+        if (s >= 1.0)
+        {
+          return { 0.0, 0.0, 0.0 };
+        }
+        const double w = 1.0 - s;
+        return (1.0 / (w * w)) * f(X + s / w);
+      };
+    };
+
+    // Breakpoints: the peak around the foot point, then the cone's boundaries.
+    const double tc = glm::dot(L - o, r);
+    const double h = glm::length(L - o - tc * r);
+    std::vector<double> breaks = { 0.0 };
+    for (double k : { -16.0, -4.0, -1.0, 0.0, 1.0, 4.0, 16.0 })
+    {
+      const double x = tc + k * h;
+      if (x > 0.0 && (infinite || x < distance))
+      {
+        breaks.push_back(x);
+      }
+    }
+    std::sort(breaks.begin(), breaks.end());
+    const double lastFinite = infinite ? breaks.back() : distance;
+    if (!infinite)
+    {
+      breaks.push_back(distance);
+    }
+    if (light.Spot)
+    {
+      // Sample the inside test on every piece (the infinite one in s) and bisect changes.
+      std::vector<double> extra;
+      auto xOf = [&](size_t piece, double u) {
+        if (piece + 1 < breaks.size())
+        {
+          return breaks[piece] + u * (breaks[piece + 1] - breaks[piece]);
+        }
+        return lastFinite + u / (1.0 - u); // the infinite tail, u < 1
+      };
+      const size_t pieces = infinite ? breaks.size() : breaks.size() - 1;
+      const int samples = 256;
+      for (size_t p = 0; p < pieces; ++p)
+      {
+        const double uMax = (p + 1 < breaks.size()) ? 1.0 : 1.0 - 1e-9;
+        double u0 = 0.0;
+        bool in0 = inside(xOf(p, u0));
+        for (int k = 1; k <= samples; ++k)
+        {
+          const double u1 = uMax * k / samples;
+          const bool in1 = inside(xOf(p, u1));
+          if (in1 != in0)
+          {
+            double a = u0, b = u1;
+            for (int it = 0; it < 80; ++it)
+            {
+              const double mid = 0.5 * (a + b);
+              (inside(xOf(p, mid)) == in0 ? a : b) = mid;
+            }
+            extra.push_back(xOf(p, 0.5 * (a + b)));
+          }
+          u0 = u1;
+          in0 = in1;
+        }
+      }
+      breaks.insert(breaks.end(), extra.begin(), extra.end());
+      std::sort(breaks.begin(), breaks.end());
+    }
+
+    // Tolerance from a coarse first estimate, then the adaptive pass.
+    auto piecewise = [&](double tol, bool coarse) {
+      RGB sum = { 0, 0, 0 };
+      for (size_t p = 0; p + 1 < breaks.size(); ++p)
+      {
+        const double a = breaks[p], b = breaks[p + 1];
+        if (b > a)
+        {
+          sum = sum + (coarse ? ((b - a) / 6.0) * (f(a) + 4.0 * f(0.5 * (a + b)) + f(b))
+                              : Integrate(f, a, b, tol));
+        }
+      }
+      if (infinite)
+      {
+        auto g = mapped(breaks.back());
+        sum = sum + (coarse ? (1.0 / 6.0) * (g(0.0) + 4.0 * g(0.5) + g(1.0)) : Integrate(g, 0.0, 1.0, tol));
+      }
+      return sum;
+    };
+    const RGB estimate = piecewise(0.0, true);
+    const double tol = this->RelativeTolerance * MaxAbs(estimate) + 1e-300;
+    const RGB value = piecewise(tol, false);
+    for (int c = 0; c < 3; ++c)
+    {
+      airlight[c] += value[c];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightReference::ComputeImage(vtkRenderer* renderer, int w, int h, const float* rgba,
+  const float* depth, std::vector<float>& out, int stride) const
+{
+  out.assign(4 * static_cast<size_t>(w) * h, std::numeric_limits<float>::quiet_NaN());
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(
+    camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0));
+  inverse->Invert();
+  auto unproject = [&](double nx, double ny, double nz) {
+    double in[4] = { nx, ny, nz, 1.0 };
+    double p[4];
+    inverse->MultiplyPoint(in, p);
+    return glm::dvec3(p[0] / p[3], p[1] / p[3], p[2] / p[3]);
+  };
+  double eye[3];
+  camera->GetPosition(eye);
+  const bool perspective = !camera->GetParallelProjection();
+  double kt[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    kt[c] = this->Scattering[c] + this->Absorption[c];
+  }
+  stride = std::max(stride, 1);
+  for (int j = 0; j < h; j += stride)
+  {
+    for (int i = 0; i < w; i += stride)
+    {
+      const size_t p = static_cast<size_t>(j) * w + i;
+      const double nx = (i + 0.5) / w * 2.0 - 1.0;
+      const double ny = (j + 0.5) / h * 2.0 - 1.0;
+      const glm::dvec3 nearPoint = unproject(nx, ny, -1.0);
+      const glm::dvec3 farPoint = unproject(nx, ny, 1.0);
+      const glm::dvec3 o = perspective ? glm::dvec3(eye[0], eye[1], eye[2]) : nearPoint;
+      const glm::dvec3 dir = farPoint - o;
+      double distance = std::numeric_limits<double>::infinity();
+      if (depth[p] < 1.0f)
+      {
+        distance = glm::length(unproject(nx, ny, 2.0 * depth[p] - 1.0) - o);
+      }
+      double air[3];
+      const double origin[3] = { o.x, o.y, o.z };
+      const double direction[3] = { dir.x, dir.y, dir.z };
+      this->ComputeRay(origin, direction, distance, air);
+      for (int c = 0; c < 3; ++c)
+      {
+        const double T = kt[c] == 0.0 ? 1.0 : std::exp(-kt[c] * distance);
+        out[4 * p + c] = static_cast<float>(rgba[4 * p + c] * T + air[c]);
+      }
+      out[4 * p + 3] = 1.0f;
+    }
+  }
+}

@@ -1,0 +1,103 @@
+/**
+ * @class   vtkPlumeAirlightReference
+ * @brief   double-precision CPU reference for vtkPlumeAirlightPass: the single-scattering integral integrated adaptively along each view ray
+ *
+ * Shares no code with the pass's shader or table: for each ray and light it
+ * integrates, per RGB channel,
+ *   L = integral_0^ds  ks/(4 pi) * I0 * w(x) / d(x)^2 * exp(-kt (x + d(x))) dx
+ * with adaptive Simpson quadrature (relative tolerance RelativeTolerance),
+ * split at the light's foot point and at +-h, +-4h, +-16h around it (the peak's
+ * width), at the spot cone's boundaries (found by sampling the inside test
+ * and bisection, not by solving the cone's quadratic), and over [X, inf) by
+ * the map x = X + s/(1-s) when the ray hits nothing. The lights follow the
+ * pass's documented rules (positional, switched on, I0 = Intensity *
+ * DiffuseColor * IntensityScale, divided by c2 for purely quadratic
+ * attenuation, VTK's spot cone and exponent), but are read in world
+ * coordinates.
+ *
+ * ComputeImage composes a whole frame the way the pass does:
+ * C_surface * exp(-kt ds) + airlight, from a read-back of the scene rendered
+ * without the pass (its colour and depth), unprojected in double precision
+ * with the camera's matrices.
+ */
+#ifndef vtkPlumeAirlightReference_h
+#define vtkPlumeAirlightReference_h
+
+#include "PlumeAirlightModule.h" // For export macro
+#include "vtkObject.h"
+
+#include <vector> // For std::vector
+
+class vtkRenderer;
+
+class PLUMEAIRLIGHT_EXPORT vtkPlumeAirlightReference : public vtkObject
+{
+public:
+  static vtkPlumeAirlightReference* New();
+  vtkTypeMacro(vtkPlumeAirlightReference, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Medium, as in vtkPlumeAirlightPass. Defaults (0, 0, 0), (0, 0, 0), 1. */
+  vtkSetVector3Macro(Scattering, double);
+  vtkGetVector3Macro(Scattering, double);
+  vtkSetVector3Macro(Absorption, double);
+  vtkGetVector3Macro(Absorption, double);
+  vtkSetMacro(IntensityScale, double);
+  vtkGetMacro(IntensityScale, double);
+  ///@}
+
+  ///@{
+  /** Relative tolerance of the adaptive quadrature. Default 1e-9. */
+  vtkSetMacro(RelativeTolerance, double);
+  vtkGetMacro(RelativeTolerance, double);
+  ///@}
+
+  /** Takes the renderer's switched-on positional lights (call after a render, so head/camera lights are placed). */
+  void SetLights(vtkRenderer* renderer);
+
+  /** Number of lights taken by SetLights. */
+  int GetNumberOfLights() const { return static_cast<int>(this->Lights.size()); }
+
+  /**
+   * Airlight (RGB) along the ray origin + x * direction (direction need not be
+   * unit length; x in world units along the unit direction), 0 <= x <= distance;
+   * distance may be +infinity.
+   */
+  void ComputeRay(const double origin[3], const double direction[3], double distance, double airlight[3]) const;
+
+  /**
+   * The expected frame: `rgba` and `depth` are the scene read back without the
+   * pass (w x h, bottom row first, window depth in [0, 1]); `out` gets
+   * RGB = rgb * exp(-kt ds) + airlight and A = 1 (w*h*4). Only every
+   * `stride`-th pixel along x and y is computed (others are left NaN).
+   */
+  void ComputeImage(vtkRenderer* renderer, int w, int h, const float* rgba, const float* depth,
+    std::vector<float>& out, int stride = 1) const;
+
+protected:
+  vtkPlumeAirlightReference();
+  ~vtkPlumeAirlightReference() override = default;
+
+  struct Light
+  {
+    double Position[3];
+    double Axis[3];
+    double I0[3];
+    bool Spot;
+    double CosCone;
+    double Exponent;
+  };
+
+  double Scattering[3] = { 0, 0, 0 };
+  double Absorption[3] = { 0, 0, 0 };
+  double IntensityScale = 1.0;
+  double RelativeTolerance = 1e-9;
+  std::vector<Light> Lights;
+
+private:
+  vtkPlumeAirlightReference(const vtkPlumeAirlightReference&) = delete;
+  void operator=(const vtkPlumeAirlightReference&) = delete;
+};
+
+#endif

@@ -1,0 +1,304 @@
+// `plume bench airlight`: vtkPlumeAirlightPass (closed form, unshadowed) on a
+// room (floor, back wall, a box, a sphere) lit by a point light and a spot
+// light (35 degrees, exponent 2) in a coloured haze, 512x512, against what a
+// user would write instead: brute-force ray marching of the same integral in
+// the same full-screen shader (the pass's MarchSteps mode: midpoint rule,
+// N samples per ray and light). Each job in its own process: frame time
+// (median after two warm-ups), peak memory, and RMS/max error against
+// vtkPlumeAirlightReference on a pixel lattice, in % of the airlight
+// image's range. Also the scene without the medium, for the pass's own cost.
+#include "plumeBenchmarks.h"
+#include "plumeTestSupport.h"
+
+#include "vtkPlumeAirlightPass.h"
+#include "vtkPlumeAirlightReference.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkFramebufferPass.h"
+#include "vtkLight.h"
+#include "vtkPixelBufferObject.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plume
+{
+namespace bench
+{
+namespace
+{
+std::vector<int> MarchSteps(bool quick)
+{
+  return quick ? std::vector<int>{ 16, 64 } : std::vector<int>{ 16, 32, 64, 128, 256, 512, 1024 };
+}
+
+void AddBox(vtkRenderer* renderer, const double b[6], double r, double g, double bl)
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(b);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(cube->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(r, g, bl);
+  renderer->AddActor(actor);
+}
+
+void BuildScene(vtkRenderer* renderer)
+{
+  const double floor[6] = { -5, 5, -0.1, 0, -4, 4 }, wall[6] = { -5, 5, 0, 5, -4.1, -4 },
+               box[6] = { -2.5, -1.2, 0, 1.6, -2, -0.8 };
+  AddBox(renderer, floor, 0.6, 0.6, 0.55);
+  AddBox(renderer, wall, 0.5, 0.55, 0.6);
+  AddBox(renderer, box, 0.8, 0.3, 0.2);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(1.6, 0.7, -1.0);
+  sphere->SetRadius(0.7);
+  sphere->SetThetaResolution(40);
+  sphere->SetPhiResolution(20);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.2, 0.5, 0.8);
+  renderer->AddActor(actor);
+
+  vtkNew<vtkLight> point;
+  point->SetLightTypeToSceneLight();
+  point->SetPositional(true);
+  point->SetConeAngle(180);
+  point->SetPosition(-4.5, 3.6, 2.5);
+  point->SetColor(1.0, 0.9, 0.7);
+  renderer->AddLight(point);
+  vtkNew<vtkLight> spot;
+  spot->SetLightTypeToSceneLight();
+  spot->SetPositional(true);
+  spot->SetPosition(2.5, 3.5, -1.5);
+  spot->SetFocalPoint(0.5, 0.0, -1.5);
+  spot->SetConeAngle(35);
+  spot->SetExponent(2);
+  spot->SetColor(0.7, 0.8, 1.0);
+  renderer->AddLight(spot);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.5, 1.6, 6.0);
+  camera->SetFocalPoint(-0.3, 1.2, -2.0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(50);
+  renderer->ResetCameraClippingRange();
+}
+
+void SetMedium(vtkPlumeAirlightPass* pass, bool grey)
+{
+  if (grey)
+  {
+    pass->SetScattering(0.2, 0.2, 0.2); // same kt in R, G, B: one look-up for the three
+    pass->SetAbsorption(0.05, 0.05, 0.05);
+  }
+  else
+  {
+    pass->SetScattering(0.25, 0.2, 0.15);
+    pass->SetAbsorption(0.02, 0.04, 0.08);
+  }
+  pass->SetIntensityScale(40.0);
+}
+
+// The frame through `pass` (nullptr: the plain scene) into an RGBA32F target.
+test::FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer, vtkRenderPass* pass)
+{
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkFramebufferPass> framebuffer;
+  framebuffer->SetDelegatePass(pass ? pass : steps.Get());
+  framebuffer->SetColorFormat(vtkTextureObject::Float32);
+  renderer->SetPass(framebuffer);
+  window->Render();
+  test::FloatImage image;
+  vtkTextureObject* textures[2] = { framebuffer->GetColorTexture(), framebuffer->GetDepthTexture() };
+  image.Width = static_cast<int>(textures[0]->GetWidth());
+  image.Height = static_cast<int>(textures[0]->GetHeight());
+  for (int k = 0; k < 2; ++k)
+  {
+    const int components = k == 0 ? 4 : 1;
+    vtkSmartPointer<vtkPixelBufferObject> pbo;
+    pbo.TakeReference(textures[k]->Download());
+    const size_t n = static_cast<size_t>(image.Width) * image.Height * components;
+    const auto* mapped = static_cast<const float*>(pbo->MapPackedBuffer());
+    (k == 0 ? image.RGBA : image.Depth).assign(mapped, mapped + n);
+    pbo->UnmapPackedBuffer();
+  }
+  framebuffer->ReleaseGraphicsResources(window);
+  renderer->SetPass(nullptr);
+  return image;
+}
+
+nlohmann::json RunJob(const Context& context, const std::string& job)
+{
+  const int size = context.Quick ? 128 : 512;
+  const int frames = context.Quick ? 3 : 7;
+  auto window = context.MakeWindow(size, size);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.1, 0.15, 0.3);
+  window->AddRenderer(renderer);
+  BuildScene(renderer);
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkPlumeAirlightPass> pass;
+  pass->SetDelegatePass(steps);
+  if (job != "opaque")
+  {
+    SetMedium(pass, job == "grey");
+  }
+  if (job.rfind("march:", 0) == 0)
+  {
+    pass->SetMarchSteps(std::stoi(job.substr(6)));
+  }
+  renderer->SetPass(pass);
+  std::vector<double> times;
+  for (int f = 0; f < frames + 2; ++f)
+  {
+    renderer->GetActiveCamera()->Azimuth(f % 2 ? 0.5 : -0.5); // a real re-render
+    const double t0 = Now();
+    window->Render();
+    window->WaitForCompletion();
+    if (f >= 2)
+    {
+      times.push_back(Now() - t0);
+    }
+  }
+  nlohmann::json result = { { "frame_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() } };
+  if (job == "opaque")
+  {
+    return result;
+  }
+
+  // Error against the reference on a lattice of pixels (every `stride`-th).
+  const int stride = context.Quick ? 4 : 16;
+  const test::FloatImage plain = RenderFloat(window, renderer, nullptr);
+  const test::FloatImage image = RenderFloat(window, renderer, pass);
+  vtkNew<vtkPlumeAirlightReference> reference;
+  reference->SetScattering(pass->GetScattering());
+  reference->SetAbsorption(pass->GetAbsorption());
+  reference->SetIntensityScale(pass->GetIntensityScale());
+  reference->SetLights(renderer);
+  std::vector<float> surface(plain.RGBA), expected, airlight;
+  for (float& v : surface)
+  {
+    v = std::min(std::max(v, 0.0f), 1.0f);
+  }
+  reference->ComputeImage(renderer, size, size, surface.data(), plain.Depth.data(), expected, stride);
+  const std::vector<float> black(surface.size(), 0.0f);
+  reference->ComputeImage(renderer, size, size, black.data(), plain.Depth.data(), airlight, stride);
+  double lo = HUGE_VAL, hi = -HUGE_VAL, sum = 0, worst = 0;
+  size_t count = 0;
+  for (size_t p = 0; p < expected.size() / 4; ++p)
+  {
+    if (std::isnan(expected[4 * p]))
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      lo = std::min(lo, double(airlight[4 * p + c]));
+      hi = std::max(hi, double(airlight[4 * p + c]));
+      const double d = std::fabs(double(image.RGBA[4 * p + c]) - expected[4 * p + c]);
+      sum += d * d;
+      worst = std::max(worst, d);
+      ++count;
+    }
+  }
+  const double range = hi > lo ? hi - lo : 1.0;
+  result["error"] = std::sqrt(sum / std::max<size_t>(count, 1)) / range;
+  result["error_max"] = worst / range;
+  result["error_pixels"] = count / 3;
+  return result;
+}
+
+std::vector<std::string> Jobs(bool quick)
+{
+  std::vector<std::string> jobs = { "opaque", "ours", "grey" };
+  for (int n : MarchSteps(quick))
+  {
+    jobs.push_back("march:" + std::to_string(n));
+  }
+  return jobs;
+}
+
+std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& results, bool quick)
+{
+  std::vector<nlohmann::json> lines;
+  const auto ours = results.find("ours");
+  const auto opaque = results.find("opaque");
+  if (ours == results.end())
+  {
+    return lines;
+  }
+  const std::string size = quick ? "128x128" : "512x512";
+  const double oursTime = ours->second.value("frame_s", 0.0);
+  const double oursError = ours->second.value("error", 0.0);
+  std::string matching;
+  for (int n : MarchSteps(quick))
+  {
+    const auto peer = results.find("march:" + std::to_string(n));
+    if (peer == results.end())
+    {
+      continue;
+    }
+    const double peerTime = peer->second.value("frame_s", 0.0);
+    const double peerError = peer->second.value("error", 0.0);
+    nlohmann::json line = { { "bench", "airlight" }, { "case", size + " point+spot, march " + std::to_string(n) },
+      { "ours_s", oursTime }, { "peer", "shader ray march, " + std::to_string(n) + " steps" },
+      { "peer_s", peerTime }, { "ratio", oursTime > 0 ? peerTime / oursTime : 0.0 }, { "error", oursError },
+      { "peer_error", peerError }, { "error_max", ours->second.value("error_max", 0.0) },
+      { "peer_error_max", peer->second.value("error_max", 0.0) },
+      { "peak_rss_mb", ours->second.value("peak_rss_mb", 0.0) },
+      { "peer_peak_rss_mb", peer->second.value("peak_rss_mb", 0.0) } };
+    if (matching.empty() && peerError <= oursError)
+    {
+      matching = std::to_string(n);
+      line["equal_error"] = true; // the fewest steps whose error is at most ours
+    }
+    lines.push_back(line);
+  }
+  const auto grey = results.find("grey");
+  if (grey != results.end())
+  {
+    const double greyTime = grey->second.value("frame_s", 0.0);
+    lines.push_back({ { "bench", "airlight" }, { "case", size + " grey medium (one look-up for R, G, B)" },
+      { "ours_s", greyTime }, { "peer", "ours, coloured medium (a look-up per channel)" }, { "peer_s", oursTime },
+      { "ratio", greyTime > 0 ? oursTime / greyTime : 0.0 }, { "error", grey->second.value("error", 0.0) },
+      { "error_max", grey->second.value("error_max", 0.0) },
+      { "peak_rss_mb", grey->second.value("peak_rss_mb", 0.0) },
+      { "peer_peak_rss_mb", ours->second.value("peak_rss_mb", 0.0) } });
+  }
+  if (opaque != results.end())
+  {
+    const double opaqueTime = opaque->second.value("frame_s", 0.0);
+    lines.push_back({ { "bench", "airlight" }, { "case", size + " cost of the pass" }, { "ours_s", oursTime },
+      { "peer", "the same scene without a medium" }, { "peer_s", opaqueTime },
+      { "ratio", oursTime > 0 ? opaqueTime / oursTime : 0.0 }, { "added_ms", 1e3 * (oursTime - opaqueTime) },
+      { "peak_rss_mb", ours->second.value("peak_rss_mb", 0.0) },
+      { "peer_peak_rss_mb", opaque->second.value("peak_rss_mb", 0.0) } });
+  }
+  return lines;
+}
+}
+
+void RegisterAirlight(std::map<std::string, Benchmark>& registry)
+{
+  Benchmark b;
+  b.Description = "airlight pass (closed form) vs brute-force shader ray marching of the same integral";
+  b.Jobs = Jobs;
+  b.Run = RunJob;
+  b.Report = Report;
+  registry["airlight"] = b;
+}
+}
+}
