@@ -11,6 +11,7 @@
 #include "plumeTestSupport.h"
 
 #include "vtkPlumeDatasetReader.h"
+#include "vtkPlumeInputValidation.h"
 
 #include "vtkCamera.h"
 #include "vtkLogger.h"
@@ -23,6 +24,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -31,13 +33,10 @@
 
 namespace
 {
-/** Parses "WxH". */
+/** Parses "WxH" with overflow checks (sscanf's %d wraps 4294967297 to 1). */
 bool ParseSize(const std::string& text, int& w, int& h)
 {
-  char x = 0;
-  char rest = 0;
-  return std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) == 3 && (x == 'x' || x == 'X') && w > 0 &&
-    h > 0 && w <= 16384 && h <= 16384;
+  return vtkPlumeInputValidation::ParseSize(text, 16384, w, h);
 }
 
 vtkSmartPointer<vtkRenderWindow> MakeWindow(plume::Backend backend, int w, int h)
@@ -183,6 +182,18 @@ int Bench(const std::string& name, bool quick, const std::string& job, plume::Ba
   const plume::bench::Benchmark& benchmark = it->second;
   if (!job.empty())
   {
+    // jobs are parsed by each benchmark without checks: only run the ones it lists
+    const auto known = benchmark.Jobs(quick);
+    if (std::find(known.begin(), known.end(), job) == known.end())
+    {
+      std::string names;
+      for (const auto& k : known)
+      {
+        names += (names.empty() ? "" : ", ") + k;
+      }
+      throw plume::SceneError("bench " + name + ": unknown job '" + job + "'" + (quick ? " (with --quick)" : "") +
+        " (known: " + names + ")");
+    }
     plume::bench::Context context;
     context.Quick = quick;
     context.MakeWindow = [backend](int w, int h) { return MakeWindow(backend, w, h); };

@@ -3,10 +3,23 @@
 #include "plumeSceneError.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace plume
 {
+namespace
+{
+// Scene numbers end up in 32-bit floats (shader uniforms, float arrays, the projection):
+// one beyond float range becomes Inf there, a denormal becomes 0 (then 1/x is Inf), and
+// the frame fills with NaN. Refused here, where the message can name the key.
+bool FloatRepresentable(double x)
+{
+  const double a = std::fabs(x);
+  return a == 0 || (a >= std::numeric_limits<float>::min() && a <= std::numeric_limits<float>::max());
+}
+const char* const FloatRange = " representable as a 32-bit float (0, or magnitude 1.2e-38 to 3.4e+38)";
+}
 
 Parameters::Parameters(const nlohmann::json& object, std::string where)
   : Json(object)
@@ -57,6 +70,10 @@ double Parameters::Number(const std::string& key, double fallback, double min, d
     std::ostringstream range;
     range << "a finite number in [" << min << ", " << max << "]";
     this->Fail(key, range.str(), *value);
+  }
+  if (!FloatRepresentable(x))
+  {
+    this->Fail(key, std::string("a number") + FloatRange, *value);
   }
   return x;
 }
@@ -150,6 +167,10 @@ std::array<double, N> Parameters::Vector(const std::string& key, const std::arra
       this->Fail(key, expected, *value);
     }
     out[i] = (*value)[i].template get<double>();
+    if (!FloatRepresentable(out[i]))
+    {
+      this->Fail(key, "a list of " + std::to_string(N) + " numbers" + FloatRange, *value);
+    }
   }
   return out;
 }

@@ -1,5 +1,7 @@
 #include "vtkPlumeDatasetReader.h"
 
+#include "vtkPlumeInputValidation.h"
+
 #include "vtkAppendFilter.h"
 #include "vtkCGNSReader.h"
 #include "vtkCallbackCommand.h"
@@ -306,23 +308,45 @@ public:
   vtkSmartPointer<vtkOutputWindow> Previous;
 
   void DisplayText(const char* text) override { this->Previous->DisplayText(text); }
-  void DisplayErrorText(const char* text) override { this->Previous->DisplayErrorText(text); }
+  // Errors of readers made inside the reader (vtkDataSetReader's vtkStructuredPointsReader,
+  // "Number of points don't match data values!") reach no observer either.
+  void DisplayErrorText(const char* text) override
+  {
+    this->Remember(text);
+    this->Previous->DisplayErrorText(text);
+  }
   void DisplayWarningText(const char* text) override { this->Previous->DisplayWarningText(text); }
   void DisplayDebugText(const char* text) override { this->Previous->DisplayDebugText(text); }
   void DisplayGenericWarningText(const char* text) override
   {
-    if (text && this->Caught.empty() && std::strstr(text, "Error reading"))
+    if (text && std::strstr(text, "Error reading"))
     {
-      std::string message = text;
-      // keep the last line (the message itself, not VTK's file and line)
-      while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-      {
-        message.pop_back();
-      }
-      const auto newline = message.rfind('\n');
-      this->Caught = newline == std::string::npos ? message : message.substr(newline + 1);
+      this->Remember(text);
     }
     this->Previous->DisplayGenericWarningText(text);
+  }
+
+private:
+  void Remember(const char* text)
+  {
+    if (!text || !this->Caught.empty())
+    {
+      return;
+    }
+    std::string message = text;
+    // keep the last line (the message itself, not VTK's file and line) without "vtkClass (0x...): "
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+    {
+      message.pop_back();
+    }
+    const auto newline = message.rfind('\n');
+    message = newline == std::string::npos ? message : message.substr(newline + 1);
+    const auto object = message.find("): ");
+    if (message.compare(0, 3, "vtk") == 0 && object != std::string::npos && message.find(" (0x") < object)
+    {
+      message = message.substr(object + 3);
+    }
+    this->Caught = message;
   }
 };
 
@@ -666,9 +690,11 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
         "' of " + path + "; supported: " + Join(vtkPlumeDatasetReader::SupportedExtensions());
     }
   }
-  if (!vtksys::SystemTools::FileExists(path))
+  // FIFOs and devices would block or never end; a NUL in the name would read another file.
+  std::string notRegular = vtkPlumeInputValidation::CheckRegularFile(path);
+  if (!notRegular.empty())
   {
-    return "file not found: " + path;
+    return notRegular;
   }
   if (kind == "cgns" && !LooksLikeCGNS(path))
   {
@@ -683,6 +709,11 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
       if (!vtksys::SystemTools::FileExists(qPath))
       {
         return "PLOT3D solution (Q) file not found: " + qPath;
+      }
+      notRegular = vtkPlumeInputValidation::CheckRegularFile(qPath);
+      if (!notRegular.empty())
+      {
+        return "PLOT3D solution (Q) file: " + notRegular;
       }
     }
     else
@@ -1009,6 +1040,25 @@ int vtkPlumeDatasetReader::RequestInformation(
       (vtkImageData::SafeDownCast(innerData) || vtkStructuredGrid::SafeDownCast(innerData) ||
         vtkRectilinearGrid::SafeDownCast(innerData)))
     {
+      // A header may announce any extent: refuse one whose points cannot fit before the
+      // reader allocates them (3 doubles of coordinates or values per point at least).
+      const int* we = innerInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+      double points = 1;
+      for (int a = 0; a < 3; ++a)
+      {
+        points *= std::max(0.0, double(we[2 * a + 1]) - double(we[2 * a]) + 1.0);
+      }
+      const std::string tooBig = vtkPlumeInputValidation::CheckMemory(points * 24.0,
+        "the extent [" + std::to_string(we[0]) + ", " + std::to_string(we[1]) + ", " + std::to_string(we[2]) +
+          ", " + std::to_string(we[3]) + ", " + std::to_string(we[4]) + ", " + std::to_string(we[5]) +
+          "] in " + path + " (" + Number(points) + " points)");
+      if (!tooBig.empty())
+      {
+        this->LastError = tooBig;
+        in.Reader = nullptr;
+        in.Key.clear();
+        return 0;
+      }
       outInfo->CopyEntry(innerInfo, vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
       if (innerInfo->Has(vtkDataObject::ORIGIN()))
       {
@@ -1119,9 +1169,10 @@ int vtkPlumeDatasetReader::RequestData(
     std::vector<vtkSmartPointer<vtkDataObject>> parts;
     for (size_t i = 0; i < entries.size(); ++i)
     {
-      if (!vtksys::SystemTools::FileExists(entries[i].File, true))
+      const std::string notRegular = vtkPlumeInputValidation::CheckRegularFile(entries[i].File);
+      if (!notRegular.empty())
       {
-        return fail("file not found: " + entries[i].File + " (listed in " + in.Path + ")");
+        return fail(notRegular + " (listed in " + in.Path + ")");
       }
       vtkNew<vtkXMLGenericDataObjectReader> reader;
       reader->SetFileName(entries[i].File.c_str());
@@ -1295,6 +1346,15 @@ int vtkPlumeDatasetReader::RequestData(
         }
       }
     }
+  }
+
+  // VTK's readers do not check connectivity or array lengths: every Plume filter and mapper
+  // downstream would read out of bounds, so a dataset that lies is refused here.
+  const std::string invalid = vtkPlumeInputValidation::CheckDataObject(data);
+  if (!invalid.empty())
+  {
+    return fail("the " + in.Kind + " reader gave inconsistent data from " + in.Path + " (corrupt file?): " +
+      invalid);
   }
 
   // Legacy STRUCTURED_POINTS comes as the old vtkStructuredPoints: hand out a plain image.

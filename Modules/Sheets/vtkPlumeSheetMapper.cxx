@@ -1,5 +1,7 @@
 #include "vtkPlumeSheetMapper.h"
 
+#include "vtkPlumeInputValidation.h"
+
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeShaderVariants.h"
@@ -281,6 +283,18 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     this->BlurRadius, this->Thickness, this->DensityScale, this->ThinSheet };
   if (!impl.HaveUpload || sig != impl.Uploaded || !impl.Buffer->GetHandle())
   {
+    // Readers hand out cells with point ids that do not exist: refuse them before reading any.
+    std::string invalid = vtkPlumeInputValidation::CheckCells(poly);
+    if (invalid.empty())
+    {
+      invalid = vtkPlumeInputValidation::CheckArrays(poly);
+    }
+    if (!invalid.empty())
+    {
+      vtkErrorMacro(<< "invalid input mesh, not drawn: " << invalid);
+      impl.HaveUpload = false;
+      return;
+    }
     vtkDataArray* dArr = NamedArray(poly, this->DensityArrayName, 1);
     vtkDataArray* bArr = NamedArray(poly, this->BlurArrayName, 1);
     vtkDataArray* tArr = NamedArray(poly, this->ThicknessArrayName, 1);
