@@ -325,7 +325,7 @@ int main(int argc, char* argv[])
   const std::string messages = vtkMessages->TakeMessages();
   if (!error.empty())
   {
-    std::cerr << "plume: error: " << error << "\n";
+    std::cerr << "plume: error: " << plume::OneLine(error) << "\n";
   }
   if (!messages.empty() && (status == 0 || std::getenv("PLUME_VERBOSE")))
   {

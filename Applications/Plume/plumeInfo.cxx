@@ -1,4 +1,5 @@
 #include "plumeInfo.h"
+#include "plumeSceneError.h"
 
 #include "vtkPlumeDatasetReader.h"
 
@@ -425,7 +426,7 @@ int RunInfo(vtkPlumeDatasetReader* reader, bool json, std::ostream& out, std::os
     // the command line's one error line and exit code for bad input
     err << "plume: error: "
         << (reader->GetLastError().empty() ? std::string("the reader produced no data")
-                                           : reader->GetLastError())
+                                           : OneLine(reader->GetLastError()))
         << "\n";
     return 2;
   }

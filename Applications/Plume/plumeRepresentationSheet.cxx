@@ -29,9 +29,9 @@ void BuildSheet(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   const double density = p.Number("density", 1.0, 0.0, 1e30);
   const double densityScale = p.Number("density_scale", 1.0, 0.0, 1e30);
   const std::string blurArray = p.String("blur_array", "");
-  const double blur = p.Number("blur", 0.05, 0.0, 1e30);
+  const double blur = p.Number("blur", 0.05, 0.0, vtkPlumeSheetMapper::MaximumSigma);
   const std::string thicknessArray = p.String("thickness_array", "");
-  const double thickness = p.Number("thickness", 0.05, 0.0, 1e30);
+  const double thickness = p.Number("thickness", 0.05, 0.0, vtkPlumeSheetMapper::MaximumSigma);
   const std::string absorptionArray = p.String("absorption_array", "");
   const auto smokeColor = p.Vector<3>("smoke_color", { 0, 0, 0 });
   const bool thin = p.Boolean("thin", false);

@@ -104,7 +104,10 @@ double PositiveEnv(const char* name, double fallback)
 
 std::string Megabytes(double bytes)
 {
-  return Num(std::round(bytes / (1 << 20))) + " MB";
+  std::ostringstream s;
+  s.precision(bytes < 1e3 * (1 << 20) ? 3 : 12);
+  s << bytes / (1 << 20) << " MB";
+  return s.str();
 }
 }
 
@@ -253,6 +256,12 @@ std::string vtkPlumeInputValidation::CheckArrays(vtkDataSet* data)
       }
     }
   }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeInputValidation::CheckFinitePoints(vtkDataSet* data)
+{
   if (auto* ps = vtkPointSet::SafeDownCast(data))
   {
     if (vtkPoints* points = ps->GetPoints())

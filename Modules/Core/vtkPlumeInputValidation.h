@@ -59,10 +59,17 @@ public:
   static std::string CheckCells(vtkDataSet* data);
 
   /**
-   * "" if every point array has one tuple per point, every cell array one
-   * per cell, and every point coordinate is finite.
+   * "" if every point array has one tuple per point and every cell array one
+   * per cell.
    */
   static std::string CheckArrays(vtkDataSet* data);
+
+  /**
+   * "" if every point coordinate of a point set is finite (not part of
+   * CheckDataObject: Plume's mappers and splatter skip NaN/Inf points with a
+   * warning, for callers that must refuse them instead).
+   */
+  static std::string CheckFinitePoints(vtkDataSet* data);
 
   /**
    * CheckCells and CheckArrays on a dataset or on every leaf of a composite

@@ -1,5 +1,6 @@
 #include "vtkPlumeDatasetReader.h"
 
+#include "vtkPlumeFormatCheck.h"
 #include "vtkPlumeInputValidation.h"
 
 #include "vtkAppendFilter.h"
@@ -696,6 +697,15 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
   {
     return notRegular;
   }
+  if (kind == "exodus")
+  {
+    // VTK's Exodus reader indexes points with the stored connectivity and reads cut files as zeros
+    const std::string corrupt = vtkPlumeFormatCheck::CheckNetCDFClassic(path);
+    if (!corrupt.empty())
+    {
+      return "corrupt Exodus II file " + path + ": " + corrupt;
+    }
+  }
   if (kind == "cgns" && !LooksLikeCGNS(path))
   {
     // The CGNS library exits the process on some files it cannot parse: check first.
@@ -1041,14 +1051,15 @@ int vtkPlumeDatasetReader::RequestInformation(
         vtkRectilinearGrid::SafeDownCast(innerData)))
     {
       // A header may announce any extent: refuse one whose points cannot fit before the
-      // reader allocates them (3 doubles of coordinates or values per point at least).
+      // reader allocates them (one byte per point, the least any point array takes; the
+      // renderers check their own, larger needs later).
       const int* we = innerInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
       double points = 1;
       for (int a = 0; a < 3; ++a)
       {
         points *= std::max(0.0, double(we[2 * a + 1]) - double(we[2 * a]) + 1.0);
       }
-      const std::string tooBig = vtkPlumeInputValidation::CheckMemory(points * 24.0,
+      const std::string tooBig = vtkPlumeInputValidation::CheckMemory(points,
         "the extent [" + std::to_string(we[0]) + ", " + std::to_string(we[1]) + ", " + std::to_string(we[2]) +
           ", " + std::to_string(we[3]) + ", " + std::to_string(we[4]) + ", " + std::to_string(we[5]) +
           "] in " + path + " (" + Number(points) + " points)");

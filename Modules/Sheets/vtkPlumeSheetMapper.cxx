@@ -344,10 +344,10 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
         out[a] = static_cast<float>(p[a] - impl.Centre[a]);
         out[3 + a] = static_cast<float>(std::min(d * rgb[a], 1e30));
       }
-      out[6] = static_cast<float>(std::min(Clean(bArr ? bArr->GetComponent(id, 0) : this->BlurRadius), 1e30));
+      out[6] = static_cast<float>(std::min(Clean(bArr ? bArr->GetComponent(id, 0) : this->BlurRadius), MaximumSigma));
       out[7] = this->ThinSheet
         ? 0.0f
-        : static_cast<float>(std::min(Clean(tArr ? tArr->GetComponent(id, 0) : this->Thickness), 1e30));
+        : static_cast<float>(std::min(Clean(tArr ? tArr->GetComponent(id, 0) : this->Thickness), MaximumSigma));
     };
     auto addTriangle = [&](vtkIdType i0, vtkIdType i1, vtkIdType i2) {
       float c[3][8];

@@ -249,7 +249,9 @@ def build(c):
     c.add("InfoVtiWholeExtentHuge", "error", ["info", c.derived("lies/office_image_extent.vti", "derived/office_image.vti",
           replace(b'WholeExtent="0 45 0 45 0 25"', b'WholeExtent="0 45000 0 45000 0 25000"'))],
           r"the extent \[0, 45000, 0, 45000, 0, 25000\] .* over the memory budget of 512 MB")
-    c.add("InfoVtiPieceExtentLie", "error", ["info", c.derived("lies/office_image_piece.vti", "derived/office_image.vti",
+    # Self-consistent after the lie (VTK reads the first 26 slices / the first 7 cells, all valid):
+    # nothing downstream can tell, so success is a correct outcome; never a crash.
+    c.add("InfoVtiPieceExtentLie", "survive", ["info", c.derived("lies/office_image_piece.vti", "derived/office_image.vti",
           replace(b'<Piece Extent="0 45 0 45 0 25"', b'<Piece Extent="0 45 0 45 0 99"'))], ERR_READ)
     c.add("InfoVtpNumberOfPointsLie", "error", ["info", c.derived("lies/sheet_npts.vtp", "derived/office_stream_sheet.vtp",
           replace(b'NumberOfPoints="24060"', b'NumberOfPoints="24"'))], ERR_READ)
@@ -257,7 +259,7 @@ def build(c):
           replace(b'NumberOfPolys="24000"', b'NumberOfPolys="99999999"'))], ERR_READ)
     c.add("InfoVtpOffsetLie", "error", ["info", c.derived("lies/sheet_offset.vtp", "derived/office_stream_sheet.vtp",
           replace(b'offset="193832"', b'offset="999999999"'))], ERR_READ)
-    c.add("InfoVtuNumberOfCellsLie", "error", ["info", c.derived("lies/fire_ncells.vtu", "classic/fire_ug.vtu",
+    c.add("InfoVtuNumberOfCellsLie", "survive", ["info", c.derived("lies/fire_ncells.vtu", "classic/fire_ug.vtu",
           lambda d: re.sub(rb'NumberOfCells="(\d+)"', b'NumberOfCells="7"', d, count=1))], ERR_READ)
     c.add("InfoVtuNumberOfPointsLie", "error", ["info", c.derived("lies/fire_npts.vtu", "classic/fire_ug.vtu",
           lambda d: re.sub(rb'NumberOfPoints="(\d+)"', b'NumberOfPoints="3"', d, count=1))], ERR_READ)
@@ -273,7 +275,7 @@ def build(c):
     for name, source, ext in truncations:
         for pct in (0, 1, 10, 50, 90, 99):
             p = c.derived("trunc/%s_%d.%s" % (name, pct, ext), source, truncate(pct / 100.0))
-            c.add("Truncated%s%d" % (name, pct), "error", ["info", p], ERR_READ + r"|unknown|not a|no data")
+            c.add("Truncated%s%d" % (name, pct), "error", ["info", p], ERR_READ + r"|corrupt Exodus II file .*(truncated file|too short)|not a|no data")
     # payload bit flips: garbage values, maybe garbage structure; never a crash or a second line
     for name, source, ext in truncations:
         for seed in (1, 2):
@@ -345,13 +347,16 @@ def build(c):
             scene["lights"] = [{"type": "headlight", "intensity": 1e300}]
         c.render(name, "error", c.scene("param_" + name, scene), expect)
     sheet = {"type": "sheet", "dataset": "s", "density": 0.05, "thickness": 0.02}
-    for key, value, expect in [("blur", 1e30, r"parameter 'blur' must be .*got 1e\+30"),
-                               ("density", 1e30, r"parameter 'density' must be .*got 1e\+30"),
-                               ("thickness", 1e25, r"parameter 'thickness' must be .*got 1e\+25"),
-                               ("density_scale", 1e-300, r"parameter 'density_scale' must be .*got 1e-300")]:
+    # sigmas are squared in float shaders: 1e18 and more gave a black frame
+    for key, value, kind, expect in [
+            ("blur", 1e30, "error", r"parameter 'blur' must be a finite number in \[0, 1e\+15\], got 1e\+30"),
+            ("thickness", 1e25, "error", r"parameter 'thickness' must be a finite number in \[0, 1e\+15\], got 1e\+25"),
+            ("density_scale", 1e-300, "error", r"parameter 'density_scale' must be .*got 1e-300"),
+            ("blur_max", 1e15, "ok", r"wrote"),  # the largest blur renders (the background: smoke spread to nothing)
+            ("density", 1e30, "ok", r"wrote")]:  # opaque absorbing smoke: a black sheet, the correct image
         rep = dict(sheet)
-        rep[key] = value
-        c.render("Sheet_" + key, "error", c.scene("sheet_" + key, {"datasets": {"s": {"path": "derived/office_stream_sheet.vtp"}},
+        rep[key.replace("_max", "")] = value
+        c.render("Sheet_" + key, kind, c.scene("sheet_" + key, {"datasets": {"s": {"path": "derived/office_stream_sheet.vtp"}},
                  "representations": [rep]}), expect)
     for name, camera, expect in [
         ("CameraFar", {"position": [1e300, 0, 0]}, r"camera: parameter 'position' must be .*got \[1e\+300,0,0\]"),

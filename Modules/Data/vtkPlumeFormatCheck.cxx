@@ -1,0 +1,312 @@
+#include "vtkPlumeFormatCheck.h"
+
+#include "vtksys/FStream.hxx"
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace
+{
+// A bounds-checked big-endian cursor over a file (netCDF classic is big-endian).
+class Cursor
+{
+public:
+  explicit Cursor(const std::string& path)
+    : File(path.c_str(), std::ios::in | std::ios::binary)
+  {
+    if (this->File)
+    {
+      this->File.seekg(0, std::ios::end);
+      this->Size = static_cast<uint64_t>(this->File.tellg());
+      this->File.seekg(0);
+    }
+  }
+  bool Good() const { return static_cast<bool>(this->File); }
+  uint64_t Size = 0;
+  uint64_t Position = 0;
+
+  bool Read(void* out, uint64_t n)
+  {
+    if (n > this->Size - this->Position)
+    {
+      return false;
+    }
+    this->File.read(static_cast<char*>(out), static_cast<std::streamsize>(n));
+    this->Position += n;
+    return static_cast<bool>(this->File);
+  }
+  bool Skip(uint64_t n)
+  {
+    if (n > this->Size - this->Position)
+    {
+      return false;
+    }
+    this->Position += n;
+    this->File.seekg(static_cast<std::streamoff>(this->Position));
+    return static_cast<bool>(this->File);
+  }
+  bool Seek(uint64_t at)
+  {
+    if (at > this->Size)
+    {
+      return false;
+    }
+    this->Position = at;
+    this->File.clear();
+    this->File.seekg(static_cast<std::streamoff>(at));
+    return static_cast<bool>(this->File);
+  }
+  bool U32(uint64_t& v)
+  {
+    unsigned char b[4];
+    if (!this->Read(b, 4))
+    {
+      return false;
+    }
+    v = (uint64_t(b[0]) << 24) | (uint64_t(b[1]) << 16) | (uint64_t(b[2]) << 8) | uint64_t(b[3]);
+    return true;
+  }
+  bool U64(uint64_t& v)
+  {
+    unsigned char b[8];
+    if (!this->Read(b, 8))
+    {
+      return false;
+    }
+    v = 0;
+    for (int i = 0; i < 8; ++i)
+    {
+      v = (v << 8) | b[i];
+    }
+    return true;
+  }
+
+private:
+  vtksys::ifstream File;
+};
+
+uint64_t TypeSize(uint64_t type)
+{
+  switch (type)
+  {
+    case 1: case 2: case 7: return 1; // byte, char, ubyte
+    case 3: case 8: return 2;         // short, ushort
+    case 4: case 5: case 9: return 4; // int, float, uint
+    case 6: case 10: case 11: return 8; // double, int64, uint64
+    default: return 0;
+  }
+}
+
+struct Variable
+{
+  std::string Name;
+  std::vector<uint64_t> Dims;
+  uint64_t Type = 0;
+  uint64_t Begin = 0;
+};
+}
+
+std::string vtkPlumeFormatCheck::CheckNetCDFClassic(const std::string& path)
+{
+  Cursor in(path);
+  if (!in.Good())
+  {
+    return std::string();
+  }
+  char magic[4] = {};
+  if (in.Size < 4 || !in.Read(magic, 4) || magic[0] != 'C' || magic[1] != 'D' || magic[2] != 'F')
+  {
+    // not netCDF classic: an HDF5-based file or not netCDF at all (its reader says so)
+    return in.Size < 8 ? "the file is " + std::to_string(in.Size) + " bytes long, too short for any netCDF header"
+                       : std::string();
+  }
+  const int version = magic[3];
+  if (version != 1 && version != 2 && version != 5)
+  {
+    return "unknown netCDF classic version " + std::to_string(version) + " in the header";
+  }
+  const bool big = version == 5;     // CDF-5: 64-bit counts
+  const bool offset64 = version != 1; // CDF-2 and CDF-5: 64-bit offsets
+  auto count = [&](uint64_t& v) { return big ? in.U64(v) : in.U32(v); };
+  const std::string truncated = "the netCDF header is cut short (truncated file?)";
+
+  uint64_t numrecs = 0;
+  if (!count(numrecs))
+  {
+    return truncated;
+  }
+  if (numrecs == (big ? ~uint64_t(0) : 0xFFFFFFFFu))
+  {
+    numrecs = 0; // streaming: unknown number of records
+  }
+  auto name = [&](std::string& out) {
+    uint64_t n = 0;
+    if (!count(n) || n > in.Size - in.Position)
+    {
+      return false;
+    }
+    out.resize(static_cast<size_t>(n));
+    return in.Read(&out[0], n) && in.Skip((4 - n % 4) % 4);
+  };
+  // a list: tag then element count, each count bounded by the bytes left
+  auto list = [&](uint64_t expectedTag, uint64_t& n) {
+    uint64_t tag = 0;
+    if (!in.U32(tag) || !count(n))
+    {
+      return false;
+    }
+    if (tag == 0 && n == 0)
+    {
+      return true;
+    }
+    return tag == expectedTag && n <= (in.Size - in.Position) / 4;
+  };
+  auto attributes = [&]() {
+    uint64_t n = 0;
+    if (!list(0x0C, n))
+    {
+      return false;
+    }
+    for (uint64_t i = 0; i < n; ++i)
+    {
+      std::string attr;
+      uint64_t type = 0, values = 0;
+      if (!name(attr) || !in.U32(type) || !count(values) || TypeSize(type) == 0)
+      {
+        return false;
+      }
+      const uint64_t bytes = values * TypeSize(type);
+      if (values > in.Size || !in.Skip(bytes + (4 - bytes % 4) % 4))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+
+  uint64_t ndims = 0;
+  if (!list(0x0A, ndims))
+  {
+    return truncated + " or corrupt (dimension list)";
+  }
+  std::vector<uint64_t> dimLength(static_cast<size_t>(ndims));
+  std::map<std::string, uint64_t> dimByName;
+  for (uint64_t i = 0; i < ndims; ++i)
+  {
+    std::string dim;
+    if (!name(dim) || !count(dimLength[i]))
+    {
+      return truncated + " (dimension " + std::to_string(i) + ")";
+    }
+    dimByName[dim] = dimLength[i];
+  }
+  if (!attributes())
+  {
+    return truncated + " or corrupt (global attributes)";
+  }
+  uint64_t nvars = 0;
+  if (!list(0x0B, nvars))
+  {
+    return truncated + " or corrupt (variable list)";
+  }
+  std::vector<Variable> vars(static_cast<size_t>(nvars));
+  for (auto& var : vars)
+  {
+    uint64_t rank = 0;
+    if (!name(var.Name) || !count(rank) || rank > 1024)
+    {
+      return truncated + " or corrupt (variables)";
+    }
+    for (uint64_t r = 0; r < rank; ++r)
+    {
+      uint64_t id = 0;
+      if (!count(id))
+      {
+        return truncated + " (variable '" + var.Name + "')";
+      }
+      if (id >= ndims)
+      {
+        return "variable '" + var.Name + "' names dimension " + std::to_string(id) + " of " + std::to_string(ndims);
+      }
+      var.Dims.push_back(id);
+    }
+    uint64_t vsize = 0;
+    if (!attributes() || !in.U32(var.Type) || !count(vsize) ||
+      !(offset64 ? in.U64(var.Begin) : in.U32(var.Begin)) || TypeSize(var.Type) == 0)
+    {
+      return truncated + " or corrupt (variable '" + var.Name + "')";
+    }
+  }
+
+  // every variable's data inside the file
+  auto isRecord = [&](const Variable& v) { return !v.Dims.empty() && dimLength[v.Dims[0]] == 0; };
+  uint64_t recordSize = 0;
+  for (const auto& v : vars)
+  {
+    if (isRecord(v))
+    {
+      double bytes = double(TypeSize(v.Type));
+      for (size_t d = 1; d < v.Dims.size(); ++d)
+      {
+        bytes *= double(dimLength[v.Dims[d]]);
+      }
+      recordSize += static_cast<uint64_t>(bytes) + (4 - static_cast<uint64_t>(bytes) % 4) % 4;
+    }
+  }
+  for (const auto& v : vars)
+  {
+    double bytes = double(TypeSize(v.Type));
+    for (size_t d = isRecord(v) ? 1 : 0; d < v.Dims.size(); ++d)
+    {
+      bytes *= double(dimLength[v.Dims[d]]);
+    }
+    const double end = double(v.Begin) + (isRecord(v) && numrecs > 0 ? double(numrecs - 1) * double(recordSize) : 0.0) +
+      (isRecord(v) && numrecs == 0 ? 0.0 : bytes);
+    if (end > double(in.Size))
+    {
+      return "variable '" + v.Name + "' ends at byte " + std::to_string(static_cast<unsigned long long>(end)) +
+        " but the file has " + std::to_string(in.Size) + " bytes (truncated file?)";
+    }
+  }
+
+  // Exodus II: element connectivity must name existing nodes (1-based)
+  auto nodes = dimByName.find("num_nodes");
+  if (nodes == dimByName.end())
+  {
+    return std::string();
+  }
+  for (const auto& v : vars)
+  {
+    if (v.Name.compare(0, 7, "connect") != 0 || isRecord(v) || (v.Type != 4 && v.Type != 10))
+    {
+      continue;
+    }
+    uint64_t n = 1;
+    for (uint64_t d : v.Dims)
+    {
+      n *= dimLength[d];
+    }
+    if (!in.Seek(v.Begin))
+    {
+      return "variable '" + v.Name + "' starts beyond the end of the file";
+    }
+    for (uint64_t i = 0; i < n; ++i)
+    {
+      uint64_t id = 0;
+      if (!(v.Type == 4 ? in.U32(id) : in.U64(id)))
+      {
+        return "variable '" + v.Name + "' is cut short (truncated file?)";
+      }
+      const int64_t value = v.Type == 4 ? int64_t(int32_t(uint32_t(id))) : int64_t(id);
+      if (value < 1 || uint64_t(value) > nodes->second)
+      {
+        return "element connectivity '" + v.Name + "' entry " + std::to_string(i) + " names node " +
+          std::to_string(value) + ", but the file has " + std::to_string(nodes->second) +
+          " nodes (valid 1 to " + std::to_string(nodes->second) + ")";
+      }
+    }
+  }
+  return std::string();
+}

@@ -1,0 +1,38 @@
+/**
+ * @class   vtkPlumeFormatCheck
+ * @brief   structural checks of file formats whose VTK readers crash on corrupt input
+ *
+ * Some of VTK 9.1's readers trust their files: the Exodus II reader indexes
+ * its point array with the element connectivity as stored, so one flipped
+ * bit in a `connect` variable is a segmentation fault, and a truncated file
+ * reads as zeros. vtkPlumeDatasetReader runs these checks before handing a
+ * file to such a reader. Each returns "" when the file is sound, else one
+ * sentence naming the problem and the offending value.
+ *
+ * Covered: netCDF classic files (CDF-1, CDF-2 and CDF-5; Exodus II's format):
+ * the header is parsed with every count bounded by the file length, every
+ * variable's data must lie inside the file, and for Exodus II every
+ * element connectivity entry (`connect*`) must name a node in
+ * [1, num_nodes]. Exodus files stored as HDF5 (netCDF-4) are not checked.
+ */
+#ifndef vtkPlumeFormatCheck_h
+#define vtkPlumeFormatCheck_h
+
+#include "PlumeDataModule.h"  // For export macro
+#include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
+
+#include <string> // For std::string
+
+class PLUMEDATA_EXPORT VTK_WRAPEXCLUDE vtkPlumeFormatCheck
+{
+public:
+  /**
+   * "" if `path` is a sound netCDF classic file (or not a netCDF classic file
+   * at all: HDF5-based files are left to their library); for Exodus II data
+   * (a `num_nodes` dimension) also checks the element connectivity.
+   */
+  static std::string CheckNetCDFClassic(const std::string& path);
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkPlumeFormatCheck.h
