@@ -706,6 +706,15 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
       return "corrupt Exodus II file " + path + ": " + corrupt;
     }
   }
+  if (kind == "ensight")
+  {
+    // VTK's EnSight reader reads past the end of a cut geometry file (SEGV)
+    const std::string corrupt = vtkPlumeFormatCheck::CheckEnSightGold(path);
+    if (!corrupt.empty())
+    {
+      return "corrupt EnSight case " + path + ": " + corrupt;
+    }
+  }
   if (kind == "cgns" && !LooksLikeCGNS(path))
   {
     // The CGNS library exits the process on some files it cannot parse: check first.

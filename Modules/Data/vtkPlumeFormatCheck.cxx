@@ -1,6 +1,10 @@
 #include "vtkPlumeFormatCheck.h"
 
 #include "vtksys/FStream.hxx"
+#include "vtksys/SystemTools.hxx"
+
+#include <cstring>
+#include <sstream>
 
 #include <cstdint>
 #include <map>
@@ -309,4 +313,218 @@ std::string vtkPlumeFormatCheck::CheckNetCDFClassic(const std::string& path)
     }
   }
   return std::string();
+}
+
+namespace
+{
+// Nodes per element of EnSight Gold's fixed-size element types ("g_" variants alike).
+int NodesPerElement(std::string type)
+{
+  if (type.compare(0, 2, "g_") == 0)
+  {
+    type = type.substr(2);
+  }
+  static const std::map<std::string, int> sizes = { { "point", 1 }, { "bar2", 2 }, { "bar3", 3 },
+    { "tria3", 3 }, { "tria6", 6 }, { "quad4", 4 }, { "quad8", 8 }, { "tetra4", 4 }, { "tetra10", 10 },
+    { "pyramid5", 5 }, { "pyramid13", 13 }, { "penta6", 6 }, { "penta15", 15 }, { "hexa8", 8 },
+    { "hexa20", 20 } };
+  auto it = sizes.find(type);
+  return it == sizes.end() ? 0 : it->second;
+}
+
+std::string Trim(const char* text, size_t n)
+{
+  std::string s(text, strnlen(text, n));
+  const auto b = s.find_first_not_of(" \t\r\n");
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+}
+
+std::string vtkPlumeFormatCheck::CheckEnSightGold(const std::string& casePath)
+{
+  // the geometry file named by the case file ("model: [ts] [fs] name")
+  vtksys::ifstream caseFile(casePath.c_str());
+  std::string line, model;
+  while (caseFile && std::getline(caseFile, line))
+  {
+    if (line.compare(0, 6, "model:") == 0)
+    {
+      std::istringstream words(line.substr(6));
+      std::string word;
+      while (words >> word)
+      {
+        model = word; // the last word (time and file set numbers come first)
+      }
+    }
+  }
+  if (model.empty() || model.find('*') != std::string::npos)
+  {
+    return std::string();
+  }
+  std::string geometry = model;
+  if (!vtksys::SystemTools::FileIsFullPath(geometry))
+  {
+    geometry = vtksys::SystemTools::GetFilenamePath(casePath) + "/" + model;
+    if (vtksys::SystemTools::GetFilenamePath(casePath).empty())
+    {
+      geometry = model;
+    }
+  }
+  Cursor in(geometry);
+  if (!in.Good())
+  {
+    return "cannot open its geometry file " + geometry;
+  }
+  char text[81] = {};
+  auto word = [&](std::string& out) {
+    if (!in.Read(text, 80))
+    {
+      return false;
+    }
+    out = Trim(text, 80);
+    return true;
+  };
+  std::string head;
+  if (!word(head) || head.find("Binary") == std::string::npos)
+  {
+    return std::string(); // ASCII: VTK's parser checks as it reads
+  }
+  if (head.find("Fortran") != std::string::npos)
+  {
+    return std::string();
+  }
+  const std::string where = "geometry file " + geometry;
+  const std::string cut = where + " is cut short (truncated file?)";
+  std::string desc, nodeIds, elementIds;
+  if (!word(desc) || !word(desc) || !word(nodeIds) || !word(elementIds))
+  {
+    return cut;
+  }
+  const bool nodeIdsStored = nodeIds.find("given") != std::string::npos || nodeIds.find("ignore") != std::string::npos;
+  const bool elementIdsStored =
+    elementIds.find("given") != std::string::npos || elementIds.find("ignore") != std::string::npos;
+  // 4-byte integers, little- or big-endian: the one giving plausible counts
+  int order = 0; // 0 unknown, 1 little, 2 big
+  auto integer = [&](int64_t& v) {
+    unsigned char b[4];
+    if (!in.Read(b, 4))
+    {
+      return false;
+    }
+    const int32_t little = int32_t(uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24);
+    const int32_t bigEndian = int32_t(uint32_t(b[3]) | uint32_t(b[2]) << 8 | uint32_t(b[1]) << 16 | uint32_t(b[0]) << 24);
+    if (order == 0)
+    {
+      order = (little >= 0 && uint64_t(little) <= in.Size) ? 1 : 2;
+    }
+    v = order == 1 ? little : bigEndian;
+    return true;
+  };
+  std::string key;
+  if (!word(key))
+  {
+    return cut;
+  }
+  if (key.compare(0, 7, "extents") == 0)
+  {
+    if (!in.Skip(24) || !word(key))
+    {
+      return cut;
+    }
+  }
+  while (true)
+  {
+    if (key != "part")
+    {
+      return where + ": expected 'part', found '" + key + "'";
+    }
+    int64_t part = 0, nodes = 0;
+    std::string kind;
+    if (!integer(part) || !word(desc) || !word(kind))
+    {
+      return cut;
+    }
+    if (kind.compare(0, 11, "coordinates") != 0)
+    {
+      return std::string(); // structured "block" parts: not checked
+    }
+    if (!integer(nodes) || nodes < 0 || uint64_t(nodes) > in.Size / 12)
+    {
+      return where + ": part " + std::to_string(part) + " claims " + std::to_string(nodes) +
+        " nodes, more than the file can hold";
+    }
+    if (!in.Skip(uint64_t(nodes) * (nodeIdsStored ? 16 : 12)))
+    {
+      return cut + " (coordinates of part " + std::to_string(part) + ")";
+    }
+    // element blocks until the next part or the end of the file
+    while (true)
+    {
+      if (in.Position == in.Size)
+      {
+        return std::string();
+      }
+      if (!word(key))
+      {
+        return cut;
+      }
+      if (key == "part")
+      {
+        break;
+      }
+      if (key.compare(0, 6, "nfaced") == 0 || key.compare(0, 8, "g_nfaced") == 0)
+      {
+        return std::string(); // polyhedra: not checked
+      }
+      const bool nsided = key.compare(0, 6, "nsided") == 0 || key.compare(0, 8, "g_nsided") == 0;
+      const int per = nsided ? 0 : NodesPerElement(key);
+      if (!nsided && per == 0)
+      {
+        return where + ": unknown element type '" + key + "' in part " + std::to_string(part);
+      }
+      int64_t elements = 0;
+      if (!integer(elements) || elements < 0 || uint64_t(elements) > in.Size / 4)
+      {
+        return where + ": part " + std::to_string(part) + " claims " + std::to_string(elements) + " '" + key +
+          "' elements, more than the file can hold";
+      }
+      if (elementIdsStored && !in.Skip(uint64_t(elements) * 4))
+      {
+        return cut + " (element ids of part " + std::to_string(part) + ")";
+      }
+      uint64_t ids = uint64_t(elements) * per;
+      if (nsided)
+      {
+        ids = 0;
+        for (int64_t e = 0; e < elements; ++e)
+        {
+          int64_t n = 0;
+          if (!integer(n) || n < 0)
+          {
+            return cut + " (nsided counts of part " + std::to_string(part) + ")";
+          }
+          ids += uint64_t(n);
+        }
+      }
+      if (ids > (in.Size - in.Position) / 4)
+      {
+        return cut + " ('" + key + "' connectivity of part " + std::to_string(part) + ")";
+      }
+      for (uint64_t i = 0; i < ids; ++i)
+      {
+        int64_t id = 0;
+        if (!integer(id))
+        {
+          return cut;
+        }
+        if (id < 1 || id > nodes)
+        {
+          return where + ": a '" + key + "' element of part " + std::to_string(part) + " names node " +
+            std::to_string(id) + ", but the part has " + std::to_string(nodes) + " nodes (valid 1 to " +
+            std::to_string(nodes) + ")";
+        }
+      }
+    }
+  }
 }

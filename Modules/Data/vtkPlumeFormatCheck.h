@@ -14,6 +14,7 @@
  * variable's data must lie inside the file, and for Exodus II every
  * element connectivity entry (`connect*`) must name a node in
  * [1, num_nodes]. Exodus files stored as HDF5 (netCDF-4) are not checked.
+ * EnSight Gold C-binary geometry: see CheckEnSightGold().
  */
 #ifndef vtkPlumeFormatCheck_h
 #define vtkPlumeFormatCheck_h
@@ -32,6 +33,16 @@ public:
    * (a `num_nodes` dimension) also checks the element connectivity.
    */
   static std::string CheckNetCDFClassic(const std::string& path);
+
+  /**
+   * "" if the geometry file of an EnSight Gold case (C Binary, unstructured
+   * parts) is sound: every part's coordinates and element blocks lie inside
+   * the file and every element names a node of its part (VTK's reader reads
+   * past the end of a cut file and indexes with corrupt ids: SEGV).
+   * ASCII and Fortran-binary geometry, structured ("block") parts, `nfaced`
+   * elements and time-series geometry (wildcards) are not checked ("").
+   */
+  static std::string CheckEnSightGold(const std::string& casePath);
 };
 
 #endif

@@ -276,6 +276,36 @@ def build(c):
         for pct in (0, 1, 10, 50, 90, 99):
             p = c.derived("trunc/%s_%d.%s" % (name, pct, ext), source, truncate(pct / 100.0))
             c.add("Truncated%s%d" % (name, pct), "error", ["info", p], ERR_READ + r"|corrupt Exodus II file .*(truncated file|too short)|not a|no data")
+    # EnSight Gold: VTK's reader read past the end of a cut geometry file (SEGV)
+    def ensight(name, geo_edit=None, vel_edit=None):
+        folder = "ensight/" + name
+        for f in os.listdir(os.path.join(DATA, "ensight_cylinder_re35")):
+            if f.endswith(".md"):
+                continue
+            edit = geo_edit if f.endswith(".geo") else vel_edit if f.endswith(".vel") else None
+            c.derived(folder + "/" + f, "ensight_cylinder_re35/" + f, edit or (lambda d: d))
+        return c.path(folder + "/cylinder_Re35.case")
+    for pct in (1, 10, 50, 90, 99):
+        c.add("TruncatedEnSightGeometry%d" % pct, "error", ["info", ensight("geo%d" % pct, truncate(pct / 100.0))],
+              r"corrupt EnSight case .*geometry file .*cylinder_Re35\.geo( is cut short \(truncated file\?\)|: part 4 claims 14831 nodes, more than the file can hold)")
+    c.add("TruncatedEnSightVariable", "error", ["info", ensight("vel50", None, truncate(0.5))],
+          r"the ensight reader could not read all of .*cylinder_Re35\.case \(truncated or corrupt\?\): Read failed")
+    def bad_quad(data):
+        import struct
+        o = 80 * 5  # header words; then part, number, description, 'coordinates', count, xyz
+        o += 80 + 4 + 80 + 80
+        nodes = struct.unpack("<i", data[o:o + 4])[0]
+        o += 4 + 12 * nodes
+        assert data[o:o + 5] == b"tria3"
+        o += 80 + 4 + 12 * struct.unpack("<i", data[o + 80:o + 84])[0]
+        assert data[o:o + 5] == b"quad4"
+        o += 80 + 4
+        return data[:o] + struct.pack("<i", 999999) + data[o + 4:]
+    c.add("EnSightNodeIdTooLarge", "error", ["info", ensight("badquad", bad_quad)],
+          r"corrupt EnSight case .*: a 'quad4' element of part 4 names node 999999, but the part has 14831 nodes \(valid 1 to 14831\)")
+    for seed in (1, 2, 3, 4):
+        c.add("BitFlipEnSightGeometry%d" % seed, "survive", ["info", ensight("flip%d" % seed, flip(seed, 8, 0.0))])
+
     # payload bit flips: garbage values, maybe garbage structure; never a crash or a second line
     for name, source, ext in truncations:
         for seed in (1, 2):
