@@ -10,6 +10,7 @@ packages=(
   xvfb xauth                        # private X server for the test suite
   nlohmann-json3-dev libcli11-dev libopenexr-dev libglm-dev
   libgtest-dev libbenchmark-dev
+  clang-14 libclang-rt-14-dev libfuzzer-14-dev # fuzz targets (scripts/fuzz.sh): -fsanitize=fuzzer,address,undefined
 )
 
 missing=()
