@@ -36,6 +36,8 @@ import subprocess
 import sys
 import time
 
+from vtkmodules.vtkIOImage import vtkPNGReader  # Debian's /usr/bin/python3 (python3-vtk9): image checks
+
 DATA = os.environ.get("PLUME_DATA_DIR", "/work/shared/data")
 
 
@@ -80,12 +82,14 @@ class Corpus:
             data = f.read()
         return self.write(name, edit(data), "wb")
 
-    def add(self, name, kind, args, expect="", env=None):
-        self.cases.append(dict(name=name, kind=kind, args=args, expect=expect, env=env or {}))
+    def add(self, name, kind, args, expect="", env=None, image=None):
+        self.cases.append(dict(name=name, kind=kind, args=args, expect=expect, env=env or {}, image=image))
 
-    def render(self, name, kind, scene_path, expect, extra=(), env=None):
-        self.add(name, kind, ["render", scene_path, "-o", self.path(name + ".png"), "--size", "64x48", *extra],
-                 expect, env)
+    def render(self, name, kind, scene_path, expect, extra=(), env=None, image=None):
+        """`image`: {channel: minimum} the output's brightest value of that channel must reach (0-255)."""
+        size = "160x120" if image else "64x48"
+        self.add(name, kind, ["render", scene_path, "-o", self.path(name + ".png"), "--size", size, *extra],
+                 expect, env, image)
 
 
 def legacy_poly(section, points="0 0 0 1 0 0 0 1 0 1 1 0", npts=4, tail=""):
@@ -397,15 +401,30 @@ def build(c):
         c.render(name, "error", c.scene("camera_" + name, {"datasets": {"v": vortex},
                  "representations": [{"type": "outline", "dataset": "v"}], "camera": camera}), expect)
 
-    # ---- non-finite values in arrays: left out of default ranges, with a warning
-    inf_vti = c.write("nonfinite/inf.vti", xml_image("0 2 0 2 0 1", "0 2 0 2 0 1", " ".join(
-        ["inf" if i == 4 else "-inf" if i == 7 else "nan" if i == 9 else str(i) for i in range(18)])))
+    # ---- non-finite values in arrays: left out of default ranges, with a warning, and the
+    # picture drawn (before: the volume drew nothing, the glyphs were all one dark red)
+    values, vectors = [], []
+    for k in range(8):
+        for j in range(8):
+            for i in range(8):
+                n = i + 8 * (j + 8 * k)
+                values.append("inf" if n in (5, 77) else "-inf" if n == 300 else "nan" if n == 301 else str(i + j + k))
+                vectors.append("inf 0 0" if n == 100 else "%g %g %g" % (1, (i - 3.5) / 4, (j - 3.5) / 4))
+    inf_vti = c.write("nonfinite/inf.vti", '<?xml version="1.0"?>\n<VTKFile type="ImageData" version="0.1" byte_order="LittleEndian">'
+        '<ImageData WholeExtent="0 7 0 7 0 7" Origin="0 0 0" Spacing="1 1 1"><Piece Extent="0 7 0 7 0 7"><PointData Scalars="s" Vectors="v">'
+        '<DataArray type="Float32" Name="s" format="ascii">%s</DataArray><DataArray type="Float32" Name="v" NumberOfComponents="3" '
+        'format="ascii">%s</DataArray></PointData></Piece></ImageData></VTKFile>\n' % (" ".join(values), " ".join(vectors)))
     c.render("VolumeInfScalars", "warn", c.scene("nonfinite_volume", {"datasets": {"d": {"path": inf_vti}},
              "representations": [{"type": "volume", "dataset": "d", "array": "s"}]}),
-             r"plume: warning: representations\[0\] \(volume\): 3 NaN or infinite value\(s\) of array 's' left out of the colour range \[0, 17\]")
+             r"plume: warning: representations\[0\] \(volume\): 4 NaN or infinite value\(s\) of array 's' left out of the colour range \[0, 21\]",
+             image={0: 100})  # the viridis volume: red up to ~230 (background 26)
+    c.render("GlyphsInfVectors", "warn", c.scene("nonfinite_glyphs", {"datasets": {"d": {"path": inf_vti}},
+             "representations": [{"type": "glyphs", "dataset": "d", "vectors": "v", "roots": "lattice", "scale": 0.5}]}),
+             r"plume: warning: representations\[0\] \(glyphs\): 1 NaN or infinite value\(s\) of array 'v' left out of the colour range \[1\.0155, 1\.59099\]",
+             image={1: 100})  # green glyphs exist (all dark red before)
     c.render("SurfaceInfScalars", "warn", c.scene("nonfinite_surface", {"datasets": {"d": {"path": inf_vti}},
              "representations": [{"type": "surface", "dataset": "d", "color_array": "s"}]}),
-             r"plume: warning: representations\[0\] \(surface\): 3 NaN or infinite value\(s\) of array 's' left out of the colour range \[0, 17\]")
+             r"plume: warning: representations\[0\] \(surface\): 4 NaN or infinite value\(s\) of array 's' left out of the colour range \[0, 21\]")
 
     # ---- command lines
     vs = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples", "Scenes", "vortex_streamlets.json")
@@ -461,6 +480,15 @@ def run_case(plume, case, timeout):
         return "fail", "no warning matching /%s/:\n%s" % (expect, err), seconds
     if kind == "ok" and expect and not re.search(expect, out):
         return "fail", "stdout does not match /%s/:\n%s" % (expect, out), seconds
+    if case["image"]:
+        reader = vtkPNGReader()
+        reader.SetFileName(case["args"][case["args"].index("-o") + 1])
+        reader.Update()
+        scalars = reader.GetOutput().GetPointData().GetScalars()
+        for channel, minimum in case["image"].items():
+            if scalars is None or scalars.GetRange(channel)[1] < minimum:
+                return "fail", "image channel %d never reaches %d (%s): nothing drawn?" % (
+                    channel, minimum, scalars.GetRange(channel) if scalars else "no image"), seconds
     return "ok", (lines[0] if lines else out.strip().splitlines()[-1] if out.strip() else ""), seconds
 
 
