@@ -706,6 +706,15 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
       return "corrupt Exodus II file " + path + ": " + corrupt;
     }
   }
+  if (kind == "legacy")
+  {
+    // VTK's legacy reader reads on from a closed file after a short cell list (SEGV)
+    const std::string corrupt = vtkPlumeFormatCheck::CheckLegacyVTK(path);
+    if (!corrupt.empty())
+    {
+      return "corrupt legacy VTK file " + path + ": " + corrupt;
+    }
+  }
   if (kind == "ensight")
   {
     // VTK's EnSight reader reads past the end of a cut geometry file (SEGV)

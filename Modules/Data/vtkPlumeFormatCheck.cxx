@@ -3,6 +3,7 @@
 #include "vtksys/FStream.hxx"
 #include "vtksys/SystemTools.hxx"
 
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 
@@ -527,4 +528,89 @@ std::string vtkPlumeFormatCheck::CheckEnSightGold(const std::string& casePath)
       }
     }
   }
+}
+
+std::string vtkPlumeFormatCheck::CheckLegacyVTK(const std::string& path)
+{
+  vtksys::ifstream in(path.c_str(), std::ios::in | std::ios::binary);
+  std::string line;
+  if (!in || !std::getline(in, line))
+  {
+    return std::string(); // VTK's reader reports unreadable and empty files itself
+  }
+  const auto version = line.find("Version");
+  if (line.compare(0, 5, "# vtk") != 0 || version == std::string::npos ||
+    std::atof(line.c_str() + version + 7) >= 5.0)
+  {
+    return std::string();
+  }
+  std::string title, format;
+  if (!std::getline(in, title) || !std::getline(in, format))
+  {
+    return std::string();
+  }
+  const bool binary = format.compare(0, 6, "BINARY") == 0;
+  in.seekg(0, std::ios::end);
+  const std::streamoff fileSize = in.tellg();
+  in.seekg(0);
+  std::getline(in, line);
+  std::getline(in, line);
+  std::getline(in, line);
+  static const char* const keywords[] = { "VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS", "CELLS" };
+  while (std::getline(in, line))
+  {
+    std::istringstream words(line);
+    std::string keyword;
+    long long cells = -1, size = -1;
+    if (!(words >> keyword >> cells >> size))
+    {
+      continue;
+    }
+    bool isCells = false;
+    for (const char* k : keywords)
+    {
+      isCells = isCells || keyword == k;
+    }
+    if (!isCells)
+    {
+      continue;
+    }
+    const std::string where = "the " + keyword + " section (" + std::to_string(cells) + " cells, " +
+      std::to_string(size) + " values)";
+    if (cells < 0 || size < cells)
+    {
+      return where + " has an impossible header";
+    }
+    if (binary)
+    {
+      const std::streamoff at = in.tellg();
+      if (at < 0 || double(size) * 4.0 > double(fileSize - at))
+      {
+        return where + " needs " + std::to_string(size * 4) + " bytes, but the file ends after " +
+          std::to_string(at < 0 ? 0 : fileSize - at) + " (truncated file?)";
+      }
+      in.seekg(at + static_cast<std::streamoff>(size) * 4);
+      continue;
+    }
+    // ASCII: `size` integers, each cell's count followed by that many ids
+    long long read = 0;
+    std::string token;
+    while (read < size && in >> token)
+    {
+      char* end = nullptr;
+      const long long v = std::strtoll(token.c_str(), &end, 10);
+      (void)v;
+      if (!end || *end != '\0' || end == token.c_str())
+      {
+        return where + ": value " + std::to_string(read) + " is '" + token.substr(0, 40) + "', not an integer";
+      }
+      ++read;
+    }
+    if (read < size)
+    {
+      return where + " ends after " + std::to_string(read) + " values (truncated file?)";
+    }
+    std::getline(in, line); // the rest of the last line
+  }
+  return std::string();
 }

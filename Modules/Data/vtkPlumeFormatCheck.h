@@ -14,7 +14,8 @@
  * variable's data must lie inside the file, and for Exodus II every
  * element connectivity entry (`connect*`) must name a node in
  * [1, num_nodes]. Exodus files stored as HDF5 (netCDF-4) are not checked.
- * EnSight Gold C-binary geometry: see CheckEnSightGold().
+ * EnSight Gold C-binary geometry: see CheckEnSightGold(). Legacy .vtk cell
+ * lists: see CheckLegacyVTK().
  */
 #ifndef vtkPlumeFormatCheck_h
 #define vtkPlumeFormatCheck_h
@@ -43,6 +44,16 @@ public:
    * elements and time-series geometry (wildcards) are not checked ("").
    */
   static std::string CheckEnSightGold(const std::string& casePath);
+
+  /**
+   * "" if the cell sections (VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS,
+   * CELLS) of a legacy .vtk file before version 5 hold as many values as
+   * their header says: as integers in ASCII files, as bytes in binary ones.
+   * VTK 9.1's legacy reader closes the file on a short or non-numeric cell
+   * list and then reads on from it (SEGV; found by fuzzing). Version 5 files
+   * (OFFSETS/CONNECTIVITY) are read safely by VTK and not checked here.
+   */
+  static std::string CheckLegacyVTK(const std::string& path);
 };
 
 #endif

@@ -280,6 +280,37 @@ def build(c):
         for pct in (0, 1, 10, 50, 90, 99):
             p = c.derived("trunc/%s_%d.%s" % (name, pct, ext), source, truncate(pct / 100.0))
             c.add("Truncated%s%d" % (name, pct), "error", ["info", p], ERR_READ + r"|corrupt Exodus II file .*(truncated file|too short)|not a|no data")
+    # legacy cell lists cut short or not numeric: VTK 9.1 reads on from the file it closed (SEGV;
+    # found by plumeFuzzDatasetReader)
+    for keyword in ("VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS"):
+        c.add("LegacyCellsNotNumber_" + keyword, "error", ["info", c.write("legacy_cells/%s_x.vtk" % keyword,
+              legacy_poly("%s 1 4\n3 0 1 x\n" % keyword))],
+              r"corrupt legacy VTK file .*: the %s section \(1 cells, 4 values\): value 3 is 'x', not an integer" % keyword)
+        c.add("LegacyCellsShort_" + keyword, "error", ["info", c.write("legacy_cells/%s_short.vtk" % keyword,
+              legacy_poly("%s 1 4\n3 0 1\n" % keyword))],
+              r"corrupt legacy VTK file .*: the %s section \(1 cells, 4 values\) ends after 3 values \(truncated file\?\)" % keyword)
+    c.add("LegacyCellsFuzzFinding", "error", ["info", c.write("legacy_cells/fuzz.vtk", legacy_poly(
+          "POLYGONS 2 8\n3 0 1 ~2\n3 1 3 2\n", tail="POINT_DATA 4\nSCALARS s float 0\nLOOKUP_TABLE default\n1 2 3 4\n"))],
+          r"the POLYGONS section \(2 cells, 8 values\): value 3 is '~2', not an integer")
+    # the office stream sheet as legacy 4.2 polydata (binary and ASCII), cut inside its polygons
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    from vtkmodules.vtkIOLegacy import vtkPolyDataWriter
+    sheet_reader = vtkXMLPolyDataReader()
+    sheet_reader.SetFileName(os.path.join(DATA, "derived/office_stream_sheet.vtp"))
+    sheet_reader.Update()
+    for file_type, name in ((2, "Binary"), (1, "Ascii")):
+        writer = vtkPolyDataWriter()
+        writer.SetInputData(sheet_reader.GetOutput())
+        writer.SetFileName(c.path("legacy_cells/sheet_%s.vtk" % name))
+        writer.SetFileType(file_type)
+        writer.SetFileVersion(42)
+        writer.Write()
+        for pct in (40, 45):
+            c.add("LegacySheet%sCut%d" % (name, pct), "error", ["info", c.derived("legacy_cells/sheet_%s_%d.vtk" % (name, pct),
+                  c.path("legacy_cells/sheet_%s.vtk" % name), truncate(pct / 100.0))],
+                  r"corrupt legacy VTK file .*: the POLYGONS section \(24000 cells, 96000 values\) (needs 384000 bytes, but the file ends after \d+|ends after \d+ values) \(truncated file\?\)")
+        c.add("LegacySheet%sWhole" % name, "ok", ["info", c.path("legacy_cells/sheet_%s.vtk" % name)], r"Points: 24060   Cells: 24000")
+
     # EnSight Gold: VTK's reader read past the end of a cut geometry file (SEGV)
     def ensight(name, geo_edit=None, vel_edit=None):
         folder = "ensight/" + name

@@ -6,6 +6,7 @@
 // sanitizer report or a broken round trip is a finding.
 #include "vtkPlumeParameterTable.h"
 
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkSetGet.h"
 
@@ -122,9 +123,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   (void)vtkPlumeParameterTable::Format(value);
   if (!problem.empty())
   {
-    if (problem.find(p.Key) == std::string::npos)
+    if (problem.compare(0, 5, "must ") != 0)
     {
-      std::abort(); // every refusal names the key
+      std::abort(); // every refusal says what the value must be (the caller adds the key)
     }
     return 0;
   }
