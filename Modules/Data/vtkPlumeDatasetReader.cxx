@@ -50,6 +50,7 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <new>
 #include <cstring>
 #include <cctype>
 #include <cmath>
@@ -758,6 +759,25 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
 }
 
 //------------------------------------------------------------------------------
+vtkTypeBool vtkPlumeDatasetReader::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  try
+  {
+    return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  }
+  catch (const std::bad_alloc&)
+  {
+    this->LastError = "the " + (this->Internal->Kind.empty() ? std::string("dataset") : this->Internal->Kind) +
+      " reader ran out of memory reading " + (this->FileName ? this->FileName : "(no file)") +
+      " (a header announcing more data than the file holds?)";
+    this->Internal->Reader = nullptr; // start from scratch next time
+    this->Internal->Key.clear();
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkPlumeDatasetReader::RequestDataObject(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -1030,6 +1050,23 @@ int vtkPlumeDatasetReader::RequestInformation(
       return 0;
     }
 
+    // The grid header as the reader understood it (it sizes a memset from it unchecked).
+    if (auto* plot3d = vtkMultiBlockPLOT3DReader::SafeDownCast(in.Reader))
+    {
+      const std::string corrupt = plot3d->GetBinaryFile()
+        ? vtkPlumeFormatCheck::CheckPlot3DGrid(path,
+            plot3d->GetByteOrder() == vtkMultiBlockPLOT3DReader::FILE_BIG_ENDIAN, plot3d->GetHasByteCount(),
+            plot3d->GetMultiGrid(), plot3d->GetTwoDimensionalGeometry(), plot3d->GetDoublePrecision(),
+            plot3d->GetIBlanking())
+        : std::string();
+      if (!corrupt.empty())
+      {
+        this->LastError = "corrupt PLOT3D file " + path + ": " + corrupt;
+        in.Reader = nullptr;
+        in.Key.clear();
+        return 0;
+      }
+    }
     // Array selections are only known after the reader's RequestInformation.
     if (auto* exodus = vtkExodusIIReader::SafeDownCast(in.Reader))
     {
@@ -1208,7 +1245,15 @@ int vtkPlumeDatasetReader::RequestData(
       in.Watch(reader);
       in.ProgressOffset = double(i) / entries.size();
       in.ProgressScale = 1.0 / entries.size();
-      reader->Update();
+      try
+      {
+        reader->Update();
+      }
+      catch (const std::bad_alloc&)
+      {
+        return fail("the xml reader ran out of memory reading " + entries[i].File + " (listed in " + in.Path +
+          "; a header announcing more data than the file holds?)");
+      }
       vtkDataObject* part = reader->GetOutputDataObject(0);
       if (!part || !in.Captured.empty() || reader->GetErrorCode() != 0)
       {
@@ -1239,7 +1284,19 @@ int vtkPlumeDatasetReader::RequestData(
     in.ProgressOffset = 0;
     in.ProgressScale = 1;
     ScopedReadWarningCatcher warnings;
-    const int ok = n > 0 ? in.Reader->UpdateTimeStep(times[step]) : in.Reader->GetExecutive()->Update();
+    int ok = 0;
+    try
+    {
+      ok = n > 0 ? in.Reader->UpdateTimeStep(times[step]) : in.Reader->GetExecutive()->Update();
+    }
+    catch (const std::bad_alloc&)
+    {
+      // VTK's readers allocate what a header announces (e.g. an XML compressed-block count)
+      in.Reader = nullptr;
+      in.Key.clear();
+      return fail("the " + in.Kind + " reader ran out of memory reading " + in.Path +
+        " (a header announcing more data than the file holds?)");
+    }
     vtkDataObject* produced = in.Reader->GetOutputDataObject(0);
     if (!warnings.Caught().empty())
     {

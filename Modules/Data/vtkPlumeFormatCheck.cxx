@@ -614,3 +614,69 @@ std::string vtkPlumeFormatCheck::CheckLegacyVTK(const std::string& path)
   }
   return std::string();
 }
+
+std::string vtkPlumeFormatCheck::CheckPlot3DGrid(const std::string& path, bool bigEndian, bool byteCounts,
+  bool multiGrid, bool twoDimensional, bool doublePrecision, bool iblanking)
+{
+  Cursor in(path);
+  if (!in.Good())
+  {
+    return std::string();
+  }
+  auto integer = [&](int64_t& v) {
+    unsigned char b[4];
+    if (!in.Read(b, 4))
+    {
+      return false;
+    }
+    const uint32_t u = bigEndian ? (uint32_t(b[0]) << 24 | uint32_t(b[1]) << 16 | uint32_t(b[2]) << 8 | b[3])
+                                 : (uint32_t(b[3]) << 24 | uint32_t(b[2]) << 16 | uint32_t(b[1]) << 8 | b[0]);
+    v = int32_t(u);
+    return true;
+  };
+  const std::string cut = "the grid header is cut short (truncated file?)";
+  int64_t count = 0, blocks = 1;
+  if (multiGrid)
+  {
+    if ((byteCounts && !integer(count)) || !integer(blocks) || (byteCounts && !integer(count)))
+    {
+      return cut;
+    }
+    if (blocks < 1 || uint64_t(blocks) > in.Size / 8)
+    {
+      return "the header announces " + std::to_string(blocks) + " grids";
+    }
+  }
+  const int axes = twoDimensional ? 2 : 3;
+  if (byteCounts && !integer(count))
+  {
+    return cut;
+  }
+  double need = 0;
+  for (int64_t b = 0; b < blocks; ++b)
+  {
+    double points = 1;
+    std::string dims;
+    for (int a = 0; a < axes; ++a)
+    {
+      int64_t d = 0;
+      if (!integer(d))
+      {
+        return cut;
+      }
+      dims += (a ? " x " : "") + std::to_string(d);
+      if (d < 1)
+      {
+        return "grid " + std::to_string(b) + " has dimensions " + dims + "... (each must be at least 1)";
+      }
+      points *= double(d);
+    }
+    need += points * (axes * (doublePrecision ? 8.0 : 4.0) + (iblanking ? 4.0 : 0.0));
+    if (need > double(in.Size))
+    {
+      return "grid " + std::to_string(b) + " (" + dims + ") needs more coordinates than the file's " +
+        std::to_string(in.Size) + " bytes hold";
+    }
+  }
+  return std::string();
+}

@@ -54,6 +54,16 @@ public:
    * (OFFSETS/CONNECTIVITY) are read safely by VTK and not checked here.
    */
   static std::string CheckLegacyVTK(const std::string& path);
+
+  /**
+   * "" if the grid header of a binary PLOT3D XYZ file, read with the layout
+   * VTK's reader detected (byte order, Fortran byte counts, multi-grid, 2D,
+   * precision, IBLANK), gives positive dimensions whose coordinates fit in
+   * the file. VTK 9.1 sizes a memset from them unchecked (SEGV under ASan;
+   * found by fuzzing).
+   */
+  static std::string CheckPlot3DGrid(const std::string& path, bool bigEndian, bool byteCounts, bool multiGrid,
+    bool twoDimensional, bool doublePrecision, bool iblanking);
 };
 
 #endif

@@ -82,8 +82,9 @@ class Corpus:
             data = f.read()
         return self.write(name, edit(data), "wb")
 
-    def add(self, name, kind, args, expect="", env=None, image=None):
-        self.cases.append(dict(name=name, kind=kind, args=args, expect=expect, env=env or {}, image=image))
+    def add(self, name, kind, args, expect="", env=None, image=None, limit_mb=None):
+        self.cases.append(dict(name=name, kind=kind, args=args, expect=expect, env=env or {}, image=image,
+                               limit_mb=limit_mb))
 
     def render(self, name, kind, scene_path, expect, extra=(), env=None, image=None):
         """`image`: {channel: minimum} the output's brightest value of that channel must reach (0-255)."""
@@ -311,6 +312,13 @@ def build(c):
                   r"corrupt legacy VTK file .*: the POLYGONS section \(24000 cells, 96000 values\) (needs 384000 bytes, but the file ends after \d+|ends after \d+ values) \(truncated file\?\)")
         c.add("LegacySheet%sWhole" % name, "ok", ["info", c.path("legacy_cells/sheet_%s.vtk" % name)], r"Points: 24060   Cells: 24000")
 
+    # committed inputs (fuzzer findings): an XML header announcing ~10^10 compressed blocks; VTK's
+    # reader allocates them (std::bad_alloc under a 4 GB address-space limit, as in the fuzzer)
+    committed = os.path.join(os.path.dirname(os.path.abspath(__file__)), "files")
+    c.add("XmlHugeBlockCount", "error", ["info", os.path.join(committed, "xml_huge_block_count.vtu")],
+          r"the xml reader ran out of memory reading .*xml_huge_block_count\.vtu \(a header announcing more data than the file holds\?\)",
+          limit_mb=4096)
+
     # EnSight Gold: VTK's reader read past the end of a cut geometry file (SEGV)
     def ensight(name, geo_edit=None, vel_edit=None):
         folder = "ensight/" + name
@@ -483,8 +491,15 @@ def run_case(plume, case, timeout):
     env.pop("PLUME_VERBOSE", None)
     t0 = time.time()
     try:
+        limit = case["limit_mb"]
+
+        def set_limit():
+            if limit:
+                import resource
+                resource.setrlimit(resource.RLIMIT_AS, (limit << 20, limit << 20))
         proc = subprocess.run([plume] + case["args"], stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                              stderr=subprocess.PIPE, timeout=timeout, env=env, start_new_session=True)
+                              stderr=subprocess.PIPE, timeout=timeout, env=env, start_new_session=True,
+                              preexec_fn=set_limit)
     except subprocess.TimeoutExpired:
         return "hang", "killed after %g s" % timeout, time.time() - t0
     seconds = time.time() - t0
