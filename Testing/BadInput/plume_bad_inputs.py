@@ -280,7 +280,7 @@ def build(c):
     for name, source, ext in truncations:
         for pct in (0, 1, 10, 50, 90, 99):
             p = c.derived("trunc/%s_%d.%s" % (name, pct, ext), source, truncate(pct / 100.0))
-            c.add("Truncated%s%d" % (name, pct), "error", ["info", p], ERR_READ + r"|corrupt Exodus II file .*(truncated file|too short)|not a|no data")
+            c.add("Truncated%s%d" % (name, pct), "error", ["info", p], ERR_READ + r"|corrupt (Exodus II|legacy VTK) file .*(truncated file|too short)|not a|no data")
     # legacy cell lists cut short or not numeric: VTK 9.1 reads on from the file it closed (SEGV;
     # found by plumeFuzzDatasetReader)
     for keyword in ("VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS"):
@@ -318,6 +318,10 @@ def build(c):
     c.add("XmlHugeBlockCount", "error", ["info", os.path.join(committed, "xml_huge_block_count.vtu")],
           r"the xml reader ran out of memory reading .*xml_huge_block_count\.vtu \(a header announcing more data than the file holds\?\)",
           limit_mb=4096)
+
+    # a PLOT3D grid whose header gives negative dimensions (SEGV in VTK's reader under ASan)
+    c.add("Plot3dNegativeDimensions", "error", ["info", os.path.join(committed, "plot3d_negative_dims.bin")],
+          r"(corrupt PLOT3D file .*: grid 0 has dimensions|the plot3d reader cannot read .*Auto detection check failed)")
 
     # EnSight Gold: VTK's reader read past the end of a cut geometry file (SEGV)
     def ensight(name, geo_edit=None, vel_edit=None):
