@@ -24,6 +24,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPiecewiseFunction.h"
@@ -123,7 +124,7 @@ vtkSmartPointer<vtkImageData> Vortex(double circulation, double drift)
     v->GetTuple(i, t);
     image->GetPoint(i, p);
     swirl->SetTuple3(i, -t[1], t[0], 0.5 * t[2]);
-    height->SetValue(i, static_cast<float>(0.5 * (p[2] + 1.0)));
+    height->SetValue(i, static_cast<float>(0.5 * (p[2] + 1.0) + 0.1 * vtkMath::Norm(t))); // depends on the data too
   }
   image->GetPointData()->AddArray(swirl);
   image->GetPointData()->AddArray(height);
@@ -216,7 +217,7 @@ int main(int argc, char* argv[])
           color->AddRGBPoint(1 + 0.2 * (k % 6), 1.0, 0.5, 0.1 * (k % 9));
           break;
         }
-        default: volumeMapper->SetSampleDistance(0.3 + 0.2 * (k % 4));
+        default: volumeMapper->SetSampleDistance((k / 4) % 2 ? 0.9 : 0.4); // differs from the last value
       }
     },
     [&](vtkRenderer* r) { r->RemoveVolume(volume); } });
@@ -259,7 +260,7 @@ int main(int argc, char* argv[])
         }
         case 2: sheet->SetDensityArrayName(k % 8 == 2 ? "d" : ""); break; // arrays
         case 3: sheet->SetSmokeColor(0.2 * (k % 5), 0.6, 0.35); break;       // "transfer function": colour
-        default: sheet->SetBlurRadius(0.05 + 0.02 * (k % 4)); sheet->SetDensity(1.0 + 0.3 * (k % 3));
+        default: sheet->SetBlurRadius((k / 4) % 2 ? 0.12 : 0.05); // differs from the last value
       }
     },
     [&](vtkRenderer* r) { r->RemoveActor(sheetActor); } });
