@@ -480,6 +480,8 @@ def build(c):
         ("SizeFloat", "10.5x10", r"got '10\.5x10'"), ("SizeEmptyWidth", "x10", r"got 'x10'"),
     ]:
         c.add(name, "error", ["render", vs, "-o", c.path(name + ".png"), "--size", size], expect)
+    c.add("SizeOverBudget", "error", ["render", vs, "-o", c.path("SizeOverBudget.png"), "--size", "16384x16384"],
+          r"a 16384x16384 image needs about 14336 MB, over the memory budget of 512 MB \(PLUME_MEMORY_BUDGET_MB\); choose a smaller --size")
     for bench in ("sheets", "glyphs", "volume", "splat"):
         c.add("BenchUnknownJob_" + bench, "error", ["bench", bench, "--job", "no:such:job"],
               r"bench %s: unknown job 'no:such:job' \(known: " % bench)
