@@ -716,6 +716,15 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
       return "corrupt legacy VTK file " + path + ": " + corrupt;
     }
   }
+  if (kind == "xml")
+  {
+    // VTK's XML parser trusts appended block headers (SEGV or tens of GB allocated)
+    const std::string corrupt = vtkPlumeFormatCheck::CheckXMLAppended(path);
+    if (!corrupt.empty())
+    {
+      return "corrupt VTK XML file " + path + ": " + corrupt;
+    }
+  }
   if (kind == "ensight")
   {
     // VTK's EnSight reader reads past the end of a cut geometry file (SEGV)
@@ -1235,7 +1244,12 @@ int vtkPlumeDatasetReader::RequestData(
     std::vector<vtkSmartPointer<vtkDataObject>> parts;
     for (size_t i = 0; i < entries.size(); ++i)
     {
-      const std::string notRegular = vtkPlumeInputValidation::CheckRegularFile(entries[i].File);
+      std::string notRegular = vtkPlumeInputValidation::CheckRegularFile(entries[i].File);
+      if (notRegular.empty())
+      {
+        notRegular = vtkPlumeFormatCheck::CheckXMLAppended(entries[i].File);
+        notRegular = notRegular.empty() ? notRegular : "corrupt VTK XML file " + entries[i].File + ": " + notRegular;
+      }
       if (!notRegular.empty())
       {
         return fail(notRegular + " (listed in " + in.Path + ")");

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <sstream>
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -676,6 +677,139 @@ std::string vtkPlumeFormatCheck::CheckPlot3DGrid(const std::string& path, bool b
     {
       return "grid " + std::to_string(b) + " (" + dims + ") needs more coordinates than the file's " +
         std::to_string(in.Size) + " bytes hold";
+    }
+  }
+  return std::string();
+}
+
+std::string vtkPlumeFormatCheck::CheckXMLAppended(const std::string& path)
+{
+  Cursor in(path);
+  if (!in.Good())
+  {
+    return std::string();
+  }
+  // the XML part: everything before the raw appended data ("_" after <AppendedData ...>)
+  const uint64_t headLength = std::min<uint64_t>(in.Size, 1 << 24);
+  std::string head(static_cast<size_t>(headLength), '\0');
+  if (!in.Read(&head[0], headLength))
+  {
+    return std::string();
+  }
+  const auto appended = head.find("<AppendedData");
+  if (appended == std::string::npos)
+  {
+    return std::string();
+  }
+  const auto tagEnd = head.find('>', appended);
+  if (tagEnd == std::string::npos || head.find("encoding=\"raw\"", appended) > tagEnd)
+  {
+    return std::string(); // base64 appended data: not checked
+  }
+  const auto underscore = head.find('_', tagEnd);
+  if (underscore == std::string::npos)
+  {
+    return "the appended data section has no '_' marker (truncated file?)";
+  }
+  const uint64_t base = underscore + 1;
+  const std::string xml = head.substr(0, appended);
+  auto attribute = [](const std::string& text, size_t from, size_t to, const std::string& name) {
+    const auto at = text.find(" " + name + "=\"", from);
+    if (at == std::string::npos || at > to)
+    {
+      return std::string();
+    }
+    const auto start = at + name.size() + 3;
+    const auto end = text.find('"', start);
+    return end == std::string::npos ? std::string() : text.substr(start, end - start);
+  };
+  const auto fileTag = xml.find("<VTKFile");
+  const auto fileTagEnd = xml.find('>', fileTag == std::string::npos ? 0 : fileTag);
+  if (fileTag == std::string::npos || fileTagEnd == std::string::npos)
+  {
+    return std::string();
+  }
+  const bool compressed = !attribute(xml, fileTag, fileTagEnd, "compressor").empty();
+  const int headerSize = attribute(xml, fileTag, fileTagEnd, "header_type") == "UInt64" ? 8 : 4;
+  const bool bigEndian = attribute(xml, fileTag, fileTagEnd, "byte_order") == "BigEndian";
+  auto word = [&](uint64_t& v) {
+    unsigned char b[8];
+    if (!in.Read(b, headerSize))
+    {
+      return false;
+    }
+    v = 0;
+    for (int i = 0; i < headerSize; ++i)
+    {
+      v |= uint64_t(b[bigEndian ? headerSize - 1 - i : i]) << (8 * i);
+    }
+    return true;
+  };
+  for (size_t at = xml.find("<DataArray"); at != std::string::npos; at = xml.find("<DataArray", at + 1))
+  {
+    const auto end = xml.find('>', at);
+    if (end == std::string::npos || attribute(xml, at, end, "format") != "appended")
+    {
+      continue;
+    }
+    const std::string name = attribute(xml, at, end, "Name");
+    const std::string offsetText = attribute(xml, at, end, "offset");
+    char* stop = nullptr;
+    const unsigned long long offset = std::strtoull(offsetText.c_str(), &stop, 10);
+    const std::string what = "array '" + name + "' (appended offset " + offsetText + ")";
+    if (offsetText.empty() || *stop != '\0' || base + offset + headerSize > in.Size)
+    {
+      return what + " starts beyond the end of the file's " + std::to_string(in.Size) + " bytes (truncated file?)";
+    }
+    in.Seek(base + offset);
+    uint64_t first = 0;
+    if (!word(first))
+    {
+      return what + ": its header is cut short";
+    }
+    const uint64_t left = in.Size - in.Position;
+    if (!compressed)
+    {
+      if (first > left)
+      {
+        return what + " announces " + std::to_string(first) + " bytes, but only " + std::to_string(left) +
+          " follow (truncated file?)";
+      }
+      continue;
+    }
+    const uint64_t blocks = first;
+    uint64_t blockSize = 0, lastSize = 0;
+    if (!word(blockSize) || !word(lastSize) || blocks > (in.Size - in.Position) / headerSize)
+    {
+      return what + " announces " + std::to_string(blocks) + " compressed blocks, more than the file holds";
+    }
+    double compressedTotal = 0;
+    for (uint64_t b = 0; b < blocks; ++b)
+    {
+      uint64_t size = 0;
+      if (!word(size))
+      {
+        return what + ": its block sizes are cut short (truncated file?)";
+      }
+      compressedTotal += double(size);
+    }
+    const double dataLeft = double(in.Size - in.Position);
+    if (compressedTotal > dataLeft)
+    {
+      return what + ": its compressed blocks need " + std::to_string(static_cast<unsigned long long>(compressedTotal)) +
+        " bytes, but only " + std::to_string(static_cast<unsigned long long>(dataLeft)) + " follow (truncated file?)";
+    }
+    const double uncompressed = blocks == 0 ? 0.0 : double(blocks - 1) * double(blockSize) + double(lastSize ? lastSize : blockSize);
+    if (lastSize > blockSize)
+    {
+      return what + ": its last block (" + std::to_string(lastSize) + " bytes) is larger than the block size (" +
+        std::to_string(blockSize) + ") (corrupt header)";
+    }
+    if (uncompressed > 1032.0 * compressedTotal + 65536.0)
+    {
+      return what + " promises " + std::to_string(static_cast<unsigned long long>(uncompressed)) +
+        " bytes from " + std::to_string(static_cast<unsigned long long>(compressedTotal)) +
+        " compressed ones, more than compression allows (corrupt header)";
     }
   }
   return std::string();

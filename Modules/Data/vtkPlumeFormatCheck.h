@@ -62,6 +62,17 @@ public:
    * the file. VTK 9.1 sizes a memset from them unchecked (SEGV under ASan;
    * found by fuzzing).
    */
+  /**
+   * "" if every DataArray stored in the raw appended section of a VTK XML file
+   * has its block header inside the file: for compressed data the block
+   * count, block sizes and compressed sizes, which must fit the bytes that
+   * follow and promise no more than zlib's best ratio (1032:1) allows; for
+   * uncompressed data the byte count. VTK 9.1's parser trusts them (SEGV in
+   * vtkXMLDataParser::ReadBlock, or tens of GB allocated; found by fuzzing).
+   * Inline (base64) arrays are not checked.
+   */
+  static std::string CheckXMLAppended(const std::string& path);
+
   static std::string CheckPlot3DGrid(const std::string& path, bool bigEndian, bool byteCounts, bool multiGrid,
     bool twoDimensional, bool doublePrecision, bool iblanking);
 };
