@@ -15,7 +15,8 @@
  * element connectivity entry (`connect*`) must name a node in
  * [1, num_nodes]. Exodus files stored as HDF5 (netCDF-4) are not checked.
  * EnSight Gold C-binary geometry: see CheckEnSightGold(). Legacy .vtk cell
- * lists: see CheckLegacyVTK().
+ * lists: CheckLegacyVTK(). VTK XML appended data: CheckXMLAppended(). PLOT3D
+ * grid headers: CheckPlot3DGrid().
  */
 #ifndef vtkPlumeFormatCheck_h
 #define vtkPlumeFormatCheck_h
