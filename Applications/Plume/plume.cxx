@@ -11,6 +11,7 @@
 
 #include "vtkPlumeDatasetReader.h"
 #include "vtkPlumeParameterTable.h"
+#include "vtkPlumeInputValidation.h"
 
 #include "vtkCamera.h"
 #include "vtkLogger.h"
@@ -23,6 +24,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -31,13 +33,10 @@
 
 namespace
 {
-/** Parses "WxH". */
+/** Parses "WxH" with overflow checks (sscanf's %d wraps 4294967297 to 1). */
 bool ParseSize(const std::string& text, int& w, int& h)
 {
-  char x = 0;
-  char rest = 0;
-  return std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) == 3 && (x == 'x' || x == 'X') && w > 0 &&
-    h > 0 && w <= 16384 && h <= 16384;
+  return vtkPlumeInputValidation::ParseSize(text, 16384, w, h);
 }
 
 
@@ -68,6 +67,16 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   vtkNew<vtkRenderer> renderer;
   plume::Scene::Build(scene, directory, renderer, options);
 
+  {
+    // window (RGBA8 + depth, twice for multisampling) and the float read-back (RGBA32F + depth, plus a copy)
+    const double pixels = double(options.Width) * double(options.Height);
+    const std::string tooBig = vtkPlumeInputValidation::CheckMemory(pixels * (2 * 8.0 + 2 * 20.0),
+      "a " + std::to_string(options.Width) + "x" + std::to_string(options.Height) + " image");
+    if (!tooBig.empty())
+    {
+      throw plume::SceneError(tooBig + "; choose a smaller --size or scene 'size'");
+    }
+  }
   auto window = plume::RequireRenderWindow(backend, options.Width, options.Height);
   window->AddRenderer(renderer);
   renderer->ResetCameraClippingRange();

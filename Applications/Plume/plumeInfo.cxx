@@ -1,4 +1,5 @@
 #include "plumeInfo.h"
+#include "plumeSceneError.h"
 
 #include "vtkPlumeDatasetReader.h"
 
@@ -415,18 +416,19 @@ int RunInfo(vtkPlumeDatasetReader* reader, bool json, std::ostream& out, std::os
 {
   if (!reader)
   {
-    err << "plume info: no reader\n";
+    err << "plume: error: no reader\n";
     return 2;
   }
   reader->Update();
   vtkDataObject* data = reader->GetOutputDataObject(0);
   if (!reader->GetLastError().empty() || !data)
   {
-    err << "plume info: "
+    // the command line's one error line and exit code for bad input
+    err << "plume: error: "
         << (reader->GetLastError().empty() ? std::string("the reader produced no data")
-                                           : reader->GetLastError())
+                                           : OneLine(reader->GetLastError()))
         << "\n";
-    return 1;
+    return 2;
   }
   const nlohmann::ordered_json doc = Describe(reader, data);
   if (json)

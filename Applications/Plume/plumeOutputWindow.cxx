@@ -1,5 +1,7 @@
 #include "plumeOutputWindow.h"
 
+#include "plumeSceneError.h"
+
 #include <cstdlib>
 #include <iostream>
 
@@ -48,7 +50,7 @@ int plumeOutputWindow::Finish(int status, const std::string& error)
   const std::string messages = this->TakeMessages();
   if (!error.empty())
   {
-    std::cerr << "plume: error: " << error << "\n";
+    std::cerr << "plume: error: " << plume::OneLine(error) << "\n";
   }
   if (!messages.empty() && (status == 0 || std::getenv("PLUME_VERBOSE")))
   {

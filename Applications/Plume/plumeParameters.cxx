@@ -5,10 +5,23 @@
 #include "vtkPlumeParameterTable.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace plume
 {
+namespace
+{
+// Scene numbers end up in 32-bit floats (shader uniforms, float arrays, the projection):
+// one beyond float range becomes Inf there, a denormal becomes 0 (then 1/x is Inf), and
+// the frame fills with NaN. Refused here, where the message can name the key.
+bool FloatRepresentable(double x)
+{
+  const double a = std::fabs(x);
+  return a == 0 || (a >= std::numeric_limits<float>::min() && a <= std::numeric_limits<float>::max());
+}
+const char* const FloatRange = " representable as a 32-bit float (0, or magnitude 1.2e-38 to 3.4e+38)";
+}
 
 Parameters::Parameters(const nlohmann::json& object, std::string where)
   : Json(object)
@@ -85,10 +98,31 @@ void Parameters::Apply(const vtkPlumeParameterTable& table, vtkObject* object)
     {
       this->Fail(parameter.Key, std::string("of type ") + vtkPlumeParameterTable::KindName(parameter.Type), *json);
     }
-    const std::string problem = parameter.Check(value);
+    std::string problem = parameter.Check(value);
+    // in range for the table, and representable where it ends up (float uniforms)
+    if (problem.empty() && std::holds_alternative<double>(value) && !FloatRepresentable(std::get<double>(value)))
+    {
+      problem = std::string("must be a number") + FloatRange;
+    }
+    if (problem.empty() && std::holds_alternative<std::array<double, 3>>(value))
+    {
+      for (double x : std::get<std::array<double, 3>>(value))
+      {
+        if (!FloatRepresentable(x))
+        {
+          problem = std::string("must be 3 numbers") + FloatRange;
+        }
+      }
+    }
     if (!problem.empty())
     {
-      throw SceneError(this->Location + ": parameter '" + parameter.Key + "' " + problem);
+      std::string shown = json->dump();
+      if (shown.size() > 80)
+      {
+        shown = shown.substr(0, 77) + "...";
+      }
+      throw SceneError(this->Location + ": parameter '" + parameter.Key + "' " + problem +
+        (problem.find(", got ") == std::string::npos ? ", got " + shown : std::string()));
     }
     parameter.Set(object, value);
   }
@@ -111,6 +145,10 @@ double Parameters::Number(const std::string& key, double fallback, double min, d
     std::ostringstream range;
     range << "a finite number in [" << min << ", " << max << "]";
     this->Fail(key, range.str(), *value);
+  }
+  if (!FloatRepresentable(x))
+  {
+    this->Fail(key, std::string("a number") + FloatRange, *value);
   }
   return x;
 }
@@ -204,6 +242,10 @@ std::array<double, N> Parameters::Vector(const std::string& key, const std::arra
       this->Fail(key, expected, *value);
     }
     out[i] = (*value)[i].template get<double>();
+    if (!FloatRepresentable(out[i]))
+    {
+      this->Fail(key, "a list of " + std::to_string(N) + " numbers" + FloatRange, *value);
+    }
   }
   return out;
 }

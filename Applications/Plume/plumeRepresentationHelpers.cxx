@@ -1,5 +1,7 @@
 #include "plumeRepresentationHelpers.h"
 
+#include "vtkPlumeInputValidation.h"
+
 #include "plumeColorMaps.h"
 #include "plumeParameters.h"
 #include "plumeSceneError.h"
@@ -15,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
+#include <iostream>
 
 namespace plume
 {
@@ -98,6 +102,7 @@ vtkDataSet* RequireDataSet(vtkDataObject* data, const std::string& where, const 
 
 void Coloring::Read(Parameters& p, const std::array<double, 3>& defaultColor)
 {
+  this->Where = p.Where();
   this->Color = p.Color("color", defaultColor);
   this->Map = p.Choice("colormap", "viridis", ColorMapNames());
   this->HasRange = p.Has("range");
@@ -111,45 +116,27 @@ void Coloring::Read(Parameters& p, const std::array<double, 3>& defaultColor)
 vtkSmartPointer<vtkScalarsToColors> Coloring::Table(vtkDataArray* array, int component, vtkDataArray* mask) const
 {
   double r[2] = { this->Range[0], this->Range[1] };
-  if (!this->HasRange && mask && mask->GetNumberOfTuples() == array->GetNumberOfTuples())
+  if (!this->HasRange)
   {
     // nodes outside the data (resampled: stored as 0) must not widen the range
-    r[0] = VTK_DOUBLE_MAX;
-    r[1] = -VTK_DOUBLE_MAX;
-    const int comps = array->GetNumberOfComponents();
-    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    std::vector<unsigned char> valid;
+    if (mask && mask->GetNumberOfTuples() == array->GetNumberOfTuples())
     {
-      if (mask->GetComponent(i, 0) == 0.0)
+      valid.resize(static_cast<size_t>(mask->GetNumberOfTuples()));
+      for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
       {
-        continue;
-      }
-      double v = 0.0;
-      if (component >= 0)
-      {
-        v = array->GetComponent(i, component);
-      }
-      else
-      {
-        for (int c = 0; c < comps; ++c)
-        {
-          v += array->GetComponent(i, c) * array->GetComponent(i, c);
-        }
-        v = std::sqrt(v);
-      }
-      if (std::isfinite(v))
-      {
-        r[0] = std::min(r[0], v);
-        r[1] = std::max(r[1], v);
+        valid[static_cast<size_t>(i)] = mask->GetComponent(i, 0) != 0.0;
       }
     }
-    if (r[0] > r[1])
+    // a few Inf values would make the range infinite: every colour the same
+    vtkIdType nonFinite = 0;
+    vtkPlumeInputValidation::FiniteRange(array, component, r, &nonFinite, valid.empty() ? nullptr : valid.data());
+    if (nonFinite > 0)
     {
-      r[0] = r[1] = 0.0;
+      std::cerr << "plume: warning: " << this->Where << ": " << nonFinite << " NaN or infinite value(s) of array '"
+                << (array->GetName() ? array->GetName() : "(unnamed)")
+                << "' left out of the colour range [" << r[0] << ", " << r[1] << "]\n";
     }
-  }
-  else if (!this->HasRange)
-  {
-    array->GetRange(r, component);
   }
   return MakeColorMap(this->Map, r[0], r[1]);
 }

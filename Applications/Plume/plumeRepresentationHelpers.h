@@ -45,12 +45,15 @@ struct Coloring
   std::string Map;
   bool HasRange = false;
   std::array<double, 2> Range = { 0, 1 };
+  std::string Where; // the representation, for warnings
 
   /** Reads color, colormap and range. */
   void Read(Parameters& p, const std::array<double, 3>& defaultColor);
   /**
    * The colour map over `range`, or over the array's range (component -1:
    * magnitude), taken over the points where `mask` (if given) is not 0.
+   * NaN and +-Inf values are left out of the default range, with a warning
+   * on stderr naming the array and how many were left out.
    */
   vtkSmartPointer<vtkScalarsToColors> Table(vtkDataArray* array, int component, vtkDataArray* mask = nullptr) const;
 };

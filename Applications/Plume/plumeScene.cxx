@@ -7,6 +7,7 @@
 #include "vtkPlumeAirlightPass.h"
 #include "vtkPlumeDatasetReader.h"
 #include "vtkPlumeParameterTable.h"
+#include "vtkPlumeInputValidation.h"
 #include "vtkPlumeResampleToImage.h"
 #include "vtkPlumeVortexSource.h"
 
@@ -40,17 +41,7 @@ namespace plume
 double MemoryBudgetBytes()
 {
   // Default: half of the physical memory, so one scene cannot exhaust the machine.
-  if (const char* env = std::getenv("PLUME_MEMORY_BUDGET_MB"))
-  {
-    const double mb = std::atof(env);
-    if (mb > 0)
-    {
-      return mb * (1 << 20);
-    }
-  }
-  const long pages = sysconf(_SC_PHYS_PAGES);
-  const long pageSize = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && pageSize > 0 ? 0.5 * double(pages) * double(pageSize) : 4.0 * (1 << 30);
+  return vtkPlumeInputValidation::MemoryBudgetBytes();
 }
 
 nlohmann::json Scene::ReadFile(const std::string& path)
@@ -59,19 +50,39 @@ nlohmann::json Scene::ReadFile(const std::string& path)
   {
     throw SceneError("scene file '" + path + "' is a directory");
   }
+  // a FIFO or a device would block the open forever or never end
+  const std::string notRegular = vtkPlumeInputValidation::CheckRegularFile(path);
+  if (!notRegular.empty())
+  {
+    throw SceneError("scene file: " + notRegular);
+  }
   std::ifstream in(path);
   if (!in)
   {
     throw SceneError("cannot open scene file '" + path + "'");
   }
+  return Parse(in, "scene file '" + path + "'");
+}
+
+nlohmann::json Scene::Parse(std::istream& in, const std::string& what)
+{
+  // Everything after parsing (dump() in messages, the destructor) recurses per level:
+  // thousands of nested levels overflow the stack, and no scene needs more than a few.
+  const auto depthCheck = [&what](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+    if (depth > MaximumJsonDepth)
+    {
+      throw SceneError(what + " nests JSON deeper than " + std::to_string(MaximumJsonDepth) + " levels");
+    }
+    return true;
+  };
   try
   {
-    return nlohmann::json::parse(in);
+    return nlohmann::json::parse(in, depthCheck);
   }
   catch (const nlohmann::json::exception& e)
   {
     // e.what() carries the position, or the offending number (e.g. 1e999 overflows).
-    throw SceneError("scene file '" + path + "' is not valid JSON: " + e.what());
+    throw SceneError(what + " is not valid JSON: " + e.what());
   }
 }
 
@@ -135,6 +146,22 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   {
     return entry.Data;
   }
+  // a splat's 'trace'/'reference'/'lines' naming a dataset that (indirectly) names it back
+  if (std::find(this->Building.begin(), this->Building.end(), name) != this->Building.end())
+  {
+    std::string cycle;
+    for (auto b = std::find(this->Building.begin(), this->Building.end(), name); b != this->Building.end(); ++b)
+    {
+      cycle += *b + " -> ";
+    }
+    throw SceneError(where + ": datasets depend on each other in a cycle: " + cycle + name);
+  }
+  this->Building.push_back(name);
+  struct Pop
+  {
+    std::vector<std::string>& Stack;
+    ~Pop() { this->Stack.pop_back(); }
+  } pop{ this->Building };
   Parameters p(entry.Spec, "datasets." + name);
   const std::string source = p.Choice("source", "file", { "file", "vortex", "splat", "smoke" });
   if (source == "splat")
@@ -180,6 +207,16 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   if (path.empty())
   {
     throw SceneError("datasets." + name + ": 'path' is required (a file relative to the scene or to the data folder)");
+  }
+  for (const std::string key : { "path", "q_path" })
+  {
+    const std::string value = p.String(key, "");
+    if (value.find('\0') != std::string::npos)
+    {
+      // C APIs would read the file named by the part before it
+      throw SceneError("datasets." + name + ": '" + key + "' holds a NUL character: '" +
+        std::string(value.c_str()) + "\\u0000" + value.substr(value.find('\0') + 1) + "'");
+    }
   }
   const std::string resolved = this->Resolve(path);
   if (!vtksys::SystemTools::FileIsFullPath(path) && !vtksys::SystemTools::FileExists(resolved))
@@ -290,6 +327,10 @@ vtkImageData* SceneDatasets::GetImage(const std::string& name, const std::string
     AttachProgress(resample, "resampling " + name);
   }
   resample->Update();
+  if (!resample->GetLastError().empty())
+  {
+    throw SceneError(where + ": resampling dataset '" + name + "': " + resample->GetLastError());
+  }
   entry.Image = resample->GetOutput();
   return entry.Image;
 }
@@ -404,7 +445,8 @@ void BuildLights(const nlohmann::json* spec, vtkRenderer* renderer)
     light->SetFocalPoint(focal.data());
     const auto color = p.Color("color", { 1, 1, 1 });
     light->SetColor(color.data());
-    light->SetIntensity(p.Number("intensity", 1.0, 0.0));
+    // intensities multiply colours in float shaders: far beyond 1 is only saturation
+    light->SetIntensity(p.Number("intensity", 1.0, 0.0, 1e4));
     light->SetPositional(p.Boolean("positional", false));
     light->SetConeAngle(p.Number("cone_angle", 30.0, 0.0, 180.0));
     light->SetExponent(p.Number("exponent", 1.0, 0.0, 128.0));

@@ -9,8 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include <functional>
+#include <istream>
 #include <map>
 #include <string>
+#include <vector>
 
 class vtkDataObject;
 class vtkImageData;
@@ -47,6 +49,7 @@ private:
     vtkSmartPointer<vtkImageData> Image;
   };
   std::map<std::string, Entry> Entries;
+  std::vector<std::string> Building; // datasets being built, outermost first (cycle detection)
   std::string SceneDirectory;
   bool Progress;
 };
@@ -76,8 +79,12 @@ struct SceneOptions
 class Scene
 {
 public:
-  /** Parse and check a scene file; throws SceneError. */
+  /** Deepest nesting of arrays/objects a scene may use (a scene needs about 6). */
+  static constexpr int MaximumJsonDepth = 64;
+  /** Parse and check a scene file (a regular file; FIFOs and devices are refused); throws SceneError. */
   static nlohmann::json ReadFile(const std::string& path);
+  /** Parse JSON text with nesting bounded by MaximumJsonDepth; `what` names it in errors. */
+  static nlohmann::json Parse(std::istream& in, const std::string& what);
   /** Build the renderer's content from a parsed scene; throws SceneError. */
   static void Build(const nlohmann::json& scene, const std::string& sceneDirectory, vtkRenderer* renderer,
     SceneOptions& options);

@@ -8,6 +8,20 @@
 
 namespace plume
 {
+/** `message` on one line: VTK's reasons may span several (newlines become "; "). */
+inline std::string OneLine(std::string message)
+{
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+  {
+    message.pop_back();
+  }
+  for (size_t at = message.find('\n'); at != std::string::npos; at = message.find('\n', at))
+  {
+    message.replace(at, 1, "; ");
+  }
+  return message;
+}
+
 class SceneError : public std::runtime_error
 {
 public:

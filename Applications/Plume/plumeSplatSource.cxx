@@ -220,6 +220,10 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
   // need a window of its own; the CPU backend is the faster one here anyway.
   splatter->SetBackend(vtkPlumeGaussianSplatter::BACKEND_CPU);
   splatter->Update();
+  if (!splatter->GetLastError().empty())
+  {
+    throw SceneError(where + ": " + splatter->GetLastError());
+  }
   vtkSmartPointer<vtkImageData> image = splatter->GetOutput();
   if (mode == "velocity")
   {
@@ -239,10 +243,15 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
   if (!save.empty())
   {
     // the splatted field as a file, for other tools (relative: to the working directory)
+    if (save.find('\0') != std::string::npos)
+    {
+      throw SceneError(where + ": 'save' path holds a NUL character: '" + std::string(save.c_str()) + "\\u0000...'");
+    }
     vtkNew<vtkXMLImageDataWriter> writer;
     writer->SetFileName(save.c_str());
     writer->SetInputData(image);
-    if (writer->Write() != 1)
+    // VTK's writer reports an unwritable path as an error message but still returns 1
+    if (writer->Write() != 1 || writer->GetErrorCode() != 0)
     {
       throw SceneError(where + ": could not write 'save' file '" + save + "'");
     }

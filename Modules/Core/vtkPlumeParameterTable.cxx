@@ -1,6 +1,7 @@
 #include "vtkPlumeParameterTable.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -18,7 +19,8 @@ std::string Number(double v)
   {
     std::ostringstream out;
     out << std::setprecision(digits) << v;
-    if (std::stod(out.str()) == v)
+    // strtod, not stod: stod throws std::out_of_range on denormals (1e-310), found by fuzzing
+    if (std::strtod(out.str().c_str(), nullptr) == v)
     {
       return out.str();
     }

@@ -1,5 +1,8 @@
 #include "vtkPlumeDatasetReader.h"
 
+#include "vtkPlumeFormatCheck.h"
+#include "vtkPlumeInputValidation.h"
+
 #include "vtkAppendFilter.h"
 #include "vtkCGNSReader.h"
 #include "vtkCallbackCommand.h"
@@ -47,6 +50,7 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <new>
 #include <cstring>
 #include <cctype>
 #include <cmath>
@@ -306,23 +310,45 @@ public:
   vtkSmartPointer<vtkOutputWindow> Previous;
 
   void DisplayText(const char* text) override { this->Previous->DisplayText(text); }
-  void DisplayErrorText(const char* text) override { this->Previous->DisplayErrorText(text); }
+  // Errors of readers made inside the reader (vtkDataSetReader's vtkStructuredPointsReader,
+  // "Number of points don't match data values!") reach no observer either.
+  void DisplayErrorText(const char* text) override
+  {
+    this->Remember(text);
+    this->Previous->DisplayErrorText(text);
+  }
   void DisplayWarningText(const char* text) override { this->Previous->DisplayWarningText(text); }
   void DisplayDebugText(const char* text) override { this->Previous->DisplayDebugText(text); }
   void DisplayGenericWarningText(const char* text) override
   {
-    if (text && this->Caught.empty() && std::strstr(text, "Error reading"))
+    if (text && std::strstr(text, "Error reading"))
     {
-      std::string message = text;
-      // keep the last line (the message itself, not VTK's file and line)
-      while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-      {
-        message.pop_back();
-      }
-      const auto newline = message.rfind('\n');
-      this->Caught = newline == std::string::npos ? message : message.substr(newline + 1);
+      this->Remember(text);
     }
     this->Previous->DisplayGenericWarningText(text);
+  }
+
+private:
+  void Remember(const char* text)
+  {
+    if (!text || !this->Caught.empty())
+    {
+      return;
+    }
+    std::string message = text;
+    // keep the last line (the message itself, not VTK's file and line) without "vtkClass (0x...): "
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+    {
+      message.pop_back();
+    }
+    const auto newline = message.rfind('\n');
+    message = newline == std::string::npos ? message : message.substr(newline + 1);
+    const auto object = message.find("): ");
+    if (message.compare(0, 3, "vtk") == 0 && object != std::string::npos && message.find(" (0x") < object)
+    {
+      message = message.substr(object + 3);
+    }
+    this->Caught = message;
   }
 };
 
@@ -666,9 +692,47 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
         "' of " + path + "; supported: " + Join(vtkPlumeDatasetReader::SupportedExtensions());
     }
   }
-  if (!vtksys::SystemTools::FileExists(path))
+  // FIFOs and devices would block or never end; a NUL in the name would read another file.
+  std::string notRegular = vtkPlumeInputValidation::CheckRegularFile(path);
+  if (!notRegular.empty())
   {
-    return "file not found: " + path;
+    return notRegular;
+  }
+  if (kind == "exodus")
+  {
+    // VTK's Exodus reader indexes points with the stored connectivity and reads cut files as zeros
+    const std::string corrupt = vtkPlumeFormatCheck::CheckNetCDFClassic(path);
+    if (!corrupt.empty())
+    {
+      return "corrupt Exodus II file " + path + ": " + corrupt;
+    }
+  }
+  if (kind == "legacy")
+  {
+    // VTK's legacy reader reads on from a closed file after a short cell list (SEGV)
+    const std::string corrupt = vtkPlumeFormatCheck::CheckLegacyVTK(path);
+    if (!corrupt.empty())
+    {
+      return "corrupt legacy VTK file " + path + ": " + corrupt;
+    }
+  }
+  if (kind == "xml")
+  {
+    // VTK's XML parser trusts appended block headers (SEGV or tens of GB allocated)
+    const std::string corrupt = vtkPlumeFormatCheck::CheckXMLAppended(path);
+    if (!corrupt.empty())
+    {
+      return "corrupt VTK XML file " + path + ": " + corrupt;
+    }
+  }
+  if (kind == "ensight")
+  {
+    // VTK's EnSight reader reads past the end of a cut geometry file (SEGV)
+    const std::string corrupt = vtkPlumeFormatCheck::CheckEnSightGold(path);
+    if (!corrupt.empty())
+    {
+      return "corrupt EnSight case " + path + ": " + corrupt;
+    }
   }
   if (kind == "cgns" && !LooksLikeCGNS(path))
   {
@@ -684,6 +748,11 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
       {
         return "PLOT3D solution (Q) file not found: " + qPath;
       }
+      notRegular = vtkPlumeInputValidation::CheckRegularFile(qPath);
+      if (!notRegular.empty())
+      {
+        return "PLOT3D solution (Q) file: " + notRegular;
+      }
     }
     else
     {
@@ -696,6 +765,25 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
   }
   return "";
 }
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkPlumeDatasetReader::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  try
+  {
+    return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  }
+  catch (const std::bad_alloc&)
+  {
+    this->LastError = "the " + (this->Internal->Kind.empty() ? std::string("dataset") : this->Internal->Kind) +
+      " reader ran out of memory reading " + (this->FileName ? this->FileName : "(no file)") +
+      " (a header announcing more data than the file holds?)";
+    this->Internal->Reader = nullptr; // start from scratch next time
+    this->Internal->Key.clear();
+    return 0;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -971,6 +1059,23 @@ int vtkPlumeDatasetReader::RequestInformation(
       return 0;
     }
 
+    // The grid header as the reader understood it (it sizes a memset from it unchecked).
+    if (auto* plot3d = vtkMultiBlockPLOT3DReader::SafeDownCast(in.Reader))
+    {
+      const std::string corrupt = plot3d->GetBinaryFile()
+        ? vtkPlumeFormatCheck::CheckPlot3DGrid(path,
+            plot3d->GetByteOrder() == vtkMultiBlockPLOT3DReader::FILE_BIG_ENDIAN, plot3d->GetHasByteCount(),
+            plot3d->GetMultiGrid(), plot3d->GetTwoDimensionalGeometry(), plot3d->GetDoublePrecision(),
+            plot3d->GetIBlanking())
+        : std::string();
+      if (!corrupt.empty())
+      {
+        this->LastError = "corrupt PLOT3D file " + path + ": " + corrupt;
+        in.Reader = nullptr;
+        in.Key.clear();
+        return 0;
+      }
+    }
     // Array selections are only known after the reader's RequestInformation.
     if (auto* exodus = vtkExodusIIReader::SafeDownCast(in.Reader))
     {
@@ -1009,6 +1114,26 @@ int vtkPlumeDatasetReader::RequestInformation(
       (vtkImageData::SafeDownCast(innerData) || vtkStructuredGrid::SafeDownCast(innerData) ||
         vtkRectilinearGrid::SafeDownCast(innerData)))
     {
+      // A header may announce any extent: refuse one whose points cannot fit before the
+      // reader allocates them (one byte per point, the least any point array takes; the
+      // renderers check their own, larger needs later).
+      const int* we = innerInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+      double points = 1;
+      for (int a = 0; a < 3; ++a)
+      {
+        points *= std::max(0.0, double(we[2 * a + 1]) - double(we[2 * a]) + 1.0);
+      }
+      const std::string tooBig = vtkPlumeInputValidation::CheckMemory(points,
+        "the extent [" + std::to_string(we[0]) + ", " + std::to_string(we[1]) + ", " + std::to_string(we[2]) +
+          ", " + std::to_string(we[3]) + ", " + std::to_string(we[4]) + ", " + std::to_string(we[5]) +
+          "] in " + path + " (" + Number(points) + " points)");
+      if (!tooBig.empty())
+      {
+        this->LastError = tooBig;
+        in.Reader = nullptr;
+        in.Key.clear();
+        return 0;
+      }
       outInfo->CopyEntry(innerInfo, vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
       if (innerInfo->Has(vtkDataObject::ORIGIN()))
       {
@@ -1119,16 +1244,30 @@ int vtkPlumeDatasetReader::RequestData(
     std::vector<vtkSmartPointer<vtkDataObject>> parts;
     for (size_t i = 0; i < entries.size(); ++i)
     {
-      if (!vtksys::SystemTools::FileExists(entries[i].File, true))
+      std::string notRegular = vtkPlumeInputValidation::CheckRegularFile(entries[i].File);
+      if (notRegular.empty())
       {
-        return fail("file not found: " + entries[i].File + " (listed in " + in.Path + ")");
+        notRegular = vtkPlumeFormatCheck::CheckXMLAppended(entries[i].File);
+        notRegular = notRegular.empty() ? notRegular : "corrupt VTK XML file " + entries[i].File + ": " + notRegular;
+      }
+      if (!notRegular.empty())
+      {
+        return fail(notRegular + " (listed in " + in.Path + ")");
       }
       vtkNew<vtkXMLGenericDataObjectReader> reader;
       reader->SetFileName(entries[i].File.c_str());
       in.Watch(reader);
       in.ProgressOffset = double(i) / entries.size();
       in.ProgressScale = 1.0 / entries.size();
-      reader->Update();
+      try
+      {
+        reader->Update();
+      }
+      catch (const std::bad_alloc&)
+      {
+        return fail("the xml reader ran out of memory reading " + entries[i].File + " (listed in " + in.Path +
+          "; a header announcing more data than the file holds?)");
+      }
       vtkDataObject* part = reader->GetOutputDataObject(0);
       if (!part || !in.Captured.empty() || reader->GetErrorCode() != 0)
       {
@@ -1159,7 +1298,19 @@ int vtkPlumeDatasetReader::RequestData(
     in.ProgressOffset = 0;
     in.ProgressScale = 1;
     ScopedReadWarningCatcher warnings;
-    const int ok = n > 0 ? in.Reader->UpdateTimeStep(times[step]) : in.Reader->GetExecutive()->Update();
+    int ok = 0;
+    try
+    {
+      ok = n > 0 ? in.Reader->UpdateTimeStep(times[step]) : in.Reader->GetExecutive()->Update();
+    }
+    catch (const std::bad_alloc&)
+    {
+      // VTK's readers allocate what a header announces (e.g. an XML compressed-block count)
+      in.Reader = nullptr;
+      in.Key.clear();
+      return fail("the " + in.Kind + " reader ran out of memory reading " + in.Path +
+        " (a header announcing more data than the file holds?)");
+    }
     vtkDataObject* produced = in.Reader->GetOutputDataObject(0);
     if (!warnings.Caught().empty())
     {
@@ -1295,6 +1446,15 @@ int vtkPlumeDatasetReader::RequestData(
         }
       }
     }
+  }
+
+  // VTK's readers do not check connectivity or array lengths: every Plume filter and mapper
+  // downstream would read out of bounds, so a dataset that lies is refused here.
+  const std::string invalid = vtkPlumeInputValidation::CheckDataObject(data);
+  if (!invalid.empty())
+  {
+    return fail("the " + in.Kind + " reader gave inconsistent data from " + in.Path + " (corrupt file?): " +
+      invalid);
   }
 
   // Legacy STRUCTURED_POINTS comes as the old vtkStructuredPoints: hand out a plain image.

@@ -181,6 +181,9 @@ protected:
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   vtkExecutive* CreateDefaultExecutive() override;
+  // Turns std::bad_alloc from VTK's readers (headers announcing more than memory holds) into
+  // GetLastError() and a failed request.
+  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

@@ -1,5 +1,7 @@
 #include "vtkPlumeResampleToImage.h"
 
+#include "vtkPlumeInputValidation.h"
+
 #include "vtkCellData.h"
 #include "vtkCellDataToPointData.h"
 #include "vtkCompositeDataIterator.h"
@@ -346,9 +348,18 @@ int vtkPlumeResampleToImage::RequestData(
     return 0;
   }
   output->Initialize();
+  this->LastError.clear();
   if (!input)
   {
     return 1;
+  }
+  // VTK's probe follows the input's cell connectivity unchecked: refuse bad cells before it does.
+  this->LastError = vtkPlumeInputValidation::CheckDataObject(input);
+  if (!this->LastError.empty())
+  {
+    this->LastError = "invalid input: " + this->LastError;
+    vtkErrorMacro(<< this->LastError);
+    return 0;
   }
   if (auto* image = vtkImageData::SafeDownCast(input))
   {
@@ -379,6 +390,30 @@ int vtkPlumeResampleToImage::RequestData(
     }
   }
 
+  {
+    // every input array becomes a point array of the image (doubles at most), plus the mask
+    int components = 1;
+    if (auto* ds = vtkDataSet::SafeDownCast(input))
+    {
+      for (vtkDataSetAttributes* a : { static_cast<vtkDataSetAttributes*>(ds->GetPointData()),
+             static_cast<vtkDataSetAttributes*>(ds->GetCellData()) })
+      {
+        for (int i = 0; i < a->GetNumberOfArrays(); ++i)
+        {
+          components += a->GetArray(i) ? a->GetArray(i)->GetNumberOfComponents() : 0;
+        }
+      }
+    }
+    const double points = double(dims[0]) * double(dims[1]) * double(dims[2]);
+    this->LastError = vtkPlumeInputValidation::CheckMemory(points * 8.0 * components,
+      "resampling onto " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" +
+        std::to_string(dims[2]) + " points");
+    if (!this->LastError.empty())
+    {
+      vtkErrorMacro(<< this->LastError);
+      return 0;
+    }
+  }
   vtkSmartPointer<vtkDataObject> pointInput = CellsToPoints(input);
 
   vtkNew<vtkResampleToImage> resample;

@@ -24,6 +24,8 @@
 #include "PlumeDataModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
 
+#include <string> // For std::string
+
 class PLUMEDATA_EXPORT vtkPlumeResampleToImage : public vtkImageAlgorithm
 {
 public:
@@ -64,6 +66,13 @@ public:
    */
   static void ZeroOutsideMask(vtkImageData* image);
 
+  /**
+   * Why the last update produced no image ("" after a successful one): an input whose cells
+   * reference points that do not exist or whose arrays are shorter than it, or sampling
+   * dimensions over the memory budget (vtkPlumeInputValidation). Such inputs are never read.
+   */
+  const std::string& GetLastError() const { return this->LastError; }
+
 protected:
   vtkPlumeResampleToImage();
   ~vtkPlumeResampleToImage() override = default;
@@ -85,6 +94,7 @@ private:
   bool PassThrough = false;
   int Dimensions[3] = { 1, 1, 1 };
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
+  std::string LastError;
 };
 
 #endif

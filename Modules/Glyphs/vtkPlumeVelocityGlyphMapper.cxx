@@ -1,6 +1,8 @@
 #include "vtkPlumeVelocityGlyphMapper.h"
 
 #include "vtkPlumeCompositingPass.h"
+#include "vtkPlumeInputValidation.h"
+
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeImageFrame.h"
 #include "vtkPlumeLookupTexture.h"
@@ -561,6 +563,13 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   image->GetDimensions(dims);
   if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1 || image->GetNumberOfPoints() < 1)
   {
+    return;
+  }
+  // arrays shorter than the grid would be read past their end by the upload
+  const std::string invalid = vtkPlumeInputValidation::CheckArrays(image);
+  if (!invalid.empty())
+  {
+    vtkErrorMacro(<< "invalid input image, not drawn: " << invalid);
     return;
   }
   vtkDataArray* vectors = nullptr;

@@ -1,5 +1,7 @@
 #include "vtkPlumeSheetMapper.h"
 
+#include "vtkPlumeInputValidation.h"
+
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
@@ -179,7 +181,7 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
       .Doc("Multiplies every density (array or constant).")
       .Bind(&T::SetDensityScale, &T::GetDensityScale);
     t.Real("blur", "BlurRadius", 0.05)
-      .Between(0.0, 1e30)
+      .Between(0.0, MaximumSigma)
       .Units("model units")
       .Panel("Smoke")
       .Doc("Blurring radius sigma_b in the surface where no blur array is used.")
@@ -189,7 +191,7 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
       .Doc("Point array of sigma_b (1 component); empty: the constant `blur`.")
       .Bind(&T::SetBlurArrayName, &T::GetBlurArrayName);
     t.Real("thickness", "Thickness", 0.05)
-      .Between(0.0, 1e30)
+      .Between(0.0, MaximumSigma)
       .Units("model units")
       .Panel("Smoke")
       .Doc("Thickness sigma_t across the surface where no thickness array is used.")
@@ -376,6 +378,18 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     this->ThicknessArrayName, this->AbsorptionArrayName };
   if (!impl.HaveUpload || sig != impl.Uploaded || !impl.Buffer->GetHandle())
   {
+    // Readers hand out cells with point ids that do not exist: refuse them before reading any.
+    std::string invalid = vtkPlumeInputValidation::CheckCells(poly);
+    if (invalid.empty())
+    {
+      invalid = vtkPlumeInputValidation::CheckArrays(poly);
+    }
+    if (!invalid.empty())
+    {
+      vtkErrorMacro(<< "invalid input mesh, not drawn: " << invalid);
+      impl.HaveUpload = false;
+      return;
+    }
     vtkDataArray* dArr = NamedArray(poly, this->DensityArrayName, 1);
     vtkDataArray* bArr = NamedArray(poly, this->BlurArrayName, 1);
     vtkDataArray* tArr = NamedArray(poly, this->ThicknessArrayName, 1);
@@ -425,8 +439,8 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
         out[a] = static_cast<float>(p[a] - impl.Centre[a]);
         out[3 + a] = static_cast<float>(std::min(d * rgb[a], 1e30));
       }
-      out[6] = bArr ? static_cast<float>(std::min(Clean(bArr->GetComponent(id, 0)), 1e30)) : 1.0f;
-      out[7] = tArr ? static_cast<float>(std::min(Clean(tArr->GetComponent(id, 0)), 1e30)) : 1.0f;
+      out[6] = bArr ? static_cast<float>(std::min(Clean(bArr->GetComponent(id, 0)), MaximumSigma)) : 1.0f;
+      out[7] = tArr ? static_cast<float>(std::min(Clean(tArr->GetComponent(id, 0)), MaximumSigma)) : 1.0f;
     };
     auto addTriangle = [&](vtkIdType i0, vtkIdType i1, vtkIdType i2) {
       float c[3][8];
@@ -498,8 +512,8 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
   // what multiplies the uploaded corner values (the constants, where no array is used)
   const float factors[3] = {
     static_cast<float>(std::min(Clean((impl.DensityFromArray ? 1.0 : this->Density) * this->DensityScale), 1e30)),
-    static_cast<float>(impl.BlurFromArray ? 1.0 : std::min(Clean(this->BlurRadius), 1e30)),
-    static_cast<float>(this->ThinSheet ? 0.0 : (impl.ThicknessFromArray ? 1.0 : std::min(Clean(this->Thickness), 1e30)))
+    static_cast<float>(impl.BlurFromArray ? 1.0 : std::min(Clean(this->BlurRadius), MaximumSigma)),
+    static_cast<float>(this->ThinSheet ? 0.0 : (impl.ThicknessFromArray ? 1.0 : std::min(Clean(this->Thickness), MaximumSigma)))
   };
   if (impl.VertexCount < 3 || !(factors[0] > 0.0f))
   {

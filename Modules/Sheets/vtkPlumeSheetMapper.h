@@ -106,6 +106,14 @@ public:
   vtkGetMacro(DensityScale, double);
   ///@}
 
+  /**
+   * Largest sigma_b and sigma_t drawn (model units, 1e15): larger blur or thickness values
+   * (constants or array values) are clamped to it. The shaders square and multiply sigmas
+   * in 32-bit floats, which overflow to NaN (a black frame) from about 1e18; at 1e15 the
+   * smoke of any real mesh is already spread to nothing.
+   */
+  static constexpr double MaximumSigma = 1e15;
+
   ///@{
   /** Point array of the blurring radius sigma_b (model units). Empty (default): BlurRadius. */
   vtkSetStdStringFromCharMacro(BlurArrayName);

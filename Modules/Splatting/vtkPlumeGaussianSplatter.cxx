@@ -1,5 +1,7 @@
 #include "vtkPlumeGaussianSplatter.h"
 
+#include "vtkPlumeInputValidation.h"
+
 #include "plumeSplatCPU.h"
 #include "plumeSplatGPU.h"
 #include "plumeSplatKernel.h"
@@ -25,6 +27,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <cstring>
 
 using plume::splat::Grid;
@@ -181,6 +184,21 @@ int vtkPlumeGaussianSplatter::RequestData(
   vtkImageData* output = vtkImageData::GetData(outputVector, 0);
   vtkPointSet* points = vtkPointSet::GetData(inputVector[0], 0);
   vtkPolyData* lines = vtkPolyData::GetData(inputVector[1], 0);
+  this->LastError.clear();
+  auto refuse = [this](const std::string& message) {
+    this->LastError = message;
+    vtkErrorMacro(<< message);
+    return 0;
+  };
+  // the line ids and per-point arrays are read unchecked below
+  for (vtkDataSet* input : { static_cast<vtkDataSet*>(points), static_cast<vtkDataSet*>(lines) })
+  {
+    const std::string invalid = vtkPlumeInputValidation::CheckDataObject(input);
+    if (!invalid.empty())
+    {
+      return refuse(std::string(input == lines ? "lines" : "points") + ": invalid input: " + invalid);
+    }
+  }
 
   const bool sum = this->Mode != DISTANCE_MAX;
   Settings settings;
@@ -385,6 +403,37 @@ int vtkPlumeGaussianSplatter::RequestData(
       vtkErrorMacro(<< "output grid: spacing along axis " << a << " is " << grid.Spacing[a]
                     << " (needs a positive, finite spacing and origin)");
       return 0;
+    }
+  }
+  // Bound what grows with the parameters before allocating or splatting: the grid's memory
+  // and the voxels all footprints touch (a sigma huge next to the spacing is millions each).
+  {
+    std::string tooMuch = vtkPlumeInputValidation::CheckMemory(
+      grid.Voxels() * 4.0 * settings.Components, "the splat grid (" + std::to_string(grid.Dims[0]) + "x" +
+        std::to_string(grid.Dims[1]) + "x" + std::to_string(grid.Dims[2]) + ")");
+    if (!tooMuch.empty())
+    {
+      return refuse(tooMuch);
+    }
+    double voxels = 0;
+    for (const Splat& s : splats)
+    {
+      const double reach = sum ? this->CutoffFactor * s.Radius : s.Radius;
+      double box = 1;
+      for (int a = 0; a < 3; ++a)
+      {
+        box *= std::min<double>(grid.Dims[a], 2 * reach / grid.Spacing[a] + 1);
+      }
+      voxels += box;
+    }
+    std::ostringstream what;
+    what << "splatting " << splats.size() << " splats (radius " << this->Radius << ", cutoff "
+         << this->CutoffFactor << ") onto " << grid.Dims[0] << "x" << grid.Dims[1] << "x" << grid.Dims[2]
+         << " voxels";
+    tooMuch = vtkPlumeInputValidation::CheckWork(voxels, what.str());
+    if (!tooMuch.empty())
+    {
+      return refuse(tooMuch + "; use a smaller radius or a coarser grid");
     }
   }
   // Reuse the previous output's array when nobody else holds it and it has

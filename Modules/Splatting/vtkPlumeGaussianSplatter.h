@@ -198,6 +198,14 @@ public:
   vtkGetMacro(LastSplatSeconds, double);
 
   /**
+   * Why the last execution produced no field ("" after a successful one): inputs whose cells
+   * reference points that do not exist or whose arrays are shorter than them, a grid over the
+   * memory budget, or footprints whose voxel count is over the work budget
+   * (vtkPlumeInputValidation: $PLUME_MEMORY_BUDGET_MB, $PLUME_WORK_BUDGET).
+   */
+  const std::string& GetLastError() const { return this->LastError; }
+
+  /**
    * Voxel touches (Σ over splats of voxels in its box) above which AUTO uses
    * the GPU. Default: measured on this kind of machine (see Documentation/Splatting.md).
    */
@@ -253,6 +261,7 @@ protected:
   vtkIdType SkippedCount = 0;
   int ExecuteCount = 0;
   double LastSplatSeconds = 0;
+  std::string LastError;
 
 private:
   vtkPlumeGaussianSplatter(const vtkPlumeGaussianSplatter&) = delete;

@@ -1,5 +1,7 @@
 #include "vtkPlumeVolumeMapper.h"
 
+#include "vtkPlumeInputValidation.h"
+
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeImageFrame.h"
@@ -359,6 +361,13 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (!image)
   {
     vtkErrorMacro(<< "no input image");
+    return;
+  }
+  // arrays shorter than the grid would be read past their end by the upload
+  const std::string invalid = vtkPlumeInputValidation::CheckArrays(image);
+  if (!invalid.empty())
+  {
+    vtkErrorMacro(<< "invalid input image, not drawn: " << invalid);
     return;
   }
   int cellFlag = 0;

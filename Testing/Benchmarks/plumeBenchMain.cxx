@@ -13,6 +13,7 @@
 #include "vtkSMPTools.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
@@ -103,6 +104,18 @@ int Bench(const std::string& name, bool quick, const std::string& job, plume::Ba
   const plume::bench::Benchmark& benchmark = it->second;
   if (!job.empty())
   {
+    // jobs are parsed by each benchmark without checks: only run the ones it lists
+    const auto known = benchmark.Jobs(quick);
+    if (std::find(known.begin(), known.end(), job) == known.end())
+    {
+      std::string names;
+      for (const auto& k : known)
+      {
+        names += (names.empty() ? "" : ", ") + k;
+      }
+      throw plume::SceneError("bench " + name + ": unknown job '" + job + "'" + (quick ? " (with --quick)" : "") +
+        " (known: " + names + ")");
+    }
     plume::bench::Context context;
     context.Quick = quick;
     context.MakeWindow = [backend](int w, int h) { return plume::RequireRenderWindow(backend, w, h); };

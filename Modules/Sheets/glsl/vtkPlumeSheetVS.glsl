@@ -23,7 +23,7 @@ void main()
 {
   cornerEye = (MCVCRel * vec4(sheetPosition, 1.0)).xyz;
   cornerDensity = min(sheetDensity * SheetFactors.x, vec3(1e30));
-  cornerSigma = min(sheetSigma * SheetFactors.yz, vec2(1e30)) * ModelToEyeScale;
+  cornerSigma = min(sheetSigma * SheetFactors.yz, vec2(1e15)) * ModelToEyeScale; // vtkPlumeSheetMapper::MaximumSigma
   cornerTriangle = gl_VertexID / 3; // gl_VertexID includes the draw's first: the index in the whole buffer
   gl_Position = vec4(cornerEye, 1.0);
 }

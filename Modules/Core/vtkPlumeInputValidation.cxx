@@ -1,0 +1,504 @@
+#include "vtkPlumeInputValidation.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRectilinearGrid.h"
+#include "vtkSmartPointer.h"
+#include "vtkStructuredGrid.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace
+{
+std::string Num(double v)
+{
+  std::ostringstream s;
+  s.precision(12);
+  s << v;
+  return s.str();
+}
+
+template <typename T>
+std::string CheckStorage(const T* offsets, vtkIdType numberOfOffsets, const T* conn, vtkIdType connSize,
+  vtkIdType numberOfPoints, const char* what)
+{
+  if (numberOfOffsets == 0)
+  {
+    return connSize == 0 ? std::string()
+                         : std::string(what) + ": " + std::to_string(connSize) + " point ids but no cells";
+  }
+  if (offsets[0] != 0)
+  {
+    return std::string(what) + ": the first cell starts at offset " + std::to_string(offsets[0]) + ", not 0";
+  }
+  for (vtkIdType c = 1; c < numberOfOffsets; ++c)
+  {
+    if (offsets[c] < offsets[c - 1] || static_cast<vtkIdType>(offsets[c]) > connSize)
+    {
+      return std::string(what) + ": cell " + std::to_string(c - 1) + " has offset " +
+        std::to_string(offsets[c]) + " out of order or beyond the " + std::to_string(connSize) +
+        " point ids";
+    }
+  }
+  for (vtkIdType c = 0; c + 1 < numberOfOffsets; ++c)
+  {
+    for (vtkIdType k = offsets[c]; k < static_cast<vtkIdType>(offsets[c + 1]); ++k)
+    {
+      const vtkIdType id = static_cast<vtkIdType>(conn[k]);
+      if (id < 0 || id >= numberOfPoints)
+      {
+        return std::string(what) + ": cell " + std::to_string(c) + " references point id " +
+          std::to_string(id) + ", but the dataset has " + std::to_string(numberOfPoints) +
+          " points (valid ids 0 to " + std::to_string(numberOfPoints - 1) + ")";
+      }
+    }
+  }
+  return std::string();
+}
+
+std::string CheckCount(vtkIdType count, const int extent[6], const char* kind)
+{
+  double expected = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    expected *= std::max(0.0, double(extent[2 * a + 1]) - double(extent[2 * a]) + 1.0);
+  }
+  if (double(count) != expected)
+  {
+    return std::string(kind) + " extent [" + std::to_string(extent[0]) + ", " + std::to_string(extent[1]) + ", " +
+      std::to_string(extent[2]) + ", " + std::to_string(extent[3]) + ", " + std::to_string(extent[4]) + ", " +
+      std::to_string(extent[5]) + "] means " + Num(expected) + " points, but it has " + std::to_string(count);
+  }
+  return std::string();
+}
+
+double PositiveEnv(const char* name, double fallback)
+{
+  if (const char* env = std::getenv(name))
+  {
+    double v = 0;
+    if (vtkPlumeInputValidation::ParseFinite(env, v) && v > 0)
+    {
+      return v;
+    }
+  }
+  return fallback;
+}
+
+std::string Megabytes(double bytes)
+{
+  std::ostringstream s;
+  s.precision(bytes < 1e3 * (1 << 20) ? 3 : 12);
+  s << bytes / (1 << 20) << " MB";
+  return s.str();
+}
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeInputValidation::CheckRegularFile(const std::string& path)
+{
+  if (path.find('\0') != std::string::npos)
+  {
+    return "the path '" + std::string(path.c_str()) + "\\u0000...' holds a NUL character";
+  }
+  if (path.empty())
+  {
+    return "the path is empty";
+  }
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0)
+  {
+    return "file not found: " + path;
+  }
+  if (S_ISDIR(st.st_mode))
+  {
+    return "'" + path + "' is a directory, not a file";
+  }
+  if (S_ISFIFO(st.st_mode))
+  {
+    return "'" + path + "' is a FIFO (named pipe), not a regular file; reading it could block forever";
+  }
+  if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
+  {
+    return "'" + path + "' is a device, not a regular file";
+  }
+  if (S_ISSOCK(st.st_mode))
+  {
+    return "'" + path + "' is a socket, not a regular file";
+  }
+  if (!S_ISREG(st.st_mode))
+  {
+    return "'" + path + "' is not a regular file";
+  }
+  if (access(path.c_str(), R_OK) != 0)
+  {
+    return "'" + path + "' is not readable (permission denied)";
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeInputValidation::CheckCellArray(
+  vtkCellArray* cells, vtkIdType numberOfPoints, const char* what)
+{
+  if (!cells)
+  {
+    return std::string();
+  }
+  if (cells->IsStorage64Bit())
+  {
+    auto* o = cells->GetOffsetsArray64();
+    auto* c = cells->GetConnectivityArray64();
+    return CheckStorage(o->GetPointer(0), o->GetNumberOfValues(), c->GetPointer(0), c->GetNumberOfValues(),
+      numberOfPoints, what);
+  }
+  auto* o = cells->GetOffsetsArray32();
+  auto* c = cells->GetConnectivityArray32();
+  return CheckStorage(
+    o->GetPointer(0), o->GetNumberOfValues(), c->GetPointer(0), c->GetNumberOfValues(), numberOfPoints, what);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeInputValidation::CheckCells(vtkDataSet* data)
+{
+  if (!data)
+  {
+    return std::string();
+  }
+  const vtkIdType n = data->GetNumberOfPoints();
+  if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    const std::pair<vtkCellArray*, const char*> arrays[] = { { poly->GetVerts(), "vertices" },
+      { poly->GetLines(), "lines" }, { poly->GetPolys(), "polygons" }, { poly->GetStrips(), "triangle strips" } };
+    for (const auto& a : arrays)
+    {
+      std::string error = CheckCellArray(a.first, n, a.second);
+      if (!error.empty())
+      {
+        return error;
+      }
+    }
+    return std::string();
+  }
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    vtkCellArray* cells = grid->GetCells();
+    std::string error = CheckCellArray(cells, n, "cells");
+    if (!error.empty())
+    {
+      return error;
+    }
+    vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+    const vtkIdType cellCount = cells ? cells->GetNumberOfCells() : 0;
+    const vtkIdType typeCount = types ? types->GetNumberOfValues() : 0;
+    if (cellCount != typeCount)
+    {
+      return "cells: " + std::to_string(cellCount) + " cells but " + std::to_string(typeCount) + " cell types";
+    }
+    return std::string();
+  }
+  int extent[6];
+  if (auto* image = vtkImageData::SafeDownCast(data))
+  {
+    image->GetExtent(extent);
+    return CheckCount(n, extent, "image");
+  }
+  if (auto* sg = vtkStructuredGrid::SafeDownCast(data))
+  {
+    sg->GetExtent(extent);
+    return CheckCount(n, extent, "structured grid");
+  }
+  if (auto* rg = vtkRectilinearGrid::SafeDownCast(data))
+  {
+    rg->GetExtent(extent);
+    return CheckCount(n, extent, "rectilinear grid");
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeInputValidation::CheckArrays(vtkDataSet* data)
+{
+  if (!data)
+  {
+    return std::string();
+  }
+  const vtkIdType counts[2] = { data->GetNumberOfPoints(), data->GetNumberOfCells() };
+  vtkDataSetAttributes* attributes[2] = { data->GetPointData(), data->GetCellData() };
+  const char* kinds[2] = { "point", "cell" };
+  for (int k = 0; k < 2; ++k)
+  {
+    for (int i = 0; attributes[k] && i < attributes[k]->GetNumberOfArrays(); ++i)
+    {
+      vtkAbstractArray* array = attributes[k]->GetAbstractArray(i);
+      if (array && array->GetNumberOfTuples() != counts[k])
+      {
+        return std::string(kinds[k]) + " array '" + (array->GetName() ? array->GetName() : "(unnamed)") +
+          "' has " + std::to_string(array->GetNumberOfTuples()) + " tuples, but the dataset has " +
+          std::to_string(counts[k]) + " " + kinds[k] + "s";
+      }
+    }
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeInputValidation::CheckFinitePoints(vtkDataSet* data)
+{
+  if (auto* ps = vtkPointSet::SafeDownCast(data))
+  {
+    if (vtkPoints* points = ps->GetPoints())
+    {
+      vtkDataArray* coords = points->GetData();
+      const vtkIdType n = coords->GetNumberOfTuples();
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          const double v = coords->GetComponent(i, c);
+          if (!std::isfinite(v))
+          {
+            return "point " + std::to_string(i) + " has a non-finite coordinate (" + Num(v) + ")";
+          }
+        }
+      }
+    }
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeInputValidation::CheckDataObject(vtkDataObject* data)
+{
+  if (auto* ds = vtkDataSet::SafeDownCast(data))
+  {
+    std::string error = CheckCells(ds);
+    return error.empty() ? CheckArrays(ds) : error;
+  }
+  if (auto* cds = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(cds->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      std::string error = CheckDataObject(it->GetCurrentDataObject());
+      if (!error.empty())
+      {
+        return "block " + std::to_string(it->GetCurrentFlatIndex()) + ": " + error;
+      }
+    }
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeInputValidation::FiniteRange(
+  vtkDataArray* array, int component, double range[2], vtkIdType* nonFinite, const unsigned char* mask)
+{
+  range[0] = std::numeric_limits<double>::infinity();
+  range[1] = -std::numeric_limits<double>::infinity();
+  vtkIdType bad = 0;
+  if (array)
+  {
+    const int nc = array->GetNumberOfComponents();
+    const vtkIdType n = array->GetNumberOfTuples();
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (mask && !mask[i])
+      {
+        continue;
+      }
+      double v;
+      if (component < 0)
+      {
+        double s = 0;
+        for (int c = 0; c < nc; ++c)
+        {
+          const double x = array->GetComponent(i, c);
+          s += x * x;
+        }
+        v = std::sqrt(s);
+        // the norm of finite components can overflow: that tuple is not finite either
+      }
+      else
+      {
+        v = array->GetComponent(i, component);
+      }
+      if (!std::isfinite(v))
+      {
+        ++bad;
+        continue;
+      }
+      range[0] = std::min(range[0], v);
+      range[1] = std::max(range[1], v);
+    }
+  }
+  if (nonFinite)
+  {
+    *nonFinite = bad;
+  }
+  if (!(range[0] <= range[1]))
+  {
+    range[0] = range[1] = 0;
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeInputValidation::ParseInteger(
+  const std::string& text, long long min, long long max, long long& value)
+{
+  if (text.empty() || text.find('\0') != std::string::npos)
+  {
+    return false;
+  }
+  size_t i = 0;
+  const bool negative = text[0] == '-';
+  if (negative)
+  {
+    ++i;
+  }
+  if (i >= text.size())
+  {
+    return false;
+  }
+  unsigned long long magnitude = 0;
+  const unsigned long long limit = negative
+    ? static_cast<unsigned long long>(std::numeric_limits<long long>::max()) + 1ULL
+    : static_cast<unsigned long long>(std::numeric_limits<long long>::max());
+  for (; i < text.size(); ++i)
+  {
+    const char ch = text[i];
+    if (ch < '0' || ch > '9')
+    {
+      return false;
+    }
+    const unsigned digit = static_cast<unsigned>(ch - '0');
+    if (magnitude > (limit - digit) / 10)
+    {
+      return false; // overflow
+    }
+    magnitude = magnitude * 10 + digit;
+  }
+  long long v;
+  if (negative)
+  {
+    v = magnitude == limit ? std::numeric_limits<long long>::min() : -static_cast<long long>(magnitude);
+  }
+  else
+  {
+    v = static_cast<long long>(magnitude);
+  }
+  if (v < min || v > max)
+  {
+    return false;
+  }
+  value = v;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeInputValidation::ParseFinite(const std::string& text, double& value)
+{
+  if (text.empty() || text.find('\0') != std::string::npos || std::isspace(static_cast<unsigned char>(text[0])))
+  {
+    return false;
+  }
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
+  {
+    return false;
+  }
+  value = v;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeInputValidation::ParseSize(const std::string& text, int maxSide, int& width, int& height)
+{
+  const size_t x = text.find_first_of("xX");
+  if (x == std::string::npos)
+  {
+    return false;
+  }
+  long long w = 0, h = 0;
+  if (!ParseInteger(text.substr(0, x), 1, maxSide, w) || !ParseInteger(text.substr(x + 1), 1, maxSide, h))
+  {
+    return false;
+  }
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeInputValidation::CheckFinite(double value, const std::string& what)
+{
+  return std::isfinite(value) ? std::string() : what + " is " + Num(value) + " (not a finite number)";
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeInputValidation::MemoryBudgetBytes()
+{
+  const double mb = PositiveEnv("PLUME_MEMORY_BUDGET_MB", 0);
+  if (mb > 0)
+  {
+    return mb * (1 << 20);
+  }
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long pageSize = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && pageSize > 0 ? 0.5 * double(pages) * double(pageSize) : 4.0 * (1 << 30);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeInputValidation::CheckMemory(double bytes, const std::string& what)
+{
+  const double budget = MemoryBudgetBytes();
+  if (!(bytes <= budget)) // NaN too
+  {
+    return what + " needs about " + Megabytes(bytes) + ", over the memory budget of " + Megabytes(budget) +
+      " (PLUME_MEMORY_BUDGET_MB)";
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeInputValidation::WorkBudget()
+{
+  return PositiveEnv("PLUME_WORK_BUDGET", 1e10);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeInputValidation::CheckWork(double operations, const std::string& what)
+{
+  const double budget = WorkBudget();
+  if (!(operations <= budget))
+  {
+    std::ostringstream s;
+    s.precision(3);
+    s << what << " needs about " << operations << " operations, over the work budget of " << budget
+      << " (PLUME_WORK_BUDGET)";
+    return s.str();
+  }
+  return std::string();
+}

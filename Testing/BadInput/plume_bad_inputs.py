@@ -1,0 +1,592 @@
+#!/usr/bin/python3
+"""The bad-input corpus: hostile scenes, datasets and command lines, each run
+through the real `plume` with its expected outcome.
+
+Inputs are written into WORKDIR at test time: hand-written small files
+(legacy and XML datasets whose cells name points that do not exist, arrays
+shorter than their dataset, headers that lie about sizes, scenes nested
+thousands of levels deep or whose datasets depend on each other in a cycle,
+FIFOs, devices, directories) and files made from the shared data
+($PLUME_DATA_DIR) by truncating them, flipping bits in their payload and
+editing their headers.
+
+Every case has one expected outcome:
+  error    exit code 2 and exactly one stderr line, "plume: error: ..."
+           matching the case's regex (the problem, the value, where from)
+  warn     exit code 0 and a "plume: warning: ..." line matching the regex
+  ok       exit code 0 (the correct result; stdout matches the regex)
+  survive  (payload bit flips only) exit 0, or exit 2 with one error line:
+           the values are garbage but the structure may be intact, so
+           either outcome is correct; never a crash, a hang or a second line
+Any case that crashes (signal, exit code > 100), hangs (killed after
+--timeout seconds) or matches the wrong message fails.
+
+usage: plume_bad_inputs.py PLUME WORKDIR [--only REGEX] [--timeout S] [--jobs N] [--list]
+Prints one line per case and a summary with the counts; exits 1 on any failure.
+"""
+import argparse
+import concurrent.futures
+import json
+import os
+import re
+import shutil
+import signal
+import stat
+import subprocess
+import sys
+import time
+
+from vtkmodules.vtkIOImage import vtkPNGReader  # Debian's /usr/bin/python3 (python3-vtk9): image checks
+
+DATA = os.environ.get("PLUME_DATA_DIR", "/work/shared/data")
+
+
+# --- helpers writing inputs --------------------------------------------------
+class Corpus:
+    def __init__(self, work):
+        self.work = work
+        self.cases = []
+
+    def path(self, name):
+        return os.path.join(self.work, name)
+
+    def write(self, name, content, mode="w"):
+        p = self.path(name)
+        os.makedirs(os.path.dirname(p), exist_ok=True)
+        with open(p, mode) as f:
+            f.write(content)
+        return p
+
+    def scene(self, name, scene):
+        text = scene if isinstance(scene, str) else json.dumps(scene)
+        return self.write(name + ".json", text)
+
+    def fifo(self, name):
+        p = self.path(name)
+        os.makedirs(os.path.dirname(p), exist_ok=True)
+        if os.path.lexists(p):
+            os.remove(p)
+        os.mkfifo(p)
+        return p
+
+    def symlink(self, name, target):
+        p = self.path(name)
+        if os.path.lexists(p):
+            os.remove(p)
+        os.symlink(target, p)
+        return p
+
+    def derived(self, name, source, edit):
+        """A copy of a shared data file with `edit(bytes) -> bytes` applied."""
+        with open(os.path.join(DATA, source), "rb") as f:
+            data = f.read()
+        return self.write(name, edit(data), "wb")
+
+    def add(self, name, kind, args, expect="", env=None, image=None, limit_mb=None):
+        self.cases.append(dict(name=name, kind=kind, args=args, expect=expect, env=env or {}, image=image,
+                               limit_mb=limit_mb))
+
+    def render(self, name, kind, scene_path, expect, extra=(), env=None, image=None):
+        """`image`: {channel: minimum} the output's brightest value of that channel must reach (0-255)."""
+        size = "160x120" if image else "64x48"
+        self.add(name, kind, ["render", scene_path, "-o", self.path(name + ".png"), "--size", size, *extra],
+                 expect, env, image)
+
+
+def legacy_poly(section, points="0 0 0 1 0 0 0 1 0 1 1 0", npts=4, tail=""):
+    return ("# vtk DataFile Version 3.0\nbad\nASCII\nDATASET POLYDATA\nPOINTS %d float\n%s\n%s\n%s"
+            % (npts, points, section, tail))
+
+
+def legacy_ugrid(cells, types, tail=""):
+    return ("# vtk DataFile Version 3.0\nbad\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n"
+            "0 0 0 1 0 0 0 1 0 0 0 1\n%s\n%s\n%s" % (cells, types, tail))
+
+
+def xml_poly(points, conn, offsets, piece='NumberOfPoints="4" NumberOfPolys="2"', pointdata=""):
+    return ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
+            '<PolyData><Piece %s>\n%s<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">'
+            '%s</DataArray></Points>\n<Polys><DataArray type="Int64" Name="connectivity" format="ascii">%s'
+            '</DataArray>\n<DataArray type="Int64" Name="offsets" format="ascii">%s</DataArray></Polys>\n'
+            '</Piece></PolyData></VTKFile>\n' % (piece, pointdata, points, conn, offsets))
+
+
+def xml_image(whole, piece, values):
+    return ('<?xml version="1.0"?>\n<VTKFile type="ImageData" version="0.1" byte_order="LittleEndian">\n'
+            '<ImageData WholeExtent="%s" Origin="0 0 0" Spacing="1 1 1"><Piece Extent="%s">\n'
+            '<PointData Scalars="s"><DataArray type="Float32" Name="s" format="ascii">%s</DataArray></PointData>\n'
+            '</Piece></ImageData></VTKFile>\n' % (whole, piece, values))
+
+
+def truncate(fraction):
+    return lambda data: data[: int(len(data) * fraction)]
+
+
+def flip(seed, count, start_fraction):
+    """Flips `count` bits at deterministic places after `start_fraction` of the file (the payload)."""
+    def edit(data):
+        data = bytearray(data)
+        state = seed * 2654435761 % 2**32 or 1
+        lo = int(len(data) * start_fraction)
+        for _ in range(count):
+            state = (state * 1103515245 + 12345) % 2**31
+            i = lo + state % max(1, len(data) - lo)
+            data[i] ^= 1 << (state >> 8) % 8
+        return bytes(data)
+    return edit
+
+
+def replace(old, new, count=1):
+    def edit(data):
+        assert old in data, old
+        return data.replace(old, new, count)
+    return edit
+
+
+def nested(depth, leaf="1"):
+    return "[" * depth + leaf + "]" * depth
+
+
+# --- the corpus ----------------------------------------------------------------
+def build(c):
+    ERR_READ = r"(could not read all of|produced no data|cannot read|gave inconsistent data|no reader|corrupt VTK XML file)"
+
+    # ---- files that are not regular files, and names that are not names
+    fifo_vtk = c.fifo("fifo.vtk")
+    c.add("InfoFifo", "error", ["info", fifo_vtk], r"'.*fifo\.vtk' is a FIFO \(named pipe\), not a regular file")
+    c.add("InfoDevice", "error", ["info", c.symlink("zero.vtk", "/dev/zero")], r"'.*zero\.vtk' is a device")
+    c.add("InfoNullDevice", "error", ["info", c.symlink("null.vti", "/dev/null")], r"'.*null\.vti' is a device")
+    os.makedirs(c.path("folder.vtk"), exist_ok=True)
+    c.add("InfoDirectory", "error", ["info", c.path("folder.vtk")], r"'.*folder\.vtk' is a directory, not a file")
+    c.add("InfoMissing", "error", ["info", c.path("nope.vtu")], r"file not found: .*nope\.vtu")
+    c.render("SceneFifo", "error", c.fifo("scene_fifo.json"), r"scene file: '.*scene_fifo\.json' is a FIFO")
+    c.render("SceneDevice", "error", c.symlink("scene_zero.json", "/dev/zero"), r"scene file: '.*scene_zero\.json' is a device")
+    c.render("DatasetFifo", "error", c.scene("dataset_fifo", {
+        "datasets": {"d": {"path": fifo_vtk}}, "representations": [{"type": "outline", "dataset": "d"}]}),
+        r"datasets\.d: '.*fifo\.vtk' is a FIFO")
+    c.render("DatasetDirectory", "error", c.scene("dataset_dir", {
+        "datasets": {"d": {"path": c.path("folder.vtk")}}, "representations": [{"type": "outline", "dataset": "d"}]}),
+        r"datasets\.d: '.*folder\.vtk' is a directory")
+    c.render("DatasetPathNul", "error", c.scene("dataset_nul", {
+        "datasets": {"d": {"path": "classic/carotid.vtk\u0000.junk"}},
+        "representations": [{"type": "outline", "dataset": "d"}]}),
+        r"datasets\.d: 'path' holds a NUL character: 'classic/carotid\.vtk\\u0000\.junk'")
+    c.add("InfoQFifo", "error", ["info", os.path.join(DATA, "plot3d/combxyz.bin"), "--q", c.fifo("q_fifo.bin")],
+          r"PLOT3D solution \(Q\) file: '.*q_fifo\.bin' is a FIFO")
+    c.write("pvd_fifo/list.pvd", '<?xml version="1.0"?><VTKFile type="Collection" version="0.1"><Collection>'
+            '<DataSet timestep="0" file="%s"/></Collection></VTKFile>' % c.fifo("pvd_fifo/part.vtu"))
+    c.add("PvdListsFifo", "error", ["info", c.path("pvd_fifo/list.pvd")],
+          r"'.*part\.vtu' is a FIFO .*\(listed in .*list\.pvd\)")
+
+    # ---- cells naming points that do not exist (VTK's readers accept them)
+    poly_cases = [
+        ("PolygonIdTooLarge", "POLYGONS 2 8\n3 0 1 2\n3 1 3 99\n", r"polygons: cell 1 references point id 99, but the dataset has 4 points"),
+        ("PolygonIdNegative", "POLYGONS 1 4\n3 0 -5 2\n", r"polygons: cell 0 references point id -5"),
+        ("PolygonIdHuge", "POLYGONS 1 4\n3 0 1 2147483647\n", r"polygons: cell 0 references point id 2147483647"),
+        ("LineIdTooLarge", "LINES 1 3\n2 0 4\n", r"lines: cell 0 references point id 4, but the dataset has 4 points"),
+        ("StripIdTooLarge", "TRIANGLE_STRIPS 1 5\n4 0 1 2 7\n", r"triangle strips: cell 0 references point id 7"),
+        ("VertexIdTooLarge", "VERTICES 2 4\n1 0\n1 12\n", r"vertices: cell 1 references point id 12"),
+    ]
+    for name, section, expect in poly_cases:
+        p = c.write("conn/%s.vtk" % name, legacy_poly(section))
+        c.add("Info" + name, "error", ["info", p], r"the legacy reader gave inconsistent data from .*%s\.vtk \(corrupt file\?\): %s" % (name, expect))
+    ug = c.write("conn/ugrid_bad.vtk", legacy_ugrid("CELLS 1 5\n4 0 1 2 40\n", "CELL_TYPES 1\n10\n"))
+    c.add("InfoUGridIdTooLarge", "error", ["info", ug], r"cells: cell 0 references point id 40, but the dataset has 4 points")
+    ugn = c.write("conn/ugrid_negative.vtk", legacy_ugrid("CELLS 1 5\n4 0 -1 2 3\n", "CELL_TYPES 1\n10\n"))
+    c.add("InfoUGridIdNegative", "error", ["info", ugn], r"cells: cell 0 references point id -1")
+    vtp = c.write("conn/poly_bad.vtp", xml_poly("0 0 0 1 0 0 0 1 0 1 1 0", "0 1 2 1 3 77", "3 6"))
+    c.add("InfoXmlPolygonIdTooLarge", "error", ["info", vtp], r"the xml reader gave inconsistent data .*polygons: cell 1 references point id 77")
+    vtpo = c.write("conn/poly_offsets.vtp", xml_poly("0 0 0 1 0 0 0 1 0 1 1 0", "0 1 2 1 3 2", "3 60"))
+    c.add("InfoXmlOffsetBeyond", "error", ["info", vtpo], r"(polygons: cell 1 has offset 60 out of order or beyond the 6 point ids|xml reader)")
+    # the crashes of issue 12: a sheet from a .vtk and a .vtp, glyphs from a resampled grid
+    sheet_vtk = c.write("conn/sheet_bad.vtk", legacy_poly("POLYGONS 2 8\n3 0 1 2\n3 1 3 1000000\n",
+                        tail="POINT_DATA 4\nSCALARS s float 1\nLOOKUP_TABLE default\n1 1 1 1\n"))
+    for name, path, rep in [
+        ("SheetBadIdsVtk", sheet_vtk, {"type": "sheet", "dataset": "d"}),
+        ("SheetBadIdsVtp", vtp, {"type": "sheet", "dataset": "d"}),
+        ("SurfaceBadIdsVtk", sheet_vtk, {"type": "surface", "dataset": "d"}),
+        ("GlyphsResampledBadIds", ug, {"type": "glyphs", "dataset": "d", "vectors": "v"}),
+        ("VolumeResampledBadIds", ug, {"type": "volume", "dataset": "d", "array": "s"}),
+    ]:
+        c.render(name, "error", c.scene("scene_" + name, {"datasets": {"d": {"path": path}}, "representations": [rep]}),
+                 r"datasets\.d: the (legacy|xml) reader gave inconsistent data .*references point id")
+    c.render("SplatLinesBadIds", "error", c.scene("splat_lines_bad", {
+        "datasets": {"l": {"path": c.write("conn/lines_bad.vtk", legacy_poly("LINES 1 4\n3 0 1 9\n"))},
+                     "s": {"source": "splat", "lines": "l", "dimensions": [8, 8, 8]}},
+        "representations": [{"type": "outline", "dataset": "s"}]}),
+        r"datasets\.l: the legacy reader gave inconsistent data .*lines: cell 0 references point id 9")
+
+    # ---- arrays and headers that lie about sizes
+    short = c.write("lies/short_array.vtp", xml_poly("0 0 0 1 0 0 0 1 0 1 1 0", "0 1 2 1 3 2", "3 6",
+        pointdata='<PointData><DataArray type="Float32" Name="s" format="ascii">1 2</DataArray></PointData>\n'))
+    c.add("InfoXmlShortPointArray", "error", ["info", short], r"(point array 's' has 2 tuples, but the dataset has 4 points|xml reader)")
+    many = c.write("lies/more_points.vtp", xml_poly("0 0 0 1 0 0 0 1 0", "0 1 2", "3", piece='NumberOfPoints="4" NumberOfPolys="1"'))
+    c.add("InfoXmlFewerPointsThanHeader", "error", ["info", many], ERR_READ)
+    lp = c.write("lies/legacy_point_data.vtk", legacy_poly("POLYGONS 1 4\n3 0 1 2\n",
+        tail="POINT_DATA 4\nSCALARS s float 1\nLOOKUP_TABLE default\n1 2\n"))
+    c.add("InfoLegacyShortPointData", "error", ["info", lp], ERR_READ)
+    lp2 = c.write("lies/legacy_points_short.vtk", legacy_poly("POLYGONS 1 4\n3 0 1 2\n", points="0 0 0 1 0 0", npts=4))
+    c.add("InfoLegacyPointsShort", "error", ["info", lp2], ERR_READ)
+    c.add("InfoImageExtentAbsurd", "error", ["info", c.write("lies/absurd.vti", xml_image("0 999999 0 999999 0 999999", "0 999999 0 999999 0 999999", "1 2 3"))],
+          r"the extent \[0, 999999, 0, 999999, 0, 999999\] in .*absurd\.vti \(1e\+18 points\) needs about .* MB, over the memory budget of 512 MB \(PLUME_MEMORY_BUDGET_MB\)")
+    c.add("InfoImageExtentNegative", "error", ["info", c.write("lies/negative.vti", xml_image("0 -5 0 3 0 3", "0 -5 0 3 0 3", "1 2 3"))], ERR_READ)
+    c.add("InfoImagePieceOutside", "error", ["info", c.write("lies/piece_outside.vti", xml_image("0 1 0 1 0 0", "0 9 0 9 0 0", "1 2 3 4"))], ERR_READ)
+    c.add("InfoImageShortValues", "error", ["info", c.write("lies/short_values.vti", xml_image("0 3 0 3 0 0", "0 3 0 3 0 0", "1 2 3"))], ERR_READ)
+    sp = "# vtk DataFile Version 3.0\nbad\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS %s\nSPACING 1 1 1\nORIGIN 0 0 0\nPOINT_DATA %s\nSCALARS s float 1\nLOOKUP_TABLE default\n1 2 3 4\n"
+    c.add("InfoLegacyDimensionsHuge", "error", ["info", c.write("lies/dims_huge.vtk", sp % ("100000 100000 100000", "4"))],
+          r"(point array 's' has \d+ tuples, but the dataset has 1000000000000000 points|memory budget|legacy reader)")
+    c.add("InfoLegacyDimensionsNegative", "error", ["info", c.write("lies/dims_negative.vtk", sp % ("-2 2 1", "4"))],
+          r"(image extent .* means 0 points, but it has -4|legacy reader|point array)")
+    c.add("InfoLegacyPointDataHuge", "error", ["info", c.write("lies/pointdata_huge.vtk", sp % ("2 2 1", "1000000000000"))], ERR_READ)
+    # the shared data with lying headers
+    c.add("InfoCarotidDimensionsLie", "error", ["info", c.derived("lies/carotid_dims.vtk", "classic/carotid.vtk",
+          replace(b"DIMENSIONS 76 49 45", b"DIMENSIONS 76 49 4500"))],
+          r"(point array '.*' has 167580 tuples, but the dataset has 16758000 points|could not read all)")
+    c.add("InfoCarotidDimensionsNegative", "error", ["info", c.derived("lies/carotid_negdims.vtk", "classic/carotid.vtk",
+          replace(b"DIMENSIONS 76 49 45", b"DIMENSIONS 76 49 -45"))],
+          r"(image extent .* means 0 points, but it has -167580|could not read all|point array)")
+    c.add("InfoCarotidPointDataLie", "error", ["info", c.derived("lies/carotid_pd.vtk", "classic/carotid.vtk",
+          replace(b"POINT_DATA 167580", b"POINT_DATA 999999999"))], ERR_READ)
+    c.add("InfoOfficeDimensionsLie", "error", ["info", c.derived("lies/office_dims.vtk", "classic/office.binary.vtk",
+          replace(b"DIMENSIONS 21 20 20", b"DIMENSIONS 21 20 2"))], r"(structured grid extent .* means 840 points, but it has 8400|legacy reader|point array)")
+    c.add("InfoOfficePointsLie", "error", ["info", c.derived("lies/office_points.vtk", "classic/office.binary.vtk",
+          replace(b"POINTS 8400 float", b"POINTS 84000000 float"))], ERR_READ)
+    c.add("InfoVtiWholeExtentHuge", "error", ["info", c.derived("lies/office_image_extent.vti", "derived/office_image.vti",
+          replace(b'WholeExtent="0 45 0 45 0 25"', b'WholeExtent="0 45000 0 45000 0 25000"'))],
+          r"the extent \[0, 45000, 0, 45000, 0, 25000\] .* over the memory budget of 512 MB")
+    # Self-consistent after the lie (VTK reads the first 26 slices / the first 7 cells, all valid):
+    # nothing downstream can tell, so success is a correct outcome; never a crash.
+    c.add("InfoVtiPieceExtentLie", "survive", ["info", c.derived("lies/office_image_piece.vti", "derived/office_image.vti",
+          replace(b'<Piece Extent="0 45 0 45 0 25"', b'<Piece Extent="0 45 0 45 0 99"'))], ERR_READ)
+    c.add("InfoVtpNumberOfPointsLie", "error", ["info", c.derived("lies/sheet_npts.vtp", "derived/office_stream_sheet.vtp",
+          replace(b'NumberOfPoints="24060"', b'NumberOfPoints="24"'))], ERR_READ)
+    c.add("InfoVtpNumberOfPolysLie", "error", ["info", c.derived("lies/sheet_npolys.vtp", "derived/office_stream_sheet.vtp",
+          replace(b'NumberOfPolys="24000"', b'NumberOfPolys="99999999"'))], ERR_READ)
+    c.add("InfoVtpOffsetLie", "error", ["info", c.derived("lies/sheet_offset.vtp", "derived/office_stream_sheet.vtp",
+          replace(b'offset="193832"', b'offset="999999999"'))], ERR_READ)
+    c.add("InfoVtuNumberOfCellsLie", "survive", ["info", c.derived("lies/fire_ncells.vtu", "classic/fire_ug.vtu",
+          lambda d: re.sub(rb'NumberOfCells="(\d+)"', b'NumberOfCells="7"', d, count=1))], ERR_READ)
+    c.add("InfoVtuNumberOfPointsLie", "error", ["info", c.derived("lies/fire_npts.vtu", "classic/fire_ug.vtu",
+          lambda d: re.sub(rb'NumberOfPoints="(\d+)"', b'NumberOfPoints="3"', d, count=1))], ERR_READ)
+
+    # ---- the shared data cut short: every format, several places
+    truncations = [
+        ("Carotid", "classic/carotid.vtk", "vtk"), ("Office", "classic/office.binary.vtk", "vtk"),
+        ("Kitchen", "classic/kitchen.vtk", "vtk"), ("Blow", "classic/blow.vtk", "vtk"),
+        ("FireVtu", "classic/fire_ug.vtu", "vtu"), ("SheetVtp", "derived/office_stream_sheet.vtp", "vtp"),
+        ("OfficeVti", "derived/office_image.vti", "vti"), ("CombustorVti", "derived/combustor_image.vti", "vti"),
+        ("DiskExodus", "classic/disk_out_ref.ex2", "ex2"), ("CombPlot3d", "plot3d/combxyz.bin", "bin"),
+    ]
+    for name, source, ext in truncations:
+        for pct in (0, 1, 10, 50, 90, 99):
+            p = c.derived("trunc/%s_%d.%s" % (name, pct, ext), source, truncate(pct / 100.0))
+            c.add("Truncated%s%d" % (name, pct), "error", ["info", p], ERR_READ + r"|corrupt (Exodus II|legacy VTK) file .*(truncated file|too short)|not a|no data")
+    # legacy cell lists cut short or not numeric: VTK 9.1 reads on from the file it closed (SEGV;
+    # found by plumeFuzzDatasetReader)
+    for keyword in ("VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS"):
+        c.add("LegacyCellsNotNumber_" + keyword, "error", ["info", c.write("legacy_cells/%s_x.vtk" % keyword,
+              legacy_poly("%s 1 4\n3 0 1 x\n" % keyword))],
+              r"corrupt legacy VTK file .*: the %s section \(1 cells, 4 values\): value 3 is 'x', not an integer" % keyword)
+        c.add("LegacyCellsShort_" + keyword, "error", ["info", c.write("legacy_cells/%s_short.vtk" % keyword,
+              legacy_poly("%s 1 4\n3 0 1\n" % keyword))],
+              r"corrupt legacy VTK file .*: the %s section \(1 cells, 4 values\) ends after 3 values \(truncated file\?\)" % keyword)
+    c.add("LegacyCellsFuzzFinding", "error", ["info", c.write("legacy_cells/fuzz.vtk", legacy_poly(
+          "POLYGONS 2 8\n3 0 1 ~2\n3 1 3 2\n", tail="POINT_DATA 4\nSCALARS s float 0\nLOOKUP_TABLE default\n1 2 3 4\n"))],
+          r"the POLYGONS section \(2 cells, 8 values\): value 3 is '~2', not an integer")
+    # the office stream sheet as legacy 4.2 polydata (binary and ASCII), cut inside its polygons
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    from vtkmodules.vtkIOLegacy import vtkPolyDataWriter
+    sheet_reader = vtkXMLPolyDataReader()
+    sheet_reader.SetFileName(os.path.join(DATA, "derived/office_stream_sheet.vtp"))
+    sheet_reader.Update()
+    for file_type, name in ((2, "Binary"), (1, "Ascii")):
+        writer = vtkPolyDataWriter()
+        writer.SetInputData(sheet_reader.GetOutput())
+        writer.SetFileName(c.path("legacy_cells/sheet_%s.vtk" % name))
+        writer.SetFileType(file_type)
+        writer.SetFileVersion(42)
+        writer.Write()
+        for pct in (40, 45):
+            c.add("LegacySheet%sCut%d" % (name, pct), "error", ["info", c.derived("legacy_cells/sheet_%s_%d.vtk" % (name, pct),
+                  c.path("legacy_cells/sheet_%s.vtk" % name), truncate(pct / 100.0))],
+                  r"corrupt legacy VTK file .*: the POLYGONS section \(24000 cells, 96000 values\) (needs 384000 bytes, but the file ends after \d+|ends after \d+ values) \(truncated file\?\)")
+        c.add("LegacySheet%sWhole" % name, "ok", ["info", c.path("legacy_cells/sheet_%s.vtk" % name)], r"Points: 24060   Cells: 24000")
+
+    # committed inputs (fuzzer findings): an XML header announcing ~10^10 compressed blocks; VTK's
+    # reader allocates them (std::bad_alloc under a 4 GB address-space limit, as in the fuzzer)
+    committed = os.path.join(os.path.dirname(os.path.abspath(__file__)), "files")
+    # (now refused before VTK's parser sees it; a std::bad_alloc from VTK's readers is reported as
+    # "the xml reader ran out of memory reading ...", see vtkPlumeDatasetReader::ProcessRequest)
+    c.add("XmlHugeBlockCount", "error", ["info", os.path.join(committed, "xml_huge_block_count.vtu")],
+          r"corrupt VTK XML file .*xml_huge_block_count\.vtu: array 'TimeValue' \(appended offset 0\) announces 140737488355329 compressed blocks, more than the file holds",
+          limit_mb=4096)
+    # fuzzer findings: a block header whose last block exceeds the block size (SEGV in vtkXMLDataParser::ReadBlock),
+    # and a block count of 4e9 (VTK allocated 16.8 GB before failing)
+    c.add("XmlBadBlockHeader", "error", ["info", os.path.join(committed, "xml_bad_block_header.vti")],
+          r"corrupt VTK XML file .*: array 'scalars' \(appended offset 1\): its last block \(4244635739 bytes\) is larger than the block size \(2684354688\)")
+    c.add("XmlHugeBlockCountVtp", "error", ["info", os.path.join(committed, "xml_huge_block_count.vtp")],
+          r"corrupt VTK XML file .*: array 'vectors' \(appended offset 0\) announces 4294963465 compressed blocks, more than the file holds")
+
+    # a PLOT3D grid whose header gives negative dimensions (SEGV in VTK's reader under ASan)
+    c.add("Plot3dNegativeDimensions", "error", ["info", os.path.join(committed, "plot3d_negative_dims.bin")],
+          r"(corrupt PLOT3D file .*: grid 0 has dimensions|the plot3d reader cannot read .*Auto detection check failed)")
+
+    # EnSight Gold: VTK's reader read past the end of a cut geometry file (SEGV)
+    def ensight(name, geo_edit=None, vel_edit=None):
+        folder = "ensight/" + name
+        for f in os.listdir(os.path.join(DATA, "ensight_cylinder_re35")):
+            if f.endswith(".md"):
+                continue
+            edit = geo_edit if f.endswith(".geo") else vel_edit if f.endswith(".vel") else None
+            c.derived(folder + "/" + f, "ensight_cylinder_re35/" + f, edit or (lambda d: d))
+        return c.path(folder + "/cylinder_Re35.case")
+    for pct in (1, 10, 50, 90, 99):
+        c.add("TruncatedEnSightGeometry%d" % pct, "error", ["info", ensight("geo%d" % pct, truncate(pct / 100.0))],
+              r"corrupt EnSight case .*geometry file .*cylinder_Re35\.geo( is cut short \(truncated file\?\)|: part 4 claims 14831 nodes, more than the file can hold)")
+    c.add("TruncatedEnSightVariable", "error", ["info", ensight("vel50", None, truncate(0.5))],
+          r"the ensight reader could not read all of .*cylinder_Re35\.case \(truncated or corrupt\?\): Read failed")
+    def bad_quad(data):
+        import struct
+        o = 80 * 5  # header words; then part, number, description, 'coordinates', count, xyz
+        o += 80 + 4 + 80 + 80
+        nodes = struct.unpack("<i", data[o:o + 4])[0]
+        o += 4 + 12 * nodes
+        assert data[o:o + 5] == b"tria3"
+        o += 80 + 4 + 12 * struct.unpack("<i", data[o + 80:o + 84])[0]
+        assert data[o:o + 5] == b"quad4"
+        o += 80 + 4
+        return data[:o] + struct.pack("<i", 999999) + data[o + 4:]
+    c.add("EnSightNodeIdTooLarge", "error", ["info", ensight("badquad", bad_quad)],
+          r"corrupt EnSight case .*: a 'quad4' element of part 4 names node 999999, but the part has 14831 nodes \(valid 1 to 14831\)")
+    for seed in (1, 2, 3, 4):
+        c.add("BitFlipEnSightGeometry%d" % seed, "survive", ["info", ensight("flip%d" % seed, flip(seed, 8, 0.0))])
+
+    # payload bit flips: garbage values, maybe garbage structure; never a crash or a second line
+    for name, source, ext in truncations:
+        for seed in (1, 2):
+            p = c.derived("flip/%s_%d.%s" % (name, seed, ext), source, flip(seed, 8, 0.3))
+            c.add("BitFlip%s%d" % (name, seed), "survive", ["info", p])
+
+    # ---- scenes: nesting, cycles, budgets, parameter arithmetic
+    c.render("NestedRepresentations", "error", c.scene("nested_reps", '{"representations": %s}' % nested(5000)),
+             r"scene file '.*nested_reps\.json' nests JSON deeper than 64 levels")
+    c.render("NestedWrongType", "error", c.scene("nested_value",
+             '{"datasets": {"v": {"source": "vortex"}}, "representations": [{"type": "glyphs", "dataset": "v", "scale": %s}]}' % nested(4000)),
+             r"nests JSON deeper than 64 levels")
+    c.render("NestedObjects", "error", c.scene("nested_objects", '{"datasets": ' + '{"a": ' * 3000 + '1' + '}' * 3000 + '}'),
+             r"nests JSON deeper than 64 levels")
+    c.render("NestedShallowOk", "error", c.scene("nested_shallow", '{"representations": %s}' % nested(20)),
+             r"representations\[0\]: needs a string 'type'")
+    vortex = {"source": "vortex", "dimensions": [12, 12, 12]}
+    c.render("CycleReference", "error", c.scene("cycle_reference", {"datasets": {
+        "a": {"source": "splat", "points": [[0, 0, 0], [1, 0, 0]], "reference": "b"},
+        "b": {"source": "splat", "points": [[0, 0, 0], [1, 0, 0]], "reference": "a"}},
+        "representations": [{"type": "outline", "dataset": "a"}]}),
+        r"datasets depend on each other in a cycle: a -> b -> a")
+    c.render("CycleTrace", "error", c.scene("cycle_trace", {"datasets": {
+        "a": {"source": "splat", "trace": {"dataset": "b"}},
+        "b": {"source": "splat", "trace": {"dataset": "a"}}},
+        "representations": [{"type": "outline", "dataset": "a"}]}),
+        r"datasets depend on each other in a cycle: a -> b -> a")
+    c.render("CycleThree", "error", c.scene("cycle_three", {"datasets": {
+        "a": {"source": "splat", "lines": "b"}, "b": {"source": "splat", "trace": {"dataset": "c"}},
+        "c": {"source": "splat", "points": [[0, 0, 0], [1, 0, 0]], "reference": "a"}},
+        "representations": [{"type": "outline", "dataset": "a"}]}),
+        r"datasets depend on each other in a cycle: a -> b -> c -> a")
+    c.render("ReferenceChainOk", "ok", c.scene("chain_ok", {"datasets": {"v": vortex,
+        "a": {"source": "splat", "points": [[0, 0, 0], [0.5, 0, 0]], "reference": "v", "sigma": 0.2}},
+        "representations": [{"type": "outline", "dataset": "a"}]}), r"wrote")
+    c.render("SplatSigmaHuge", "error", c.scene("splat_sigma", {"datasets": {"s": {
+        "source": "splat", "circle": {"radius": 1, "resolution": 20000}, "sigma": 1e6, "dimensions": [200, 200, 200],
+        "bounds": [-1, 1, -1, 1, -1, 1]}}, "representations": [{"type": "outline", "dataset": "s"}]}),
+        r"datasets\.s: splatting \d+ splats \(radius 1e\+06, cutoff 4\) onto 200x200x200 voxels needs about .* operations, over the work budget of .* \(PLUME_WORK_BUDGET\)")
+    c.render("SplatGridHuge", "error", c.scene("splat_grid", {"datasets": {"s": {
+        "source": "splat", "points": [[0, 0, 0], [1, 0, 0]], "dimensions": [1024, 1024, 1024]}},
+        "representations": [{"type": "outline", "dataset": "s"}]}),
+        r"datasets\.s: the splat grid \(1024x1024x1024\) needs about 12288 MB, over the memory budget of 512 MB")
+    c.render("SplatSaveUnwritable", "error", c.scene("splat_save", {"datasets": {"s": {
+        "source": "splat", "points": [[0, 0, 0], [1, 0, 0]], "dimensions": [8, 8, 8],
+        "save": "/nonexistent-plume-folder/s.vti"}}, "representations": [{"type": "outline", "dataset": "s"}]}),
+        r"datasets\.s: could not write 'save' file '/nonexistent-plume-folder/s\.vti'")
+    c.render("SplatSaveNul", "error", c.scene("splat_save_nul", {"datasets": {"s": {
+        "source": "splat", "points": [[0, 0, 0], [1, 0, 0]], "dimensions": [8, 8, 8],
+        "save": c.path("s.vti") + "\u0000x"}}, "representations": [{"type": "outline", "dataset": "s"}]}),
+        r"datasets\.s: 'save' path holds a NUL character")
+    c.render("ResampleOverBudget", "error", c.scene("resample_budget", {"datasets": {"f": {
+        "path": "classic/fire_ug.vtu", "image_dimension": 1024}},
+        "representations": [{"type": "glyphs", "dataset": "f", "vectors": "v"}]}),
+        r"'image_dimension' 1024 .* over the memory budget of 512 MB")
+    for name, rep, expect in [
+        ("LightIntensityHuge", None, r"lights\[0\]: parameter 'intensity' must be a finite number in \[0, 10000\], got 1e\+300"),
+        ("OpacityUnitDistanceTiny", {"type": "volume", "dataset": "v", "array": "speed", "opacity_unit_distance": 1e-300},
+         r"parameter 'opacity_unit_distance' must be .*got 1e-300"),
+        ("VolumeIsoHuge", {"type": "volume", "dataset": "v", "array": "speed", "mode": "isosurface", "iso_value": 1e300},
+         r"parameter 'iso_value' must be .*got 1e\+300"),
+        ("GlyphScaleHuge", {"type": "glyphs", "dataset": "v", "scale": 1e300}, r"parameter 'scale' must be .*got (a number )?1e\+300"),
+        ("GlyphMinSpeedHuge", {"type": "glyphs", "dataset": "v", "min_speed": 1e39}, r"parameter 'min_speed' must be .*got (a number )?1e\+39"),
+        ("SphereRadiusHuge", {"type": "sphere", "radius": 1e300}, r"parameter 'radius' must be .*got 1e\+300"),
+        ("SphereRadiusTiny", {"type": "sphere", "radius": 1e-300}, r"parameter 'radius' must be .*got 1e-300"),
+    ]:
+        scene = {"datasets": {"v": vortex}, "representations": [rep or {"type": "outline", "dataset": "v"}]}
+        if rep is None:
+            scene["lights"] = [{"type": "headlight", "intensity": 1e300}]
+        c.render(name, "error", c.scene("param_" + name, scene), expect)
+    sheet = {"type": "sheet", "dataset": "s", "density": 0.05, "thickness": 0.02}
+    # sigmas are squared in float shaders: 1e18 and more gave a black frame
+    for key, value, kind, expect in [
+            ("blur", 1e30, "error", r"parameter 'blur' must be a finite number in \[0, 1e\+15\], got (a number )?1e\+30"),
+            ("thickness", 1e25, "error", r"parameter 'thickness' must be a finite number in \[0, 1e\+15\], got (a number )?1e\+25"),
+            ("density_scale", 1e-300, "error", r"parameter 'density_scale' must be .*got 1e-300"),
+            ("blur_max", 1e15, "ok", r"wrote"),  # the largest blur renders (the background: smoke spread to nothing)
+            ("density", 1e30, "ok", r"wrote")]:  # opaque absorbing smoke: a black sheet, the correct image
+        rep = dict(sheet)
+        rep[key.replace("_max", "")] = value
+        c.render("Sheet_" + key, kind, c.scene("sheet_" + key, {"datasets": {"s": {"path": "derived/office_stream_sheet.vtp"}},
+                 "representations": [rep]}), expect)
+    for name, camera, expect in [
+        ("CameraFar", {"position": [1e300, 0, 0]}, r"camera: parameter 'position' must be .*got \[1e\+300,0,0\]"),
+        ("CameraFocalFar", {"focal_point": [0, -1e200, 0]}, r"camera: parameter 'focal_point' must be .*got \[0,-1e\+200,0\]"),
+        ("CameraUpTiny", {"view_up": [1e-320, 0, 0]}, r"camera: parameter 'view_up' must be .*got \[1e-320,0,0\]"),
+        ("CameraZoomNaN", {"zoom": "NaN"}, r"camera: parameter 'zoom' must be a number, got \"NaN\""),
+    ]:
+        c.render(name, "error", c.scene("camera_" + name, {"datasets": {"v": vortex},
+                 "representations": [{"type": "outline", "dataset": "v"}], "camera": camera}), expect)
+
+    # ---- non-finite values in arrays: left out of default ranges, with a warning, and the
+    # picture drawn (before: the volume drew nothing, the glyphs were all one dark red)
+    values, vectors = [], []
+    for k in range(8):
+        for j in range(8):
+            for i in range(8):
+                n = i + 8 * (j + 8 * k)
+                values.append("inf" if n in (5, 77) else "-inf" if n == 300 else "nan" if n == 301 else str(i + j + k))
+                vectors.append("inf 0 0" if n == 100 else "%g %g %g" % (1, (i - 3.5) / 4, (j - 3.5) / 4))
+    inf_vti = c.write("nonfinite/inf.vti", '<?xml version="1.0"?>\n<VTKFile type="ImageData" version="0.1" byte_order="LittleEndian">'
+        '<ImageData WholeExtent="0 7 0 7 0 7" Origin="0 0 0" Spacing="1 1 1"><Piece Extent="0 7 0 7 0 7"><PointData Scalars="s" Vectors="v">'
+        '<DataArray type="Float32" Name="s" format="ascii">%s</DataArray><DataArray type="Float32" Name="v" NumberOfComponents="3" '
+        'format="ascii">%s</DataArray></PointData></Piece></ImageData></VTKFile>\n' % (" ".join(values), " ".join(vectors)))
+    c.render("VolumeInfScalars", "warn", c.scene("nonfinite_volume", {"datasets": {"d": {"path": inf_vti}},
+             "representations": [{"type": "volume", "dataset": "d", "array": "s"}]}),
+             r"plume: warning: representations\[0\] \(volume\): 4 NaN or infinite value\(s\) of array 's' left out of the colour range \[0, 21\]",
+             image={0: 100})  # the viridis volume: red up to ~230 (background 26)
+    c.render("GlyphsInfVectors", "warn", c.scene("nonfinite_glyphs", {"datasets": {"d": {"path": inf_vti}},
+             "representations": [{"type": "glyphs", "dataset": "d", "vectors": "v", "roots": "lattice", "scale": 0.5}]}),
+             r"plume: warning: representations\[0\] \(glyphs\): 1 NaN or infinite value\(s\) of array 'v' left out of the colour range \[1\.0155, 1\.59099\]",
+             image={1: 100})  # green glyphs exist (all dark red before)
+    c.render("SurfaceInfScalars", "warn", c.scene("nonfinite_surface", {"datasets": {"d": {"path": inf_vti}},
+             "representations": [{"type": "surface", "dataset": "d", "color_array": "s"}]}),
+             r"plume: warning: representations\[0\] \(surface\): 4 NaN or infinite value\(s\) of array 's' left out of the colour range \[0, 21\]")
+
+    # ---- command lines
+    vs = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples", "Scenes", "vortex_streamlets.json")
+    for name, size, expect in [
+        ("SizeOverflow", "4294967297x10", r"--size must be WxH with positive integers up to 16384, got '4294967297x10'"),
+        ("SizeOverflowHeight", "10x18446744073709551617", r"got '10x18446744073709551617'"),
+        ("SizeNegative", "-1x10", r"got '-1x10'"), ("SizeZero", "0x10", r"got '0x10'"),
+        ("SizeTooLarge", "16385x10", r"got '16385x10'"), ("SizeTrailing", "10x10x", r"got '10x10x'"),
+        ("SizeSpace", " 10x10", r"got ' 10x10'"), ("SizePlus", "+10x10", r"got '\+10x10'"),
+        ("SizeFloat", "10.5x10", r"got '10\.5x10'"), ("SizeEmptyWidth", "x10", r"got 'x10'"),
+    ]:
+        c.add(name, "error", ["render", vs, "-o", c.path(name + ".png"), "--size", size], expect)
+    c.add("SizeOverBudget", "error", ["render", vs, "-o", c.path("SizeOverBudget.png"), "--size", "16384x16384"],
+          r"a 16384x16384 image needs about 14336 MB, over the memory budget of 512 MB \(PLUME_MEMORY_BUDGET_MB\); choose a smaller --size")
+    for bench in ("sheets", "glyphs", "volume", "splat"):
+        c.add("BenchUnknownJob_" + bench, "error", ["bench", bench, "--job", "no:such:job"],
+              r"bench %s: unknown job 'no:such:job' \(known: " % bench)
+    c.add("BenchSheetsJobMissingField", "error", ["bench", "sheets", "--job", "ours"], r"bench sheets: unknown job 'ours'")
+    c.add("BenchSheetsJobNotNumber", "error", ["bench", "sheets", "--job", "reference:abc"], r"unknown job 'reference:abc'")
+
+
+def run_case(plume, case, timeout):
+    env = dict(os.environ)
+    env.setdefault("PLUME_MEMORY_BUDGET_MB", "512")
+    env["PLUME_DATA_DIR"] = DATA
+    env.update(case["env"])
+    env.pop("PLUME_VERBOSE", None)
+    t0 = time.time()
+    try:
+        limit = case["limit_mb"]
+
+        def set_limit():
+            if limit:
+                import resource
+                resource.setrlimit(resource.RLIMIT_AS, (limit << 20, limit << 20))
+        proc = subprocess.run([plume] + case["args"], stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                              stderr=subprocess.PIPE, timeout=timeout, env=env, start_new_session=True,
+                              preexec_fn=set_limit)
+    except subprocess.TimeoutExpired:
+        return "hang", "killed after %g s" % timeout, time.time() - t0
+    seconds = time.time() - t0
+    code = proc.returncode
+    out = proc.stdout.decode("utf-8", "replace")
+    err = proc.stderr.decode("utf-8", "replace")
+    lines = [l for l in err.strip().splitlines() if l.strip()]
+    if code < 0 or code > 100:
+        return "crash", "exit %d (signal %s)\n%s" % (code, -code if code < 0 else "?", err[-2000:]), seconds
+    kind, expect = case["kind"], case["expect"]
+    if kind in ("error", "survive") and code != 0:
+        if code != 2:
+            return "fail", "exit %d, expected 2\n%s" % (code, err), seconds
+        if len(lines) != 1 or not lines[0].startswith("plume: error: "):
+            return "fail", "expected one 'plume: error:' line, got:\n%s" % err, seconds
+        if kind == "error" and not re.search(expect, lines[0]):
+            return "fail", "stderr does not match /%s/:\n%s" % (expect, err), seconds
+        return "error", lines[0], seconds
+    if kind == "error":
+        return "fail", "expected an error, got exit 0\nstdout: %s\nstderr: %s" % (out[-1500:], err[-1500:]), seconds
+    if code != 0:
+        return "fail", "exit %d\n%s" % (code, err), seconds
+    if kind == "warn" and not re.search(expect, err):
+        return "fail", "no warning matching /%s/:\n%s" % (expect, err), seconds
+    if kind == "ok" and expect and not re.search(expect, out):
+        return "fail", "stdout does not match /%s/:\n%s" % (expect, out), seconds
+    if case["image"]:
+        reader = vtkPNGReader()
+        reader.SetFileName(case["args"][case["args"].index("-o") + 1])
+        reader.Update()
+        scalars = reader.GetOutput().GetPointData().GetScalars()
+        for channel, minimum in case["image"].items():
+            if scalars is None or scalars.GetRange(channel)[1] < minimum:
+                return "fail", "image channel %d never reaches %d (%s): nothing drawn?" % (
+                    channel, minimum, scalars.GetRange(channel) if scalars else "no image"), seconds
+    return "ok", (lines[0] if lines else out.strip().splitlines()[-1] if out.strip() else ""), seconds
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("plume")
+    parser.add_argument("work")
+    parser.add_argument("--only", default="")
+    parser.add_argument("--timeout", type=float, default=60)
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--list", action="store_true")
+    parser.add_argument("--verbose", action="store_true")
+    args = parser.parse_args()
+    if os.path.isdir(args.work):
+        shutil.rmtree(args.work)
+    os.makedirs(args.work)
+    corpus = Corpus(args.work)
+    build(corpus)
+    names = [c["name"] for c in corpus.cases]
+    assert len(names) == len(set(names)), "duplicate case names"
+    cases = [c for c in corpus.cases if re.search(args.only, c["name"])]
+    if args.list:
+        for c in cases:
+            print(c["kind"], c["name"], " ".join(c["args"]))
+        return 0
+    counts = dict(ok=0, error=0, fail=0, crash=0, hang=0)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        results = list(pool.map(lambda c: run_case(args.plume, c, args.timeout), cases))
+    for case, (outcome, detail, seconds) in zip(cases, results):
+        counts[outcome] += 1
+        bad = outcome in ("fail", "crash", "hang")
+        if bad or args.verbose:
+            print("%-6s %-36s %5.1fs %s" % (outcome.upper(), case["name"], seconds, detail.replace("\n", "\n       ")))
+    print("bad-input corpus: %d inputs; %d clear errors, %d correct results or warnings; "
+          "%d wrong outcomes, %d crashes, %d hangs" %
+          (len(cases), counts["error"], counts["ok"], counts["fail"], counts["crash"], counts["hang"]))
+    return 1 if counts["fail"] + counts["crash"] + counts["hang"] else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,64 @@
+// libFuzzer target: the dataset reader front (vtkPlumeDatasetReader with the
+// checks it runs before and after VTK's readers). The first byte picks the
+// format, the rest is the file: legacy .vtk, XML .vtp/.vtu/.vti, Exodus .ex2,
+// EnSight Gold geometry (under a fixed .case), .pvd, PLOT3D .bin. A bad file
+// must give GetLastError(); a crash or a sanitizer report is a finding. The
+// output, when there is one, must pass vtkPlumeInputValidation (the reader
+// promises consistent data).
+#include "vtkPlumeDatasetReader.h"
+#include "vtkPlumeInputValidation.h"
+
+#include "vtkDataObject.h"
+#include "vtkNew.h"
+#include "vtkObject.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace
+{
+std::string folder;
+}
+
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+  setenv("PLUME_MEMORY_BUDGET_MB", "64", 1);
+  vtkObject::GlobalWarningDisplayOff();
+  char templ[] = "/tmp/plume-fuzz-reader-XXXXXX";
+  folder = mkdtemp(templ);
+  std::ofstream(folder + "/data.case") << "FORMAT\ntype:  ensight gold\nGEOMETRY\nmodel: data.geo\n";
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+  if (size < 1)
+  {
+    return 0;
+  }
+  static const char* const extensions[] = { "vtk", "vtp", "vtu", "vti", "ex2", "geo", "pvd", "bin" };
+  const std::string ext = extensions[data[0] % 8];
+  const std::string file = folder + "/data." + ext;
+  {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
+  }
+  vtkNew<vtkPlumeDatasetReader> reader;
+  reader->SetFileName(ext == "geo" ? (folder + "/data.case").c_str() : file.c_str());
+  reader->Update();
+  vtkDataObject* output = reader->GetOutputDataObject(0);
+  if (reader->GetLastError().empty() && output)
+  {
+    const std::string invalid = vtkPlumeInputValidation::CheckDataObject(output);
+    if (!invalid.empty())
+    {
+      std::fprintf(stderr, "reader output fails validation: %s\n", invalid.c_str());
+      std::abort();
+    }
+  }
+  return 0;
+}
