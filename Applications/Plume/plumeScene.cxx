@@ -28,6 +28,7 @@
 #include <cstdlib>
 #include <unistd.h>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -71,6 +72,47 @@ nlohmann::json Scene::ReadFile(const std::string& path)
     // e.what() carries the position, or the offending number (e.g. 1e999 overflows).
     throw SceneError("scene file '" + path + "' is not valid JSON: " + e.what());
   }
+}
+
+namespace
+{
+/**
+ * True when every solution array holds one value: the cell arrays of a
+ * finite-volume result (its point arrays are interpolated and carry the
+ * boundary values even at an initial condition), else the point arrays.
+ */
+bool SolutionIsUniform(vtkDataObject* data)
+{
+  auto* ds = vtkDataSet::SafeDownCast(data);
+  if (!ds)
+  {
+    return false;
+  }
+  vtkDataSetAttributes* attributes = ds->GetCellData()->GetNumberOfArrays() > 0
+    ? static_cast<vtkDataSetAttributes*>(ds->GetCellData())
+    : static_cast<vtkDataSetAttributes*>(ds->GetPointData());
+  int checked = 0;
+  for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* a = attributes->GetArray(i);
+    if (!a || !a->GetName() || std::string(a->GetName()) == "vtkGhostType" ||
+      std::string(a->GetName()) == "vtkValidPointMask" || a->GetNumberOfTuples() < 2)
+    {
+      continue;
+    }
+    ++checked;
+    for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+    {
+      double r[2];
+      a->GetRange(r, c);
+      if (r[0] != r[1])
+      {
+        return false;
+      }
+    }
+  }
+  return checked > 0;
+}
 }
 
 SceneDatasets::SceneDatasets(const nlohmann::json* datasets, std::string sceneDirectory, bool progress)
@@ -194,7 +236,38 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
     reader->SetQFileName(this->Resolve(p.String("q_path", "")).c_str());
   }
   reader->SetReaderName(p.String("reader", "").c_str());
-  reader->SetTimeStep(p.Integer("time_step", 0, 0, 1 << 30));
+  // Time: "time_step" (an index or "last") or "time" (nearest step). A series
+  // opens at its last step by default: a transient run's step 0 is usually its
+  // initial condition (uniform fields), which renders as an empty picture.
+  const nlohmann::json* timeStep = p.Raw("time_step");
+  const bool hasTime = p.Has("time");
+  const double time = p.Number("time", 0.0);
+  if (timeStep && hasTime)
+  {
+    throw SceneError("datasets." + name + ": give 'time_step' or 'time', not both");
+  }
+  bool lastStep = !timeStep && !hasTime;
+  if (timeStep)
+  {
+    if (timeStep->is_string() && timeStep->get<std::string>() == "last")
+    {
+      lastStep = true;
+    }
+    else if (timeStep->is_number_integer() && timeStep->get<long long>() >= 0 &&
+      timeStep->get<long long>() < (1 << 30))
+    {
+      reader->SetTimeStep(static_cast<int>(timeStep->get<long long>()));
+    }
+    else
+    {
+      throw SceneError("datasets." + name + ": 'time_step' must be a step index (0, 1, ...) or \"last\", got " +
+        timeStep->dump());
+    }
+  }
+  if (hasTime)
+  {
+    reader->SetTimeValue(time);
+  }
   reader->SetMergeBlocks(p.Boolean("merge_blocks", true));
   for (const auto& block : p.Strings("blocks"))
   {
@@ -207,6 +280,14 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   {
     AttachProgress(reader, "reading " + name);
   }
+  if (lastStep)
+  {
+    reader->UpdateInformation();
+    if (reader->GetNumberOfTimeValues() > 1)
+    {
+      reader->SetTimeStep(reader->GetNumberOfTimeValues() - 1);
+    }
+  }
   reader->Update();
   if (!reader->GetLastError().empty())
   {
@@ -216,6 +297,21 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   if (!entry.Data)
   {
     throw SceneError("datasets." + name + ": the reader produced no data from '" + path + "'");
+  }
+  const int steps = reader->GetNumberOfTimeValues();
+  if (steps > 1)
+  {
+    const int step = reader->GetTimeStepRead();
+    std::cerr << "plume: datasets." << name << ": time step " << step << " of 0.." << steps - 1
+              << " (t = " << reader->GetTimeValueAt(step) << "; times " << reader->GetTimeValueAt(0) << " to "
+              << reader->GetTimeValueAt(steps - 1) << ")\n";
+    if (SolutionIsUniform(entry.Data))
+    {
+      std::cerr << "plume: warning: datasets." << name << ": every " << "array of time step " << step
+                << " (t = " << reader->GetTimeValueAt(step)
+                << ") is uniform, as in an initial condition; choose another step with 'time_step' "
+                   "(an index or \"last\") or 'time'\n";
+    }
   }
   return entry.Data;
 }
