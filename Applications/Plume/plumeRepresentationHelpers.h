@@ -12,6 +12,7 @@
 class vtkDataArray;
 class vtkDataObject;
 class vtkDataSet;
+class vtkRenderer;
 class vtkScalarsToColors;
 
 namespace plume
@@ -45,9 +46,17 @@ struct Coloring
   std::string Map;
   bool HasRange = false;
   std::array<double, 2> Range = { 0, 1 };
+  bool Legend = true;
 
   /** Reads color, colormap and range. */
   void Read(Parameters& p, const std::array<double, 3>& defaultColor);
+  /** Reads `legend` (default true), for representations coloured through a map. */
+  void ReadLegend(Parameters& p);
+  /**
+   * Unless `legend` is false: a colour bar (vtkScalarBarActor) of `table`
+   * titled `title`, on the right of the picture, left of any earlier bars.
+   */
+  void AddLegend(vtkRenderer* renderer, vtkScalarsToColors* table, const std::string& title) const;
   /**
    * The colour map over `range`, or over the array's range (component -1:
    * magnitude), taken over the points where `mask` (if given) is not 0.

@@ -45,6 +45,7 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   const std::string colorBy = p.Choice("color_by", "magnitude", { "magnitude", "solid" });
   Coloring coloring;
   coloring.Read(p, { 1, 1, 1 });
+  coloring.ReadLegend(p);
   p.RejectUnknown();
   if (dataset.empty())
   {
@@ -104,6 +105,7 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
     mapper->SetLookupTable(table);
     mapper->SetUseDataRange(false);
     mapper->SetScalarRange(table->GetRange());
+    coloring.AddLegend(renderer, table, "|" + std::string(array->GetName() ? array->GetName() : "") + "|");
   }
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
@@ -126,6 +128,7 @@ void AddPolyActor(vtkAlgorithmOutput* port, vtkDataSet* sample, const std::strin
     mapper->SelectColorArray(arrayName.c_str());
     mapper->SetScalarRange(table->GetRange());
     mapper->ScalarVisibilityOn();
+    coloring.AddLegend(renderer, table, component < 0 ? "|" + arrayName + "|" : arrayName);
   }
   else
   {
@@ -150,6 +153,7 @@ void BuildSurface(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   const bool wireframe = p.Boolean("wireframe", false);
   Coloring coloring;
   coloring.Read(p, { 0.8, 0.8, 0.8 });
+  coloring.ReadLegend(p);
   p.RejectUnknown();
   vtkSmartPointer<vtkDataSet> data =
     WithPointArrays(RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset), { colorArray });
@@ -167,6 +171,7 @@ void BuildContour(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   const double opacity = p.Number("opacity", 1.0, 0.0, 1.0);
   Coloring coloring;
   coloring.Read(p, { 0.9, 0.85, 0.7 });
+  coloring.ReadLegend(p);
   p.RejectUnknown();
   if (!values || !values->is_array() || values->empty())
   {

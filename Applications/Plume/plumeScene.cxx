@@ -21,6 +21,8 @@
 #include "vtkMath.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkRenderer.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
@@ -536,6 +538,7 @@ void Scene::Build(
     renderer->GradientBackgroundOn();
   }
 
+  const std::string title = top.String("title", "");
   const nlohmann::json* camera = top.Object("camera");
   const nlohmann::json* lights = top.Raw("lights");
   const nlohmann::json* reps = top.Raw("representations");
@@ -570,6 +573,19 @@ void Scene::Build(
     Parameters p(item, where + " (" + type + ")");
     p.String("type", type);
     builder->second(p, datasets, renderer);
+  }
+  if (!title.empty())
+  {
+    // centred above the data, in the overlay like the colour bars
+    vtkNew<vtkTextActor> text;
+    text->SetInput(title.c_str());
+    text->GetTextProperty()->SetJustificationToCentered();
+    text->GetTextProperty()->SetVerticalJustificationToTop();
+    text->GetTextProperty()->SetFontSize(std::max(12, std::min(options.Width, options.Height) / 22));
+    text->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+    text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    text->GetPositionCoordinate()->SetValue(0.5, 0.97);
+    renderer->AddActor2D(text);
   }
   BuildCamera(camera, renderer);
   BuildLights(lights, renderer);
