@@ -19,6 +19,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <vector>
 
 namespace plume
 {
@@ -104,6 +106,7 @@ void Coloring::Read(Parameters& p, const std::array<double, 3>& defaultColor)
 {
   this->Color = p.Color("color", defaultColor);
   this->Map = p.Choice("colormap", "viridis", ColorMapNames());
+  this->Where = p.Where();
   this->HasRange = p.Has("range");
   this->Range = p.Vector<2>("range", { 0, 1 });
   if (this->HasRange && !(this->Range[1] >= this->Range[0]))
@@ -142,7 +145,7 @@ void Coloring::AddLegend(vtkRenderer* renderer, vtkScalarsToColors* table, const
   bar->GetLabelTextProperty()->SetFontSize(12);
   bar->SetMaximumWidthInPixels(90);
   bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  bar->GetPositionCoordinate()->SetValue(0.87 - 0.15 * earlier, 0.08);
+  bar->GetPositionCoordinate()->SetValue(0.84 - 0.15 * earlier, 0.08);
   bar->SetWidth(0.1);
   bar->SetHeight(0.78);
   for (vtkTextProperty* text : { bar->GetTitleTextProperty(), bar->GetLabelTextProperty() })
@@ -155,48 +158,97 @@ void Coloring::AddLegend(vtkRenderer* renderer, vtkScalarsToColors* table, const
   renderer->AddActor2D(bar);
 }
 
-vtkSmartPointer<vtkScalarsToColors> Coloring::Table(vtkDataArray* array, int component, vtkDataArray* mask) const
+std::array<double, 2> Coloring::RobustRange(
+  vtkDataArray* array, int component, vtkDataArray* mask, std::array<double, 2>* extremes, size_t* count)
 {
-  double r[2] = { this->Range[0], this->Range[1] };
-  if (!this->HasRange && mask && mask->GetNumberOfTuples() == array->GetNumberOfTuples())
+  // the valid values: finite, and not where the mask (resampled data: nodes
+  // outside the data, stored as 0) is 0
+  const bool useMask = mask && mask->GetNumberOfTuples() == array->GetNumberOfTuples();
+  const int comps = array->GetNumberOfComponents();
+  std::vector<double> values;
+  values.reserve(static_cast<size_t>(array->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
   {
-    // nodes outside the data (resampled: stored as 0) must not widen the range
-    r[0] = VTK_DOUBLE_MAX;
-    r[1] = -VTK_DOUBLE_MAX;
-    const int comps = array->GetNumberOfComponents();
-    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    if (useMask && mask->GetComponent(i, 0) == 0.0)
     {
-      if (mask->GetComponent(i, 0) == 0.0)
-      {
-        continue;
-      }
-      double v = 0.0;
-      if (component >= 0)
-      {
-        v = array->GetComponent(i, component);
-      }
-      else
-      {
-        for (int c = 0; c < comps; ++c)
-        {
-          v += array->GetComponent(i, c) * array->GetComponent(i, c);
-        }
-        v = std::sqrt(v);
-      }
-      if (std::isfinite(v))
-      {
-        r[0] = std::min(r[0], v);
-        r[1] = std::max(r[1], v);
-      }
+      continue;
     }
-    if (r[0] > r[1])
+    double v = 0.0;
+    if (component >= 0)
     {
-      r[0] = r[1] = 0.0;
+      v = array->GetComponent(i, component);
+    }
+    else
+    {
+      for (int c = 0; c < comps; ++c)
+      {
+        v += array->GetComponent(i, c) * array->GetComponent(i, c);
+      }
+      v = std::sqrt(v);
+    }
+    if (std::isfinite(v))
+    {
+      values.push_back(v);
     }
   }
-  else if (!this->HasRange)
+  if (count)
   {
-    array->GetRange(r, component);
+    *count = values.size();
+  }
+  if (values.empty())
+  {
+    if (extremes)
+    {
+      *extremes = { 0.0, 0.0 };
+    }
+    return { 0.0, 0.0 };
+  }
+  // percentile q: linear interpolation between the order statistics around rank q (n - 1)
+  auto percentile = [&values](double q) {
+    const double rank = q * double(values.size() - 1);
+    const size_t below = static_cast<size_t>(std::floor(rank));
+    std::nth_element(values.begin(), values.begin() + below, values.end());
+    const double low = values[below];
+    if (below + 1 >= values.size())
+    {
+      return low;
+    }
+    // the next order statistic is the smallest of the values above `below`
+    const double high = *std::min_element(values.begin() + below + 1, values.end());
+    return low + (rank - double(below)) * (high - low);
+  };
+  const double p1 = percentile(0.01);
+  const double p99 = percentile(0.99);
+  const auto minmax = std::minmax_element(values.begin(), values.end());
+  if (extremes)
+  {
+    *extremes = { *minmax.first, *minmax.second };
+  }
+  if (!(p99 > p1))
+  {
+    // (nearly) constant bulk with a few other values: those should still show
+    return { *minmax.first, *minmax.second };
+  }
+  return { p1, p99 };
+}
+
+vtkSmartPointer<vtkScalarsToColors> Coloring::Table(vtkDataArray* array, int component, vtkDataArray* mask) const
+{
+  std::array<double, 2> r = this->Range;
+  if (!this->HasRange)
+  {
+    std::array<double, 2> extremes;
+    size_t count = 0;
+    r = RobustRange(array, component, mask, &extremes, &count);
+    if (this->Verbose)
+    {
+      // stated, so a user knows the picture does not span the whole data
+      const std::string name = array->GetName() ? array->GetName() : "";
+      std::cerr << "plume: " << this->Where << ": range of "
+                << (component < 0 ? "|" + name + "|" : "'" + name + "'") << " [" << r[0] << ", " << r[1]
+                << "]: 1-99 % percentiles of " << count << " valid values (all: [" << extremes[0] << ", "
+                << extremes[1] << "]); set 'range' to choose\n";
+    }
   }
   return MakeColorMap(this->Map, r[0], r[1]);
 }

@@ -47,6 +47,19 @@ struct Coloring
   bool HasRange = false;
   std::array<double, 2> Range = { 0, 1 };
   bool Legend = true;
+  std::string Where;    // the representation, in the range message
+  bool Verbose = true;  // state a default range on stderr
+
+  /**
+   * The default range: the 1st and 99th percentiles (linear interpolation of
+   * order statistics) of the valid values — finite and, if `mask` is given,
+   * where it is not 0 — of `component` (-1: magnitude), so a few outliers or
+   * interpolated boundary values do not wash out the picture; the min and max
+   * when those percentiles are equal. `extremes` and `count` receive the
+   * valid values' min/max and number.
+   */
+  static std::array<double, 2> RobustRange(vtkDataArray* array, int component, vtkDataArray* mask,
+    std::array<double, 2>* extremes = nullptr, size_t* count = nullptr);
 
   /** Reads color, colormap and range. */
   void Read(Parameters& p, const std::array<double, 3>& defaultColor);
@@ -58,8 +71,8 @@ struct Coloring
    */
   void AddLegend(vtkRenderer* renderer, vtkScalarsToColors* table, const std::string& title) const;
   /**
-   * The colour map over `range`, or over the array's range (component -1:
-   * magnitude), taken over the points where `mask` (if given) is not 0.
+   * The colour map over `range`, or else over RobustRange (stated on stderr
+   * unless Verbose is false).
    */
   vtkSmartPointer<vtkScalarsToColors> Table(vtkDataArray* array, int component, vtkDataArray* mask = nullptr) const;
 };

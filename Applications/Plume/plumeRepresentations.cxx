@@ -101,7 +101,8 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   mapper->SetColorByMagnitude(colorBy == "magnitude");
   if (colorBy == "magnitude")
   {
-    auto table = coloring.Table(array, -1);
+    // nodes outside resampled data are not part of the default range
+    auto table = coloring.Table(array, -1, image->GetPointData()->GetArray(mapper->GetValidMaskArrayName()));
     mapper->SetLookupTable(table);
     mapper->SetUseDataRange(false);
     mapper->SetScalarRange(table->GetRange());
