@@ -26,6 +26,7 @@
 #include "vtkSphereSource.h"
 
 #include <cmath>
+#include <iostream>
 
 namespace plume
 {
@@ -40,6 +41,11 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   // the mapper's own parameters (roots, scale, integrator, ...) come from its table
   vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
   p.Apply(vtkPlumeVelocityGlyphMapper::GetParameterTable(), mapper);
+  if (!p.Has("scale") && !p.Has("scale_mode"))
+  {
+    // 1 world unit per unit speed is invisible in a room at 0.3 m/s: size glyphs to the data
+    mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_AUTO);
+  }
   const int roots = mapper->GetRootMode();
   const std::string rootsName = mapper->GetParameterTable().Find("roots")->FindOption(roots)->Key;
   const std::string colorBy = p.Choice("color_by", "magnitude", { "magnitude", "solid" });
@@ -97,6 +103,12 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
     {
       mapper->SetSeedData(RequireDataSet(datasets.Get(seedDataset, p.Where()), p.Where(), seedDataset));
     }
+  }
+  if (mapper->GetScaleMode() == vtkPlumeVelocityGlyphMapper::SCALE_AUTO)
+  {
+    std::cerr << "plume: " << p.Where() << ": scale " << mapper->GetEffectiveScale()
+              << " (auto: a glyph at the robust maximum speed " << mapper->GetRobustMaximumSpeed()
+              << " spans about two root spacings; set 'scale' to choose)\n";
   }
   mapper->SetColorByMagnitude(colorBy == "magnitude");
   if (colorBy == "magnitude")
