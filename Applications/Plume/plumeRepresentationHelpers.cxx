@@ -2,6 +2,7 @@
 
 #include "plumeColorMaps.h"
 #include "plumeParameters.h"
+#include "plumeScene.h"
 #include "plumeSceneError.h"
 
 #include "vtkCellData.h"
@@ -19,7 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
+#include <sstream>
 #include <vector>
 
 namespace plume
@@ -244,10 +245,11 @@ vtkSmartPointer<vtkScalarsToColors> Coloring::Table(vtkDataArray* array, int com
     {
       // stated, so a user knows the picture does not span the whole data
       const std::string name = array->GetName() ? array->GetName() : "";
-      std::cerr << "plume: " << this->Where << ": range of "
-                << (component < 0 ? "|" + name + "|" : "'" + name + "'") << " [" << r[0] << ", " << r[1]
-                << "]: 1-99 % percentiles of " << count << " valid values (all: [" << extremes[0] << ", "
-                << extremes[1] << "]); set 'range' to choose\n";
+      std::ostringstream line;
+      line << this->Where << ": range of " << (component < 0 ? "|" + name + "|" : "'" + name + "'") << " ["
+           << r[0] << ", " << r[1] << "]: 1-99 % percentiles of " << count << " valid values (all: ["
+           << extremes[0] << ", " << extremes[1] << "]); set 'range' to choose";
+      Note(line.str());
     }
   }
   return MakeColorMap(this->Map, r[0], r[1]);

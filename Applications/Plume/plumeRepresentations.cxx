@@ -26,7 +26,7 @@
 #include "vtkSphereSource.h"
 
 #include <cmath>
-#include <iostream>
+#include <sstream>
 
 namespace plume
 {
@@ -106,9 +106,11 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   }
   if (mapper->GetScaleMode() == vtkPlumeVelocityGlyphMapper::SCALE_AUTO)
   {
-    std::cerr << "plume: " << p.Where() << ": scale " << mapper->GetEffectiveScale()
-              << " (auto: a glyph at the robust maximum speed " << mapper->GetRobustMaximumSpeed()
-              << " spans about two root spacings; set 'scale' to choose)\n";
+    std::ostringstream line;
+    line << p.Where() << ": scale " << mapper->GetEffectiveScale()
+         << " (auto: a glyph at the robust maximum speed " << mapper->GetRobustMaximumSpeed()
+         << " spans about two root spacings; set 'scale' to choose)";
+    Note(line.str());
   }
   mapper->SetColorByMagnitude(colorBy == "magnitude");
   if (colorBy == "magnitude")

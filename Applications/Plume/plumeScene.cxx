@@ -19,6 +19,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
+#include "vtkOutputWindow.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkRenderer.h"
 #include "vtkTextActor.h"
@@ -37,6 +38,11 @@
 
 namespace plume
 {
+
+void Note(const std::string& line)
+{
+  vtkOutputWindow::GetInstance()->DisplayText(("plume: " + line + "\n").c_str());
+}
 
 double MemoryBudgetBytes()
 {
@@ -78,6 +84,8 @@ nlohmann::json Scene::ReadFile(const std::string& path)
 
 namespace
 {
+constexpr double BytesPerPixel = 110.0;
+
 /**
  * True when every solution array holds one value: the cell arrays of a
  * finite-volume result (its point arrays are interpolated and carry the
@@ -304,15 +312,19 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   if (steps > 1)
   {
     const int step = reader->GetTimeStepRead();
-    std::cerr << "plume: datasets." << name << ": time step " << step << " of 0.." << steps - 1
-              << " (t = " << reader->GetTimeValueAt(step) << "; times " << reader->GetTimeValueAt(0) << " to "
-              << reader->GetTimeValueAt(steps - 1) << ")\n";
+    std::ostringstream line;
+    line << "datasets." << name << ": time step " << step << " of 0.." << steps - 1
+         << " (t = " << reader->GetTimeValueAt(step) << "; times " << reader->GetTimeValueAt(0) << " to "
+         << reader->GetTimeValueAt(steps - 1) << ")";
+    Note(line.str());
     if (SolutionIsUniform(entry.Data))
     {
-      std::cerr << "plume: warning: datasets." << name << ": every " << "array of time step " << step
-                << " (t = " << reader->GetTimeValueAt(step)
-                << ") is uniform, as in an initial condition; choose another step with 'time_step' "
-                   "(an index or \"last\") or 'time'\n";
+      std::ostringstream warning;
+      warning << "warning: datasets." << name << ": every array of time step " << step
+              << " (t = " << reader->GetTimeValueAt(step)
+              << ") is uniform, as in an initial condition; choose another step with 'time_step' "
+                 "(an index or \"last\") or 'time'";
+      Note(warning.str());
     }
   }
   return entry.Data;
@@ -392,8 +404,11 @@ vtkImageData* SceneDatasets::GetImage(const std::string& name, const std::string
 
 namespace
 {
-void BuildCamera(const nlohmann::json* spec, vtkRenderer* renderer)
+void BuildCamera(const nlohmann::json* spec, vtkRenderer* renderer, int width, int height)
 {
+  // The window does not exist yet: without the image's aspect ratio,
+  // ResetCamera fits the data to a square and a tall or wide --size crops it.
+  renderer->SetAspect(double(width) / double(height), 1.0);
   renderer->ResetCamera();
   if (!spec)
   {
@@ -529,6 +544,24 @@ void Scene::Build(
     options.Height = static_cast<int>(size[1]);
   }
 
+  {
+    // Refused before any loading: measured peak about 110 bytes a pixel (the
+    // window's buffers, the float framebuffer, its read-back and the encoded
+    // file; 4096x4096 peaked at 1.85 GB), and an oversized window otherwise
+    // dies in std::bad_alloc after a long render.
+    const double bytes = BytesPerPixel * double(options.Width) * double(options.Height);
+    const double budget = MemoryBudgetBytes();
+    if (bytes > budget)
+    {
+      std::ostringstream message;
+      message << "image size " << options.Width << "x" << options.Height << " needs about "
+              << std::llround(bytes / (1 << 20)) << " MB to render (about " << BytesPerPixel
+              << " bytes a pixel), over the memory budget of " << std::llround(budget / (1 << 20))
+              << " MB (PLUME_MEMORY_BUDGET_MB; default half the RAM); choose a smaller --size or 'size'";
+      throw SceneError(message.str());
+    }
+  }
+
   const auto background = top.Color("background", { 0.1, 0.1, 0.12 });
   renderer->SetBackground(background.data());
   if (top.Has("background2"))
@@ -587,7 +620,7 @@ void Scene::Build(
     text->GetPositionCoordinate()->SetValue(0.5, 0.97);
     renderer->AddActor2D(text);
   }
-  BuildCamera(camera, renderer);
+  BuildCamera(camera, renderer, options.Width, options.Height);
   BuildLights(lights, renderer);
 }
 

@@ -21,6 +21,13 @@ namespace plume
 {
 class Parameters;
 
+/**
+ * One line for the user (a stated default, a warning) through VTK's output
+ * window: plume prints these after a successful render, so a failure still
+ * shows only its one error line. `line` has no "plume: " prefix or newline.
+ */
+void Note(const std::string& line);
+
 /** Bytes a scene may allocate for one resampled grid: $PLUME_MEMORY_BUDGET_MB, else half the RAM. */
 double MemoryBudgetBytes();
 
