@@ -11,6 +11,7 @@
 #include "vtkCamera.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkDataObject.h"
 #include "vtkDataSet.h"
 #include "vtkCellData.h"
@@ -27,6 +28,7 @@
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <unistd.h>
@@ -330,6 +332,65 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   return entry.Data;
 }
 
+bool SceneDatasets::GravityUp(double up[3], std::string& from) const
+{
+  for (const auto& item : this->Entries)
+  {
+    const Entry& entry = item.second;
+    if (!entry.Data)
+    {
+      continue; // only datasets the scene uses
+    }
+    double g[3] = { 0, 0, 0 };
+    bool found = false;
+    if (vtkFieldData* field = entry.Data->GetFieldData())
+    {
+      for (const char* name : { "gravity", "g" })
+      {
+        vtkDataArray* a = field->GetArray(name);
+        if (a && a->GetNumberOfComponents() == 3 && a->GetNumberOfTuples() > 0)
+        {
+          a->GetTuple(0, g);
+          from = "field array '" + std::string(name) + "' of dataset '" + item.first + "'";
+          found = true;
+          break;
+        }
+      }
+    }
+    const std::string path = entry.Spec.contains("path") && entry.Spec["path"].is_string()
+      ? entry.Spec["path"].get<std::string>()
+      : std::string();
+    if (!found && vtksys::SystemTools::GetFilenameLastExtension(path) == ".foam")
+    {
+      // OpenFOAM: constant/g holds "value (gx gy gz);"
+      const std::string file =
+        vtksys::SystemTools::GetFilenamePath(this->Resolve(path)) + "/constant/g";
+      std::ifstream in(file);
+      std::stringstream text;
+      text << in.rdbuf();
+      const std::string content = text.str();
+      const size_t at = content.find("value");
+      const size_t open = content.find('(', at == std::string::npos ? 0 : at);
+      if (at != std::string::npos && open != std::string::npos)
+      {
+        std::istringstream numbers(content.substr(open + 1));
+        found = static_cast<bool>(numbers >> g[0] >> g[1] >> g[2]);
+        from = file;
+      }
+    }
+    const double n = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (found && n > 0 && std::isfinite(n))
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        up[a] = 0.0 - g[a] / n; // +0, not -0, in the stated direction
+      }
+      return true;
+    }
+  }
+  return false;
+}
+
 vtkImageData* SceneDatasets::GetImage(const std::string& name, const std::string& where)
 {
   vtkDataObject* data = this->Get(name, where);
@@ -404,7 +465,8 @@ vtkImageData* SceneDatasets::GetImage(const std::string& name, const std::string
 
 namespace
 {
-void BuildCamera(const nlohmann::json* spec, vtkRenderer* renderer, int width, int height)
+void BuildCamera(
+  const nlohmann::json* spec, vtkRenderer* renderer, int width, int height, const SceneDatasets& datasets)
 {
   // The window does not exist yet: without the image's aspect ratio,
   // ResetCamera fits the data to a square and a tall or wide --size crops it.
@@ -433,7 +495,33 @@ void BuildCamera(const nlohmann::json* spec, vtkRenderer* renderer, int width, i
     camera->SetFocalPoint(focal.data());
     camera->SetPosition(position.data());
   }
-  const auto up = p.Vector<3>("view_up", { 0, 1, 0 });
+  // "auto": up against the datasets' gravity when one gives it, else +y
+  const nlohmann::json* upSpec = p.Raw("view_up");
+  std::array<double, 3> up = { 0, 1, 0 };
+  if (upSpec && upSpec->is_string())
+  {
+    if (upSpec->get<std::string>() != "auto")
+    {
+      throw SceneError("camera: 'view_up' must be 3 numbers or \"auto\", got " + upSpec->dump());
+    }
+    std::string from;
+    if (datasets.GravityUp(up.data(), from))
+    {
+      std::ostringstream line;
+      line << "camera: view_up auto: [" << up[0] << ", " << up[1] << ", " << up[2] << "] against gravity from "
+           << from;
+      Note(line.str());
+    }
+    else
+    {
+      Note("camera: view_up auto: no dataset gives gravity (field array 'gravity' or OpenFOAM constant/g); "
+           "[0, 1, 0]");
+    }
+  }
+  else
+  {
+    up = p.Vector<3>("view_up", { 0, 1, 0 });
+  }
   if (!hasPosition)
   {
     // Without a position, look along -z (VTK's default) unless the requested
@@ -620,7 +708,7 @@ void Scene::Build(
     text->GetPositionCoordinate()->SetValue(0.5, 0.97);
     renderer->AddActor2D(text);
   }
-  BuildCamera(camera, renderer, options.Width, options.Height);
+  BuildCamera(camera, renderer, options.Width, options.Height, datasets);
   BuildLights(lights, renderer);
 }
 

@@ -43,6 +43,12 @@ public:
   vtkDataObject* Get(const std::string& name, const std::string& where);
   /** The dataset on an image grid (resampled if it is not one already). */
   vtkImageData* GetImage(const std::string& name, const std::string& where);
+  /**
+   * An "up" direction from the loaded datasets' gravity, if one says: a field
+   * array "gravity" or "g" (3 components), or an OpenFOAM case's
+   * constant/g; up is -g. `from` names the source. False without a hint.
+   */
+  bool GravityUp(double up[3], std::string& from) const;
   /** Resolve a path against the scene's folder, then the shared data folder. */
   std::string Resolve(const std::string& path) const;
 
