@@ -67,16 +67,6 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   vtkNew<vtkRenderer> renderer;
   plume::Scene::Build(scene, directory, renderer, options);
 
-  {
-    // window (RGBA8 + depth, twice for multisampling) and the float read-back (RGBA32F + depth, plus a copy)
-    const double pixels = double(options.Width) * double(options.Height);
-    const std::string tooBig = vtkPlumeInputValidation::CheckMemory(pixels * (2 * 8.0 + 2 * 20.0),
-      "a " + std::to_string(options.Width) + "x" + std::to_string(options.Height) + " image");
-    if (!tooBig.empty())
-    {
-      throw plume::SceneError(tooBig + "; choose a smaller --size or scene 'size'");
-    }
-  }
   auto window = plume::RequireRenderWindow(backend, options.Width, options.Height);
   window->AddRenderer(renderer);
   renderer->ResetCameraClippingRange();

@@ -4,6 +4,7 @@
 
 #include "plumeColorMaps.h"
 #include "plumeParameters.h"
+#include "plumeScene.h"
 #include "plumeSceneError.h"
 
 #include "vtkCellData.h"
@@ -12,13 +13,18 @@
 #include "vtkDataObject.h"
 #include "vtkDataSet.h"
 #include "vtkNew.h"
+#include "vtkActor2DCollection.h"
 #include "vtkPointData.h"
+#include "vtkRenderer.h"
+#include "vtkScalarBarActor.h"
 #include "vtkScalarsToColors.h"
+#include "vtkTextProperty.h"
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 #include <iostream>
+#include <sstream>
+#include <vector>
 
 namespace plume
 {
@@ -105,6 +111,7 @@ void Coloring::Read(Parameters& p, const std::array<double, 3>& defaultColor)
   this->Where = p.Where();
   this->Color = p.Color("color", defaultColor);
   this->Map = p.Choice("colormap", "viridis", ColorMapNames());
+  this->Where = p.Where();
   this->HasRange = p.Has("range");
   this->Range = p.Vector<2>("range", { 0, 1 });
   if (this->HasRange && !(this->Range[1] >= this->Range[0]))
@@ -113,29 +120,150 @@ void Coloring::Read(Parameters& p, const std::array<double, 3>& defaultColor)
   }
 }
 
+void Coloring::ReadLegend(Parameters& p)
+{
+  this->Legend = p.Boolean("legend", true);
+}
+
+void Coloring::AddLegend(vtkRenderer* renderer, vtkScalarsToColors* table, const std::string& title) const
+{
+  if (!this->Legend || !table)
+  {
+    return;
+  }
+  // bars stand side by side from the right edge, one per coloured representation
+  int earlier = 0;
+  vtkActor2DCollection* actors = renderer->GetActors2D();
+  actors->InitTraversal();
+  while (vtkActor2D* a = actors->GetNextActor2D())
+  {
+    earlier += vtkScalarBarActor::SafeDownCast(a) ? 1 : 0;
+  }
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(table);
+  bar->SetTitle(title.c_str());
+  bar->SetNumberOfLabels(5);
+  bar->SetLabelFormat("%.3g");
+  // fixed, legible text at any picture size (VTK otherwise fits it to the bar)
+  bar->UnconstrainedFontSizeOn();
+  bar->GetTitleTextProperty()->SetFontSize(14);
+  bar->GetLabelTextProperty()->SetFontSize(12);
+  bar->SetMaximumWidthInPixels(90);
+  bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  bar->GetPositionCoordinate()->SetValue(0.84 - 0.15 * earlier, 0.08);
+  bar->SetWidth(0.1);
+  bar->SetHeight(0.78);
+  for (vtkTextProperty* text : { bar->GetTitleTextProperty(), bar->GetLabelTextProperty() })
+  {
+    text->SetColor(0.95, 0.95, 0.95);
+    text->ShadowOff();
+    text->ItalicOff();
+    text->BoldOff();
+  }
+  renderer->AddActor2D(bar);
+}
+
+std::array<double, 2> Coloring::RobustRange(
+  vtkDataArray* array, int component, vtkDataArray* mask, std::array<double, 2>* extremes, size_t* count)
+{
+  // the valid values: finite, and not where the mask (resampled data: nodes
+  // outside the data, stored as 0) is 0
+  const bool useMask = mask && mask->GetNumberOfTuples() == array->GetNumberOfTuples();
+  const int comps = array->GetNumberOfComponents();
+  std::vector<double> values;
+  values.reserve(static_cast<size_t>(array->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    if (useMask && mask->GetComponent(i, 0) == 0.0)
+    {
+      continue;
+    }
+    double v = 0.0;
+    if (component >= 0)
+    {
+      v = array->GetComponent(i, component);
+    }
+    else
+    {
+      for (int c = 0; c < comps; ++c)
+      {
+        v += array->GetComponent(i, c) * array->GetComponent(i, c);
+      }
+      v = std::sqrt(v);
+    }
+    if (std::isfinite(v))
+    {
+      values.push_back(v);
+    }
+  }
+  if (count)
+  {
+    *count = values.size();
+  }
+  if (values.empty())
+  {
+    if (extremes)
+    {
+      *extremes = { 0.0, 0.0 };
+    }
+    return { 0.0, 0.0 };
+  }
+  // percentile q: linear interpolation between the order statistics around rank q (n - 1)
+  auto percentile = [&values](double q) {
+    const double rank = q * double(values.size() - 1);
+    const size_t below = static_cast<size_t>(std::floor(rank));
+    std::nth_element(values.begin(), values.begin() + below, values.end());
+    const double low = values[below];
+    if (below + 1 >= values.size())
+    {
+      return low;
+    }
+    // the next order statistic is the smallest of the values above `below`
+    const double high = *std::min_element(values.begin() + below + 1, values.end());
+    return low + (rank - double(below)) * (high - low);
+  };
+  const double p1 = percentile(0.01);
+  const double p99 = percentile(0.99);
+  const auto minmax = std::minmax_element(values.begin(), values.end());
+  if (extremes)
+  {
+    *extremes = { *minmax.first, *minmax.second };
+  }
+  if (!(p99 > p1))
+  {
+    // (nearly) constant bulk with a few other values: those should still show
+    return { *minmax.first, *minmax.second };
+  }
+  return { p1, p99 };
+}
+
 vtkSmartPointer<vtkScalarsToColors> Coloring::Table(vtkDataArray* array, int component, vtkDataArray* mask) const
 {
-  double r[2] = { this->Range[0], this->Range[1] };
+  std::array<double, 2> r = this->Range;
   if (!this->HasRange)
   {
-    // nodes outside the data (resampled: stored as 0) must not widen the range
-    std::vector<unsigned char> valid;
-    if (mask && mask->GetNumberOfTuples() == array->GetNumberOfTuples())
+    std::array<double, 2> extremes;
+    size_t count = 0;
+    r = RobustRange(array, component, mask, &extremes, &count);
+    if (this->Verbose)
     {
-      valid.resize(static_cast<size_t>(mask->GetNumberOfTuples()));
-      for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
-      {
-        valid[static_cast<size_t>(i)] = mask->GetComponent(i, 0) != 0.0;
-      }
+      // stated, so a user knows the picture does not span the whole data
+      const std::string name = array->GetName() ? array->GetName() : "";
+      std::ostringstream line;
+      line << this->Where << ": range of " << (component < 0 ? "|" + name + "|" : "'" + name + "'") << " ["
+           << r[0] << ", " << r[1] << "]: 1-99 % percentiles of " << count << " valid values (all: ["
+           << extremes[0] << ", " << extremes[1] << "]); set 'range' to choose";
+      Note(line.str());
     }
-    // a few Inf values would make the range infinite: every colour the same
+    // a few Inf values would have made the range infinite: say how many were left out
+    double finite[2];
     vtkIdType nonFinite = 0;
-    vtkPlumeInputValidation::FiniteRange(array, component, r, &nonFinite, valid.empty() ? nullptr : valid.data());
+    vtkPlumeInputValidation::FiniteRange(array, component, finite, &nonFinite, nullptr);
     if (nonFinite > 0)
     {
       std::cerr << "plume: warning: " << this->Where << ": " << nonFinite << " NaN or infinite value(s) of array '"
-                << (array->GetName() ? array->GetName() : "(unnamed)")
-                << "' left out of the colour range [" << r[0] << ", " << r[1] << "]\n";
+                << (array->GetName() ? array->GetName() : "(unnamed)") << "' left out of the colour range [" << r[0]
+                << ", " << r[1] << "]\n";
     }
   }
   return MakeColorMap(this->Map, r[0], r[1]);

@@ -12,6 +12,7 @@
 class vtkDataArray;
 class vtkDataObject;
 class vtkDataSet;
+class vtkRenderer;
 class vtkScalarsToColors;
 
 namespace plume
@@ -45,15 +46,34 @@ struct Coloring
   std::string Map;
   bool HasRange = false;
   std::array<double, 2> Range = { 0, 1 };
-  std::string Where; // the representation, for warnings
+  bool Legend = true;
+  std::string Where;    // the representation, in the range message
+  bool Verbose = true;  // state a default range on stderr
+
+  /**
+   * The default range: the 1st and 99th percentiles (linear interpolation of
+   * order statistics) of the valid values — finite and, if `mask` is given,
+   * where it is not 0 — of `component` (-1: magnitude), so a few outliers or
+   * interpolated boundary values do not wash out the picture; the min and max
+   * when those percentiles are equal. `extremes` and `count` receive the
+   * valid values' min/max and number.
+   */
+  static std::array<double, 2> RobustRange(vtkDataArray* array, int component, vtkDataArray* mask,
+    std::array<double, 2>* extremes = nullptr, size_t* count = nullptr);
 
   /** Reads color, colormap and range. */
   void Read(Parameters& p, const std::array<double, 3>& defaultColor);
+  /** Reads `legend` (default true), for representations coloured through a map. */
+  void ReadLegend(Parameters& p);
   /**
-   * The colour map over `range`, or over the array's range (component -1:
-   * magnitude), taken over the points where `mask` (if given) is not 0.
-   * NaN and +-Inf values are left out of the default range, with a warning
-   * on stderr naming the array and how many were left out.
+   * Unless `legend` is false: a colour bar (vtkScalarBarActor) of `table`
+   * titled `title`, on the right of the picture, left of any earlier bars.
+   */
+  void AddLegend(vtkRenderer* renderer, vtkScalarsToColors* table, const std::string& title) const;
+  /**
+   * The colour map over `range`, or else over RobustRange (stated on stderr
+   * unless Verbose is false). NaN and +-Inf values are left out of the
+   * default range, with a warning naming the array and how many were left out.
    */
   vtkSmartPointer<vtkScalarsToColors> Table(vtkDataArray* array, int component, vtkDataArray* mask = nullptr) const;
 };

@@ -38,6 +38,7 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   const bool smoke = mode == vtkPlumeVolumeMapper::RENDER_SMOKE;
   Coloring coloring;
   coloring.Read(p, { 1, 1, 1 });
+  coloring.ReadLegend(p);
   const bool solid = p.Boolean("solid_color", false);
   const nlohmann::json* opacityPoints = p.Raw("opacity");
   const double unitDistance = p.Number("opacity_unit_distance", 0.0, 0.0);
@@ -101,6 +102,12 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
     }
   }
   const double* range = table->GetRange();
+  if (!solid)
+  {
+    const std::string name = array->GetName() ? array->GetName() : "";
+    coloring.AddLegend(renderer, table,
+      rangeComponent >= 0 || array->GetNumberOfComponents() == 1 ? name : "|" + name + "|");
+  }
 
   vtkNew<vtkVolume> volume;
   vtkVolumeProperty* property = volume->GetProperty();

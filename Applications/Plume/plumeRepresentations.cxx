@@ -26,6 +26,7 @@
 #include "vtkSphereSource.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace plume
 {
@@ -40,11 +41,17 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   // the mapper's own parameters (roots, scale, integrator, ...) come from its table
   vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
   p.Apply(vtkPlumeVelocityGlyphMapper::GetParameterTable(), mapper);
+  if (!p.Has("scale") && !p.Has("scale_mode"))
+  {
+    // 1 world unit per unit speed is invisible in a room at 0.3 m/s: size glyphs to the data
+    mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_AUTO);
+  }
   const int roots = mapper->GetRootMode();
   const std::string rootsName = mapper->GetParameterTable().Find("roots")->FindOption(roots)->Key;
   const std::string colorBy = p.Choice("color_by", "magnitude", { "magnitude", "solid" });
   Coloring coloring;
   coloring.Read(p, { 1, 1, 1 });
+  coloring.ReadLegend(p);
   p.RejectUnknown();
   if (dataset.empty())
   {
@@ -97,13 +104,23 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
       mapper->SetSeedData(RequireDataSet(datasets.Get(seedDataset, p.Where()), p.Where(), seedDataset));
     }
   }
+  if (mapper->GetScaleMode() == vtkPlumeVelocityGlyphMapper::SCALE_AUTO)
+  {
+    std::ostringstream line;
+    line << p.Where() << ": scale " << mapper->GetEffectiveScale()
+         << " (auto: a glyph at the robust maximum speed " << mapper->GetRobustMaximumSpeed()
+         << " spans about two root spacings; set 'scale' to choose)";
+    Note(line.str());
+  }
   mapper->SetColorByMagnitude(colorBy == "magnitude");
   if (colorBy == "magnitude")
   {
-    auto table = coloring.Table(array, -1);
+    // nodes outside resampled data are not part of the default range
+    auto table = coloring.Table(array, -1, image->GetPointData()->GetArray(mapper->GetValidMaskArrayName()));
     mapper->SetLookupTable(table);
     mapper->SetUseDataRange(false);
     mapper->SetScalarRange(table->GetRange());
+    coloring.AddLegend(renderer, table, "|" + std::string(array->GetName() ? array->GetName() : "") + "|");
   }
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
@@ -126,6 +143,7 @@ void AddPolyActor(vtkAlgorithmOutput* port, vtkDataSet* sample, const std::strin
     mapper->SelectColorArray(arrayName.c_str());
     mapper->SetScalarRange(table->GetRange());
     mapper->ScalarVisibilityOn();
+    coloring.AddLegend(renderer, table, component < 0 ? "|" + arrayName + "|" : arrayName);
   }
   else
   {
@@ -150,6 +168,7 @@ void BuildSurface(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   const bool wireframe = p.Boolean("wireframe", false);
   Coloring coloring;
   coloring.Read(p, { 0.8, 0.8, 0.8 });
+  coloring.ReadLegend(p);
   p.RejectUnknown();
   vtkSmartPointer<vtkDataSet> data =
     WithPointArrays(RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset), { colorArray });
@@ -167,6 +186,7 @@ void BuildContour(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   const double opacity = p.Number("opacity", 1.0, 0.0, 1.0);
   Coloring coloring;
   coloring.Read(p, { 0.9, 0.85, 0.7 });
+  coloring.ReadLegend(p);
   p.RejectUnknown();
   if (!values || !values->is_array() || values->empty())
   {

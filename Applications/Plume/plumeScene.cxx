@@ -14,6 +14,7 @@
 #include "vtkCamera.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkDataObject.h"
 #include "vtkDataSet.h"
 #include "vtkCellData.h"
@@ -22,21 +23,31 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
+#include "vtkOutputWindow.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkRenderer.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <unistd.h>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <utility>
 #include <vector>
 
 namespace plume
 {
+
+void Note(const std::string& line)
+{
+  vtkOutputWindow::GetInstance()->DisplayText(("plume: " + line + "\n").c_str());
+}
 
 double MemoryBudgetBytes()
 {
@@ -84,6 +95,49 @@ nlohmann::json Scene::Parse(std::istream& in, const std::string& what)
     // e.what() carries the position, or the offending number (e.g. 1e999 overflows).
     throw SceneError(what + " is not valid JSON: " + e.what());
   }
+}
+
+namespace
+{
+constexpr double BytesPerPixel = 110.0;
+
+/**
+ * True when every solution array holds one value: the cell arrays of a
+ * finite-volume result (its point arrays are interpolated and carry the
+ * boundary values even at an initial condition), else the point arrays.
+ */
+bool SolutionIsUniform(vtkDataObject* data)
+{
+  auto* ds = vtkDataSet::SafeDownCast(data);
+  if (!ds)
+  {
+    return false;
+  }
+  vtkDataSetAttributes* attributes = ds->GetCellData()->GetNumberOfArrays() > 0
+    ? static_cast<vtkDataSetAttributes*>(ds->GetCellData())
+    : static_cast<vtkDataSetAttributes*>(ds->GetPointData());
+  int checked = 0;
+  for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* a = attributes->GetArray(i);
+    if (!a || !a->GetName() || std::string(a->GetName()) == "vtkGhostType" ||
+      std::string(a->GetName()) == "vtkValidPointMask" || a->GetNumberOfTuples() < 2)
+    {
+      continue;
+    }
+    ++checked;
+    for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+    {
+      double r[2];
+      a->GetRange(r, c);
+      if (r[0] != r[1])
+      {
+        return false;
+      }
+    }
+  }
+  return checked > 0;
+}
 }
 
 SceneDatasets::SceneDatasets(const nlohmann::json* datasets, std::string sceneDirectory, bool progress)
@@ -233,7 +287,38 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
     reader->SetQFileName(this->Resolve(p.String("q_path", "")).c_str());
   }
   reader->SetReaderName(p.String("reader", "").c_str());
-  reader->SetTimeStep(p.Integer("time_step", 0, 0, 1 << 30));
+  // Time: "time_step" (an index or "last") or "time" (nearest step). A series
+  // opens at its last step by default: a transient run's step 0 is usually its
+  // initial condition (uniform fields), which renders as an empty picture.
+  const nlohmann::json* timeStep = p.Raw("time_step");
+  const bool hasTime = p.Has("time");
+  const double time = p.Number("time", 0.0);
+  if (timeStep && hasTime)
+  {
+    throw SceneError("datasets." + name + ": give 'time_step' or 'time', not both");
+  }
+  bool lastStep = !timeStep && !hasTime;
+  if (timeStep)
+  {
+    if (timeStep->is_string() && timeStep->get<std::string>() == "last")
+    {
+      lastStep = true;
+    }
+    else if (timeStep->is_number_integer() && timeStep->get<long long>() >= 0 &&
+      timeStep->get<long long>() < (1 << 30))
+    {
+      reader->SetTimeStep(static_cast<int>(timeStep->get<long long>()));
+    }
+    else
+    {
+      throw SceneError("datasets." + name + ": 'time_step' must be a step index (0, 1, ...) or \"last\", got " +
+        timeStep->dump());
+    }
+  }
+  if (hasTime)
+  {
+    reader->SetTimeValue(time);
+  }
   reader->SetMergeBlocks(p.Boolean("merge_blocks", true));
   for (const auto& block : p.Strings("blocks"))
   {
@@ -246,6 +331,14 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   {
     AttachProgress(reader, "reading " + name);
   }
+  if (lastStep)
+  {
+    reader->UpdateInformation();
+    if (reader->GetNumberOfTimeValues() > 1)
+    {
+      reader->SetTimeStep(reader->GetNumberOfTimeValues() - 1);
+    }
+  }
   reader->Update();
   if (!reader->GetLastError().empty())
   {
@@ -256,7 +349,85 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   {
     throw SceneError("datasets." + name + ": the reader produced no data from '" + path + "'");
   }
+  const int steps = reader->GetNumberOfTimeValues();
+  if (steps > 1)
+  {
+    const int step = reader->GetTimeStepRead();
+    std::ostringstream line;
+    line << "datasets." << name << ": time step " << step << " of 0.." << steps - 1
+         << " (t = " << reader->GetTimeValueAt(step) << "; times " << reader->GetTimeValueAt(0) << " to "
+         << reader->GetTimeValueAt(steps - 1) << ")";
+    Note(line.str());
+    if (SolutionIsUniform(entry.Data))
+    {
+      std::ostringstream warning;
+      warning << "warning: datasets." << name << ": every array of time step " << step
+              << " (t = " << reader->GetTimeValueAt(step)
+              << ") is uniform, as in an initial condition; choose another step with 'time_step' "
+                 "(an index or \"last\") or 'time'";
+      Note(warning.str());
+    }
+  }
   return entry.Data;
+}
+
+bool SceneDatasets::GravityUp(double up[3], std::string& from) const
+{
+  for (const auto& item : this->Entries)
+  {
+    const Entry& entry = item.second;
+    if (!entry.Data)
+    {
+      continue; // only datasets the scene uses
+    }
+    double g[3] = { 0, 0, 0 };
+    bool found = false;
+    if (vtkFieldData* field = entry.Data->GetFieldData())
+    {
+      for (const char* name : { "gravity", "g" })
+      {
+        vtkDataArray* a = field->GetArray(name);
+        if (a && a->GetNumberOfComponents() == 3 && a->GetNumberOfTuples() > 0)
+        {
+          a->GetTuple(0, g);
+          from = "field array '" + std::string(name) + "' of dataset '" + item.first + "'";
+          found = true;
+          break;
+        }
+      }
+    }
+    const std::string path = entry.Spec.contains("path") && entry.Spec["path"].is_string()
+      ? entry.Spec["path"].get<std::string>()
+      : std::string();
+    if (!found && vtksys::SystemTools::GetFilenameLastExtension(path) == ".foam")
+    {
+      // OpenFOAM: constant/g holds "value (gx gy gz);"
+      const std::string file =
+        vtksys::SystemTools::GetFilenamePath(this->Resolve(path)) + "/constant/g";
+      std::ifstream in(file);
+      std::stringstream text;
+      text << in.rdbuf();
+      const std::string content = text.str();
+      const size_t at = content.find("value");
+      const size_t open = content.find('(', at == std::string::npos ? 0 : at);
+      if (at != std::string::npos && open != std::string::npos)
+      {
+        std::istringstream numbers(content.substr(open + 1));
+        found = static_cast<bool>(numbers >> g[0] >> g[1] >> g[2]);
+        from = file;
+      }
+    }
+    const double n = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (found && n > 0 && std::isfinite(n))
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        up[a] = 0.0 - g[a] / n; // +0, not -0, in the stated direction
+      }
+      return true;
+    }
+  }
+  return false;
 }
 
 vtkImageData* SceneDatasets::GetImage(const std::string& name, const std::string& where)
@@ -337,8 +508,12 @@ vtkImageData* SceneDatasets::GetImage(const std::string& name, const std::string
 
 namespace
 {
-void BuildCamera(const nlohmann::json* spec, vtkRenderer* renderer)
+void BuildCamera(
+  const nlohmann::json* spec, vtkRenderer* renderer, int width, int height, const SceneDatasets& datasets)
 {
+  // The window does not exist yet: without the image's aspect ratio,
+  // ResetCamera fits the data to a square and a tall or wide --size crops it.
+  renderer->SetAspect(double(width) / double(height), 1.0);
   renderer->ResetCamera();
   if (!spec)
   {
@@ -363,7 +538,33 @@ void BuildCamera(const nlohmann::json* spec, vtkRenderer* renderer)
     camera->SetFocalPoint(focal.data());
     camera->SetPosition(position.data());
   }
-  const auto up = p.Vector<3>("view_up", { 0, 1, 0 });
+  // "auto": up against the datasets' gravity when one gives it, else +y
+  const nlohmann::json* upSpec = p.Raw("view_up");
+  std::array<double, 3> up = { 0, 1, 0 };
+  if (upSpec && upSpec->is_string())
+  {
+    if (upSpec->get<std::string>() != "auto")
+    {
+      throw SceneError("camera: 'view_up' must be 3 numbers or \"auto\", got " + upSpec->dump());
+    }
+    std::string from;
+    if (datasets.GravityUp(up.data(), from))
+    {
+      std::ostringstream line;
+      line << "camera: view_up auto: [" << up[0] << ", " << up[1] << ", " << up[2] << "] against gravity from "
+           << from;
+      Note(line.str());
+    }
+    else
+    {
+      Note("camera: view_up auto: no dataset gives gravity (field array 'gravity' or OpenFOAM constant/g); "
+           "[0, 1, 0]");
+    }
+  }
+  else
+  {
+    up = p.Vector<3>("view_up", { 0, 1, 0 });
+  }
   if (!hasPosition)
   {
     // Without a position, look along -z (VTK's default) unless the requested
@@ -498,6 +699,24 @@ void Scene::Build(
     options.Height = static_cast<int>(size[1]);
   }
 
+  {
+    // Refused before any loading: measured peak about 110 bytes a pixel (the
+    // window's buffers, the float framebuffer, its read-back and the encoded
+    // file; 4096x4096 peaked at 1.85 GB), and an oversized window otherwise
+    // dies in std::bad_alloc after a long render.
+    const double bytes = BytesPerPixel * double(options.Width) * double(options.Height);
+    const double budget = MemoryBudgetBytes();
+    if (bytes > budget)
+    {
+      std::ostringstream message;
+      message << "image size " << options.Width << "x" << options.Height << " needs about "
+              << std::llround(bytes / (1 << 20)) << " MB to render (about " << BytesPerPixel
+              << " bytes a pixel), over the memory budget of " << std::llround(budget / (1 << 20))
+              << " MB (PLUME_MEMORY_BUDGET_MB; default half the RAM); choose a smaller --size or 'size'";
+      throw SceneError(message.str());
+    }
+  }
+
   const auto background = top.Color("background", { 0.1, 0.1, 0.12 });
   renderer->SetBackground(background.data());
   if (top.Has("background2"))
@@ -507,6 +726,7 @@ void Scene::Build(
     renderer->GradientBackgroundOn();
   }
 
+  const std::string title = top.String("title", "");
   const nlohmann::json* camera = top.Object("camera");
   const nlohmann::json* lights = top.Raw("lights");
   const nlohmann::json* medium = top.Raw("medium");
@@ -543,7 +763,20 @@ void Scene::Build(
     p.String("type", type);
     builder->second(p, datasets, renderer);
   }
-  BuildCamera(camera, renderer);
+  if (!title.empty())
+  {
+    // centred above the data, in the overlay like the colour bars
+    vtkNew<vtkTextActor> text;
+    text->SetInput(title.c_str());
+    text->GetTextProperty()->SetJustificationToCentered();
+    text->GetTextProperty()->SetVerticalJustificationToTop();
+    text->GetTextProperty()->SetFontSize(std::max(12, std::min(options.Width, options.Height) / 22));
+    text->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+    text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    text->GetPositionCoordinate()->SetValue(0.5, 0.97);
+    renderer->AddActor2D(text);
+  }
+  BuildCamera(camera, renderer, options.Width, options.Height, datasets);
   BuildLights(lights, renderer);
   BuildMedium(medium, renderer);
 }

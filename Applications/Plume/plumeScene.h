@@ -23,6 +23,13 @@ namespace plume
 {
 class Parameters;
 
+/**
+ * One line for the user (a stated default, a warning) through VTK's output
+ * window: plume prints these after a successful render, so a failure still
+ * shows only its one error line. `line` has no "plume: " prefix or newline.
+ */
+void Note(const std::string& line);
+
 /** Bytes a scene may allocate for one resampled grid: $PLUME_MEMORY_BUDGET_MB, else half the RAM. */
 double MemoryBudgetBytes();
 
@@ -38,6 +45,12 @@ public:
   vtkDataObject* Get(const std::string& name, const std::string& where);
   /** The dataset on an image grid (resampled if it is not one already). */
   vtkImageData* GetImage(const std::string& name, const std::string& where);
+  /**
+   * An "up" direction from the loaded datasets' gravity, if one says: a field
+   * array "gravity" or "g" (3 components), or an OpenFOAM case's
+   * constant/g; up is -g. `from` names the source. False without a hint.
+   */
+  bool GravityUp(double up[3], std::string& from) const;
   /** Resolve a path against the scene's folder, then the shared data folder. */
   std::string Resolve(const std::string& path) const;
 

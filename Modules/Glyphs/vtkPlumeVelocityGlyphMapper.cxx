@@ -200,6 +200,36 @@ public:
     std::copy(high, high + 3, this->ComponentHigh);
   }
 
+  // 99th percentile of the valid nodes' speeds (RobustSpeed), one slab at a time.
+  void BuildRobustSpeed(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask)
+  {
+    const vtkIdType n = image->GetNumberOfPoints();
+    std::vector<float> slab(4 * static_cast<size_t>(std::min(n, SlabPoints)));
+    std::vector<float> speeds;
+    double range[2] = { VTK_DOUBLE_MAX, -1.0 };
+    for (vtkIdType begin = 0; begin < n; begin += SlabPoints)
+    {
+      const vtkIdType end = std::min(n, begin + SlabPoints);
+      ConvertVelocity(vectors, mask, begin, end, slab.data(), range);
+      for (vtkIdType i = 0; i < end - begin; ++i)
+      {
+        const float* v = &slab[4 * static_cast<size_t>(i)];
+        if (v[3] > 0.f) // valid: finite and not masked
+        {
+          speeds.push_back(
+            static_cast<float>(std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2])));
+        }
+      }
+    }
+    this->RobustSpeed = 0.0;
+    if (!speeds.empty())
+    {
+      const size_t k = static_cast<size_t>(std::floor(0.99 * double(speeds.size() - 1)));
+      std::nth_element(speeds.begin(), speeds.begin() + k, speeds.end());
+      this->RobustSpeed = speeds[k];
+    }
+  }
+
   // Velocity texture (internal format `internalFormat`) filled from whole
   // z-slabs of the image converted on the fly (the ranges are BuildStatistics').
   bool UploadVelocity(vtkOpenGLRenderWindow* renWin, vtkDataArray* vectors, vtkDataArray* mask,
@@ -247,6 +277,8 @@ public:
   // upload bookkeeping
   Signature Uploaded;       // velocity texture content
   Signature StatsSignature; // SpeedRange content
+  Signature RobustSignature; // RobustSpeed content
+  double RobustSpeed = 0.0;
   Signature HandedSignature; // the last handed-over texture's data (counts hand-overs)
   double SpeedRange[2] = { 0, 0 };
   // Per-axis range of the valid vectors, widened to include 0 (for bounds).
@@ -324,8 +356,15 @@ const vtkPlumeParameterTable& vtkPlumeVelocityGlyphMapper::GetParameterTable()
     t.Real("scale", "Scale", 1.0)
       .Between(-1e30, 1e30)
       .Units("world units per unit speed")
-      .Doc("Glyph length per unit of velocity.")
+      .Doc("Glyph length per unit of velocity (scale_mode `fixed`).")
       .Bind(&T::SetScale, &T::GetScale);
+    t.Choice("scale_mode", "ScaleMode", "fixed")
+      .Choice("fixed", SCALE_FIXED, "glyphs are `scale` x speed long.")
+      .Choice("auto", SCALE_AUTO,
+        "the scale that makes a glyph at the robust maximum speed (99th percentile of the valid nodes) "
+        "about two root spacings long (2 grid cells x `stride` for lattice roots, else 2 grid cells).")
+      .Doc("How the glyph scale is chosen (the command line uses `auto` when a scene gives no `scale`).")
+      .Bind(&T::SetScaleMode, &T::GetScaleMode);
     t.Choice("integrator", "Integrator", "straight")
       .Choice("straight", STRAIGHT, "one straight segment p to p + scale v(p) (seed 002).")
       .Choice("rk2", RK2, "a streamlet following the flow, midpoint rule.")
@@ -518,14 +557,15 @@ double* vtkPlumeVelocityGlyphMapper::GetBounds()
     // A glyph's displacement along each axis is Scale times a convex
     // combination of sampled vectors (straight lines, RK2 and RK4 steps alike,
     // with trilinear sampling), so it lies within Scale x that axis's range.
+    const double scale = this->GetEffectiveScale();
     const double* ib = image->GetBounds();
     const double diagonal =
       std::sqrt((ib[1] - ib[0]) * (ib[1] - ib[0]) + (ib[3] - ib[2]) * (ib[3] - ib[2]) +
         (ib[5] - ib[4]) * (ib[5] - ib[4]));
     for (int a = 0; a < 3; ++a)
     {
-      double lo = this->Scale * this->Impl->ComponentLow[a];
-      double hi = this->Scale * this->Impl->ComponentHigh[a];
+      double lo = scale * this->Impl->ComponentLow[a];
+      double hi = scale * this->Impl->ComponentHigh[a];
       if (lo > hi)
       {
         std::swap(lo, hi); // negative Scale
@@ -540,6 +580,62 @@ double* vtkPlumeVelocityGlyphMapper::GetBounds()
     }
   }
   return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeVelocityGlyphMapper::GetRobustMaximumSpeed()
+{
+  this->UpdateInputs();
+  vtkImageData* image = this->GetInput();
+  vtkDataArray* vectors = nullptr;
+  vtkDataArray* mask = nullptr;
+  std::string error;
+  if (!image || image->GetNumberOfPoints() < 1 ||
+    !ResolveArrays(this, image, this->VectorArrayName, this->ValidMaskArrayName, vectors, mask, error))
+  {
+    return 0.0;
+  }
+  Internals::Signature sig{ image, vectors, mask,
+    std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 }) };
+  if (sig != this->Impl->RobustSignature)
+  {
+    this->Impl->BuildRobustSpeed(image, vectors, mask);
+    this->Impl->RobustSignature = sig;
+  }
+  return this->Impl->RobustSpeed;
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeVelocityGlyphMapper::GetEffectiveScale()
+{
+  if (this->ScaleMode != SCALE_AUTO)
+  {
+    return this->Scale;
+  }
+  const double speed = this->GetRobustMaximumSpeed();
+  vtkImageData* image = this->GetInput();
+  if (!image || !(speed > 0.0) || !std::isfinite(speed))
+  {
+    return this->Scale;
+  }
+  double spacing[3];
+  image->GetSpacing(spacing);
+  int dims[3];
+  image->GetDimensions(dims);
+  double cell = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (dims[a] > 1)
+    {
+      cell = std::max(cell, std::fabs(spacing[a]));
+    }
+  }
+  if (!(cell > 0.0))
+  {
+    return this->Scale;
+  }
+  const double roots = this->RootMode == ROOTS_LATTICE ? double(this->LatticeStride) : 1.0;
+  return 2.0 * cell * roots / speed;
 }
 
 //------------------------------------------------------------------------------
@@ -921,7 +1017,7 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   plume::SetUniformMatrix4x4(program, "RelToIndex", relToIndex);
   const float fdims[3] = { float(dims[0]), float(dims[1]), float(dims[2]) };
   program->SetUniform3f("Dims", fdims);
-  program->SetUniformf("Scale", static_cast<float>(this->Scale));
+  program->SetUniformf("Scale", static_cast<float>(this->GetEffectiveScale()));
   if (segments > 1 || integrator != "STRAIGHT")
   {
     // streamlets stay inside a grid that is one node thick along an axis
@@ -1049,6 +1145,7 @@ void vtkPlumeVelocityGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScreenSpacing: " << this->ScreenSpacing << "\n";
   os << indent << "EffectiveStride: " << this->EffectiveStride << "\n";
   os << indent << "Scale: " << this->Scale << "\n";
+  os << indent << "ScaleMode: " << this->ScaleMode << "\n";
   os << indent << "Integrator: " << this->Integrator << "\n";
   os << indent << "StreamletSegments: " << this->StreamletSegments << "\n";
   os << indent << "MinimumSpeed: " << this->MinimumSpeed << "\n";

@@ -126,6 +126,11 @@ public:
     VERTEX_SHADER = 0,  ///< GL_LINES from gl_VertexID, no geometry shader
     GEOMETRY_SHADER = 1 ///< points expanded by the geometry shader
   };
+  enum ScaleModes
+  {
+    SCALE_FIXED = 0, ///< glyph length Scale·|v|
+    SCALE_AUTO = 1   ///< Scale chosen from the data (GetEffectiveScale)
+  };
   enum IntegratorTypes
   {
     STRAIGHT = 0, ///< one straight segment p → p + Scale·v(p) (seed 002)
@@ -182,10 +187,36 @@ public:
   vtkGetMacro(EffectiveStride, int);
 
   ///@{
-  /** Glyph length per unit of velocity, in world units. Default 1. */
+  /** Glyph length per unit of velocity, in world units (SCALE_FIXED). Default 1. */
   vtkSetMacro(Scale, double);
   vtkGetMacro(Scale, double);
   ///@}
+
+  ///@{
+  /**
+   * SCALE_FIXED (default): glyphs are Scale·|v| long. SCALE_AUTO: the scale
+   * is chosen so that a glyph at the robust maximum speed (the 99th
+   * percentile of the valid nodes' speeds, so one outlier does not shrink
+   * every glyph) spans about two root spacings: 2 × the largest grid spacing
+   * × LatticeStride for ROOTS_LATTICE, 2 × the largest grid spacing
+   * otherwise. A velocity field with no valid non-zero node falls back to
+   * Scale.
+   */
+  vtkSetClampMacro(ScaleMode, int, SCALE_FIXED, SCALE_AUTO);
+  vtkGetMacro(ScaleMode, int);
+  ///@}
+
+  /**
+   * The scale glyphs are drawn with: Scale, or the automatic one of
+   * SCALE_AUTO for the current input (updates the input; 0 without one).
+   */
+  double GetEffectiveScale();
+
+  /**
+   * The 99th percentile of the speeds of the input's valid nodes (finite,
+   * not masked), the robust maximum SCALE_AUTO uses; 0 without input.
+   */
+  double GetRobustMaximumSpeed();
 
   ///@{
   /** STRAIGHT (default), RK2 or RK4; other values are treated as STRAIGHT. */
@@ -318,6 +349,7 @@ protected:
   double ScreenSpacing = 12.0;
   int EffectiveStride = 1;
   double Scale = 1.0;
+  int ScaleMode = SCALE_FIXED;
   int Integrator = STRAIGHT;
   int StreamletSegments = 8;
   double MinimumSpeed = 0.0;

@@ -139,10 +139,71 @@ TEST(Coloring, DefaultRangeLeavesOutMaskedPoints)
   }
   plume::Coloring coloring;
   coloring.Map = "grayscale";
+  coloring.Verbose = false;
+  // 1-99 % percentiles, rank q (n - 1) interpolated: valid {5, 7, 10} ->
+  // ranks 0.02 and 1.98 -> 5 + 0.02 * 2 and 7 + 0.98 * 3
   const auto masked = coloring.Table(values, 0, mask);
-  EXPECT_DOUBLE_EQ(masked->GetRange()[0], 5);
-  EXPECT_DOUBLE_EQ(masked->GetRange()[1], 10);
+  EXPECT_NEAR(masked->GetRange()[0], 5.04, 1e-12);
+  EXPECT_NEAR(masked->GetRange()[1], 9.94, 1e-12);
+  // all {0, 0, 5, 7, 10} -> ranks 0.04 and 3.96
   const auto plain = coloring.Table(values, 0);
-  EXPECT_DOUBLE_EQ(plain->GetRange()[0], 0);
-  EXPECT_DOUBLE_EQ(plain->GetRange()[1], 10);
+  EXPECT_NEAR(plain->GetRange()[0], 0, 1e-12);
+  EXPECT_NEAR(plain->GetRange()[1], 7 + 0.96 * 3, 1e-12);
+}
+
+TEST(Coloring, DefaultRangeIgnoresOutliersAndNonFiniteValues)
+{
+  // 0..999 plus one huge outlier, a NaN and an Inf: the range must follow the
+  // bulk ([10, 990]: ranks 10 and 990 of the 1001 finite values), not [0, 1e6]
+  vtkNew<vtkFloatArray> values;
+  for (int i = 0; i < 1000; ++i)
+  {
+    values->InsertNextValue(static_cast<float>(i));
+  }
+  values->InsertNextValue(1e6f);
+  values->InsertNextValue(std::numeric_limits<float>::quiet_NaN());
+  values->InsertNextValue(std::numeric_limits<float>::infinity());
+  plume::Coloring coloring;
+  coloring.Map = "viridis";
+  coloring.Verbose = false;
+  const auto table = coloring.Table(values, 0);
+  EXPECT_NEAR(table->GetRange()[0], 10, 1e-9);
+  EXPECT_NEAR(table->GetRange()[1], 990, 1e-9);
+  std::array<double, 2> extremes;
+  size_t count = 0;
+  plume::Coloring::RobustRange(values, 0, nullptr, &extremes, &count);
+  EXPECT_EQ(count, 1001u);
+  EXPECT_DOUBLE_EQ(extremes[1], 1e6);
+
+  // magnitude of 3-component vectors: the same bulk along x
+  vtkNew<vtkFloatArray> vectors;
+  vectors->SetNumberOfComponents(3);
+  for (int i = 0; i < 1000; ++i)
+  {
+    vectors->InsertNextTuple3(0, -double(i), 0);
+  }
+  vectors->InsertNextTuple3(1e6, 0, 0);
+  const auto magnitude = coloring.Table(vectors, -1);
+  EXPECT_NEAR(magnitude->GetRange()[0], 10, 1e-9);
+  EXPECT_NEAR(magnitude->GetRange()[1], 990, 1e-9);
+
+  // an explicit range is kept as given
+  coloring.HasRange = true;
+  coloring.Range = { -1, 2e6 };
+  EXPECT_DOUBLE_EQ(coloring.Table(values, 0)->GetRange()[1], 2e6);
+}
+
+TEST(Coloring, ConstantBulkFallsBackToTheExtremes)
+{
+  // 99.9 % of the values equal: the percentiles coincide, so the few others
+  // decide the range instead of an empty one
+  vtkNew<vtkFloatArray> values;
+  for (int i = 0; i < 1000; ++i)
+  {
+    values->InsertNextValue(300.0f);
+  }
+  values->InsertNextValue(301.5f);
+  const auto range = plume::Coloring::RobustRange(values, 0, nullptr);
+  EXPECT_DOUBLE_EQ(range[0], 300.0);
+  EXPECT_DOUBLE_EQ(range[1], 301.5);
 }

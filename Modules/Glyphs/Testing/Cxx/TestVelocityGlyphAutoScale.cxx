@@ -1,0 +1,181 @@
+// ScaleMode SCALE_AUTO: the scale makes a glyph at the robust maximum speed
+// (99th percentile of the valid speeds) span two root spacings. Checked
+// against a double-precision reference (a full sort, no code shared with the
+// mapper's nth_element) on a field with an outlier, a masked node and a NaN;
+// the bounds and the drawn image must use that scale: the auto render equals
+// a fixed render at the reference scale and differs from the default Scale 1.
+#include "plumeTestSupport.h"
+#include "vtkPlumeVelocityGlyphMapper.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <vector>
+
+namespace
+{
+constexpr int NX = 12, NY = 10, NZ = 2;
+constexpr double Spacing = 0.25;
+
+// speeds 0.01 * (1 + i mod 97) along a rotating direction; node 5 is a large
+// outlier, node 7 is masked (and huge), node 11 is NaN
+vtkSmartPointer<vtkImageData> MakeField()
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(NX, NY, NZ);
+  image->SetSpacing(Spacing, Spacing, 0.5 * Spacing);
+  vtkNew<vtkFloatArray> v;
+  v->SetName("v");
+  v->SetNumberOfComponents(3);
+  vtkNew<vtkUnsignedCharArray> mask;
+  mask->SetName("vtkValidPointMask");
+  const vtkIdType n = image->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double s = 0.01 * double(1 + i % 97);
+    const double a = 0.37 * double(i);
+    double t[3] = { s * std::cos(a), s * std::sin(a), 0.0 };
+    if (i == 5 || i == 7)
+    {
+      t[0] = 10.0;
+    }
+    if (i == 11)
+    {
+      t[1] = std::numeric_limits<double>::quiet_NaN();
+    }
+    v->InsertNextTuple(t);
+    mask->InsertNextValue(i == 7 ? 0 : 1);
+  }
+  image->GetPointData()->AddArray(v);
+  image->GetPointData()->SetVectors(v);
+  image->GetPointData()->AddArray(mask);
+  return image;
+}
+
+double ReferenceRobustSpeed(vtkImageData* image)
+{
+  vtkDataArray* v = image->GetPointData()->GetArray("v");
+  vtkDataArray* mask = image->GetPointData()->GetArray("vtkValidPointMask");
+  std::vector<double> speeds;
+  for (vtkIdType i = 0; i < v->GetNumberOfTuples(); ++i)
+  {
+    const double* t = v->GetTuple3(i);
+    const double s = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    if (mask->GetComponent(i, 0) != 0 && std::isfinite(s))
+    {
+      speeds.push_back(s);
+    }
+  }
+  std::sort(speeds.begin(), speeds.end());
+  return speeds[static_cast<size_t>(std::floor(0.99 * double(speeds.size() - 1)))];
+}
+
+plume::test::FloatImage Draw(vtkImageData* image, int scaleMode, double scale)
+{
+  vtkNew<vtkLookupTable> lut;
+  lut->Build();
+  vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
+  mapper->SetInputData(image);
+  mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
+  mapper->SetScaleMode(scaleMode);
+  mapper->SetScale(scale);
+  mapper->SetLookupTable(lut);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> ren;
+  ren->SetBackground(0, 0, 0);
+  ren->AddActor(actor);
+  vtkCamera* cam = ren->GetActiveCamera();
+  cam->SetFocalPoint(1.4, 1.1, 0);
+  cam->SetPosition(1.4, 1.1, 8);
+  cam->SetViewUp(0, 1, 0);
+  ren->ResetCameraClippingRange();
+  auto window = plume::test::MakeOffscreenWindow(200, 160);
+  window->AddRenderer(ren);
+  return plume::test::ReadBack(window);
+}
+}
+
+int TestVelocityGlyphAutoScale(int, char*[])
+{
+  int failures = 0;
+  auto image = MakeField();
+  const double robust = ReferenceRobustSpeed(image);
+
+  vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
+  mapper->SetInputData(image);
+  mapper->SetVectorArrayName("v");
+  mapper->SetScale(0.7);
+  if (mapper->GetScaleMode() != vtkPlumeVelocityGlyphMapper::SCALE_FIXED ||
+    mapper->GetEffectiveScale() != 0.7)
+  {
+    std::printf("FAIL: default mode is not fixed at Scale (%g)\n", mapper->GetEffectiveScale());
+    ++failures;
+  }
+  mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_AUTO);
+  const double speed = mapper->GetRobustMaximumSpeed();
+  if (std::fabs(speed - robust) > 1e-6 * robust)
+  {
+    std::printf("FAIL: robust maximum speed %.9g, reference %.9g\n", speed, robust);
+    ++failures;
+  }
+  // screen roots: two grid cells (the largest spacing) at the robust speed
+  const double screenScale = 2.0 * Spacing / robust;
+  if (std::fabs(mapper->GetEffectiveScale() - screenScale) > 1e-6 * screenScale)
+  {
+    std::printf("FAIL: auto scale %.9g, expected %.9g\n", mapper->GetEffectiveScale(), screenScale);
+    ++failures;
+  }
+  mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
+  mapper->SetLatticeStride(3);
+  const double latticeScale = 3.0 * screenScale;
+  if (std::fabs(mapper->GetEffectiveScale() - latticeScale) > 1e-6 * latticeScale)
+  {
+    std::printf("FAIL: auto scale with stride 3 %.9g, expected %.9g\n", mapper->GetEffectiveScale(), latticeScale);
+    ++failures;
+  }
+  std::printf("robust speed %.6g (reference %.6g), auto scale %.6g (stride 3: %.6g)\n", speed, robust,
+    screenScale, latticeScale);
+
+  // the bounds are padded by the scale times the vector range: with the
+  // outlier (10 along x) the padding along +x is auto scale x 10
+  double bounds[6];
+  mapper->GetBounds(bounds);
+  const double padX = bounds[1] - (NX - 1) * Spacing;
+  if (std::fabs(padX - latticeScale * 10.0) > 1e-6 * latticeScale * 10.0)
+  {
+    std::printf("FAIL: +x bounds padding %.9g, expected %.9g\n", padX, latticeScale * 10.0);
+    ++failures;
+  }
+
+  // the drawn glyphs use the same scale
+  const auto automatic = Draw(image, vtkPlumeVelocityGlyphMapper::SCALE_AUTO, 1.0);
+  const auto fixedSame = Draw(image, vtkPlumeVelocityGlyphMapper::SCALE_FIXED, screenScale * 1.0);
+  const auto fixedOne = Draw(image, vtkPlumeVelocityGlyphMapper::SCALE_FIXED, 1.0);
+  const auto same = plume::test::Compare(automatic, fixedSame);
+  const auto other = plume::test::Compare(automatic, fixedOne);
+  std::printf("auto vs fixed at the auto scale: max %.4g; vs Scale 1: max %.4g\n", same.Max, other.Max);
+  if (same.Max > 1e-6)
+  {
+    std::printf("FAIL: the auto render differs from a fixed render at the auto scale\n");
+    ++failures;
+  }
+  if (other.Max < 0.1)
+  {
+    std::printf("FAIL: the auto render equals the Scale 1 render (the scale was not applied)\n");
+    ++failures;
+  }
+  return failures == 0 ? 0 : 1;
+}
