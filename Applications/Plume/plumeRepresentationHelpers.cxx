@@ -1,6 +1,7 @@
 #include "plumeRepresentationHelpers.h"
 
 #include "vtkPlumeInputValidation.h"
+#include "vtksys/SystemTools.hxx"
 
 #include "plumeColorMaps.h"
 #include "plumeParameters.h"
@@ -64,8 +65,19 @@ vtkDataArray* RequirePointArray(
     array = data->GetPointData()->GetArray(name.c_str());
     if (!array)
     {
+      // the commonest slip: the right name in the wrong case (u for U, T for t)
+      std::string suggestion;
+      vtkPointData* pd = data->GetPointData();
+      for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+      {
+        const char* candidate = pd->GetArrayName(i);
+        if (candidate && vtksys::SystemTools::LowerCase(candidate) == vtksys::SystemTools::LowerCase(name))
+        {
+          suggestion = std::string("; did you mean '") + candidate + "'?";
+        }
+      }
       throw SceneError(where + ": dataset '" + dataset + "' has no point array '" + name +
-        "' (point arrays: " + DescribeArrays(data) + ")");
+        "' (point arrays: " + DescribeArrays(data) + ")" + suggestion);
     }
   }
   if (components > 0 && array->GetNumberOfComponents() != components)
