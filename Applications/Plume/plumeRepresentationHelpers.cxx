@@ -40,7 +40,7 @@ std::string DescribeArrays(vtkDataSet* data)
     if (a && a->GetName() && std::string(a->GetName()) != "vtkGhostType")
     {
       list += (list.empty() ? "" : ", ") + std::string(a->GetName()) + " (" +
-        std::to_string(a->GetNumberOfComponents()) + " components)";
+        std::to_string(a->GetNumberOfComponents()) + (a->GetNumberOfComponents() == 1 ? " component)" : " components)");
     }
   }
   return list.empty() ? "none" : list;
