@@ -197,7 +197,8 @@ int main(int argc, char* argv[])
   info->add_option("file", file, "dataset file (any format VTK reads)")->required();
   info->add_option("--reader", readerName, "reader: legacy, xml, pvd, plot3d, exodus, ensight, openfoam, cgns, vrml");
   info->add_option("--q", qFile, "PLOT3D solution file (default: guessed from the grid file)");
-  info->add_option("--time-step", timeStep, "time step index (default 0)")->check(CLI::NonNegativeNumber);
+  info->add_option("--time-step", timeStep, "time step index (default 0)")
+    ->check(CLI::Range(0, 1 << 30).description("a time step index: 0 or more"));
   info->add_option("--block", blocks, "only these blocks (repeatable)");
   info->add_flag("--no-merge", noMerge, "keep multiblock data as blocks");
   info->add_flag("--json", json, "print JSON");
@@ -217,8 +218,13 @@ int main(int argc, char* argv[])
   }
   catch (const CLI::ParseError& e)
   {
-    // --help/--version exit 0; every usage error exits 2 like other bad input.
-    return app.exit(e) == 0 ? 0 : 2;
+    // --help/--version print and exit 0; a usage error is one line and exit 2, like other bad input
+    if (e.get_exit_code() == 0)
+    {
+      return app.exit(e);
+    }
+    std::cerr << "plume: error: " << e.what() << " (plume --help)\n";
+    return 2;
   }
 
   plume::Backend backend = plume::Backend::Auto;

@@ -688,6 +688,13 @@ std::string Resolve(const char* fileName, const char* qFileName, const char* rea
         return "Nek5000 output (" + path + ") has no reader in VTK 9.1 (vtkNek5000Reader came later): "
           "convert it to VTK files (e.g. .vtu + .pvd) first";
       }
+      if (vtksys::SystemTools::FileIsDirectory(path))
+      {
+        // e.g. an OpenFOAM case folder: the reader wants the (possibly empty) .foam file in it
+        return path + " is a folder, not a dataset file; for an OpenFOAM case give a .foam file inside it "
+          "(create an empty one, e.g. case.foam, if there is none); supported files: " +
+          Join(vtkPlumeDatasetReader::SupportedExtensions());
+      }
       return "unknown file extension '" + (ext.empty() ? std::string("(none)") : ext) +
         "' of " + path + "; supported: " + Join(vtkPlumeDatasetReader::SupportedExtensions());
     }
@@ -1219,9 +1226,10 @@ int vtkPlumeDatasetReader::RequestData(
     const int count = std::max(n, 1);
     if (this->TimeStep < 0 || this->TimeStep >= count)
     {
-      return fail("time step " + std::to_string(this->TimeStep) + " out of range: valid 0 to " +
-        std::to_string(count - 1) + " (" + in.Path + " has " +
-        (n == 0 ? std::string("no time steps") : std::to_string(n) + " time steps") + ")");
+      return fail(n == 0 ? "time step " + std::to_string(this->TimeStep) + " requested but " + in.Path +
+            " has no time steps (it holds one dataset: leave the time step at 0)"
+                         : "time step " + std::to_string(this->TimeStep) + " out of range: valid 0 to " +
+            std::to_string(n - 1) + " (" + in.Path + " has " + std::to_string(n) + " time steps)");
     }
     step = this->TimeStep;
   }

@@ -162,7 +162,12 @@ int main(int argc, char* argv[])
   }
   catch (const CLI::ParseError& e)
   {
-    return app.exit(e) == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0)
+    {
+      return app.exit(e);
+    }
+    std::cerr << "plume: error: " << e.what() << " (plume bench --help)\n";
+    return 2;
   }
   plume::Backend backend = plume::Backend::Auto;
   plume::ParseBackend(backendName, backend);
