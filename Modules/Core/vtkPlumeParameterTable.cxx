@@ -76,6 +76,35 @@ vtkPlumeParameterTable::Parameter& vtkPlumeParameterTable::Add(
   return p;
 }
 
+void vtkPlumeParameterTable::Include(
+  const vtkPlumeParameterTable& part, std::function<vtkObject*(vtkObject*)> access, const std::string& propertyPrefix)
+{
+  for (const Parameter& q : part.GetParameters())
+  {
+    Parameter& p = this->Add(q.Key, propertyPrefix + q.Property, q.Type, q.Default);
+    const Parameter copy = q;
+    p = copy;
+    p.Property = propertyPrefix + q.Property;
+    if (q.Setter)
+    {
+      // the part's setter, then this object is modified (its pipeline must re-execute)
+      p.Setter = [access, set = q.Setter, get = q.Getter](vtkObject* object, const Value& value) {
+        vtkObject* target = access(object);
+        const bool same = get && get(target) == value;
+        set(target, value);
+        if (!same)
+        {
+          object->Modified();
+        }
+      };
+    }
+    if (q.Getter)
+    {
+      p.Getter = [access, get = q.Getter](vtkObject* object) { return get(access(object)); };
+    }
+  }
+}
+
 vtkPlumeParameterTable::Parameter& vtkPlumeParameterTable::Boolean(
   const std::string& key, const std::string& property, bool defaultValue)
 {

@@ -138,6 +138,16 @@ public:
   Parameter& Color(const std::string& key, const std::string& property, const std::array<double, 3>& defaultValue);
   ///@}
 
+  /**
+   * Declares every parameter of `part`'s table as a parameter of this class
+   * too, reached through `access` (the class's getter of the part, e.g. its
+   * pressure solver): the part's declaration stays the only one. Properties
+   * get `propertyPrefix` (e.g. "Pressure" + "Tolerance"), keys stay the part's.
+   * Setting one through this table marks the object (not only the part) modified.
+   */
+  void Include(const vtkPlumeParameterTable& part, std::function<vtkObject*(vtkObject*)> access,
+    const std::string& propertyPrefix);
+
   const std::string& GetClassName() const { return this->ClassName; }
   const std::string& GetSceneType() const { return this->SceneType; }
   const std::deque<Parameter>& GetParameters() const { return this->Parameters; }

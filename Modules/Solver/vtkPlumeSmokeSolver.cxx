@@ -262,30 +262,9 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
       .Doc("Project the given velocity once (remove the divergence its resampling leaves, make walls and "
            "obstacles tight).")
       .Bind(&T::SetProjectExternalVelocity, &T::GetProjectExternalVelocity);
-    t.Choice("pressure_solver", "PressureMethod", "pcg")
-      .Choice("jacobi", vtkPlumePressureSolver::JACOBI,
-        "the seed's Jacobi iterations (damped by jacobi_weight); iterations grow with the grid")
-      .Choice("pcg", vtkPlumePressureSolver::PCG,
-        "hypre's PFMG-multigrid-preconditioned conjugate gradients; iterations nearly flat in the grid size")
-      .Panel("Pressure")
-      .Doc("Method solving the pressure Poisson equation of the projection.")
-      .Bind(&T::SetPressureMethod, &T::GetPressureMethod);
-    t.Real("pressure_tolerance", "PressureTolerance", 1e-6)
-      .Between(0.0, 1.0)
-      .Panel("Pressure")
-      .Doc("Relative residual ‖b − Aq‖ / ‖b‖ at which the pressure solve stops; 0 runs pressure_max_iterations.")
-      .Bind(&T::SetPressureTolerance, &T::GetPressureTolerance);
-    t.Integer("pressure_max_iterations", "PressureMaximumIterations", 1000)
-      .Between(1, 10000000)
-      .Panel("Pressure")
-      .Doc("Most iterations of one pressure solve (the seed runs 40 Jacobi iterations).")
-      .Bind(&T::SetPressureMaximumIterations, &T::GetPressureMaximumIterations);
-    t.Real("jacobi_weight", "JacobiWeight", 0.8)
-      .Between(0.05, 1.0)
-      .Panel("Pressure")
-      .Advanced()
-      .Doc("Damping of the Jacobi iterations; 1 is the seed's, which never converges in a closed box.")
-      .Bind(&T::SetJacobiWeight, &T::GetJacobiWeight);
+    // the pressure solve's parameters are declared once, by vtkPlumePressureSolver
+    t.Include(vtkPlumePressureSolver::GetParameterTable(),
+      [](vtkObject* o) -> vtkObject* { return static_cast<T*>(o)->GetPressureSolver(); }, "Pressure");
     return t;
   }();
   return table;
@@ -376,7 +355,7 @@ int vtkPlumeSmokeSolver::GetPressureMaximumIterations()
 {
   return this->Pressure->GetMaximumIterations();
 }
-void vtkPlumeSmokeSolver::SetJacobiWeight(double weight)
+void vtkPlumeSmokeSolver::SetPressureJacobiWeight(double weight)
 {
   if (weight != this->Pressure->GetJacobiWeight())
   {
@@ -384,7 +363,7 @@ void vtkPlumeSmokeSolver::SetJacobiWeight(double weight)
     this->Modified();
   }
 }
-double vtkPlumeSmokeSolver::GetJacobiWeight()
+double vtkPlumeSmokeSolver::GetPressureJacobiWeight()
 {
   return this->Pressure->GetJacobiWeight();
 }

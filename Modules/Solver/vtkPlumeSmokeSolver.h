@@ -225,8 +225,8 @@ public:
   void SetPressureMaximumIterations(int iterations);
   int GetPressureMaximumIterations();
   /** Damping of the Jacobi iterations (default 0.8). */
-  void SetJacobiWeight(double weight);
-  double GetJacobiWeight();
+  void SetPressureJacobiWeight(double weight);
+  double GetPressureJacobiWeight();
   ///@}
 
   /** The pressure solver (its last iteration count and residual). */

@@ -218,7 +218,7 @@ nlohmann::json RunStep(const std::string& method, int n)
   if (method == "seed")
   {
     solver->SetPressureMethod(vtkPlumePressureSolver::JACOBI);
-    solver->SetJacobiWeight(1.0);
+    solver->SetPressureJacobiWeight(1.0);
     solver->SetPressureTolerance(0);
     solver->SetPressureMaximumIterations(40);
   }

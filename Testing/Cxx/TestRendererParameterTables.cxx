@@ -4,13 +4,17 @@
 // clamps tighter than its table, or a binding to the wrong property, fails);
 // defaults lie in their own ranges; keys and properties are unique.
 #include "vtkPlumeParameterTable.h"
+#include "vtkPlumeAirlightPass.h"
+#include "vtkPlumePressureSolver.h"
 #include "vtkPlumeSheetMapper.h"
+#include "vtkPlumeSmokeSolver.h"
 #include "vtkPlumeVelocityGlyphMapper.h"
 #include "vtkPlumeVolumeMapper.h"
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -74,6 +78,12 @@ int CheckTable(const Table& table, vtkObject* fresh, vtkObject* scratch)
         probes = { std::string("some_array"), std::string() };
         break;
       case Table::Kind::Vector3:
+      {
+        const double a = std::isfinite(p.Minimum) ? p.Minimum : -2.5;
+        const double b = std::isfinite(p.Maximum) ? p.Maximum : 3.5;
+        probes = { std::array<double, 3>{ a, b, a } };
+        break;
+      }
       case Table::Kind::Color:
         probes = { std::array<double, 3>{ 0.25, 0.5, 1.0 } };
         break;
@@ -106,6 +116,33 @@ int main()
   {
     vtkNew<vtkPlumeVelocityGlyphMapper> a, b;
     failures += CheckTable(vtkPlumeVelocityGlyphMapper::GetParameterTable(), a, b);
+  }
+  {
+    vtkNew<vtkPlumeAirlightPass> a, b;
+    failures += CheckTable(vtkPlumeAirlightPass::GetParameterTable(), a, b);
+  }
+  {
+    vtkNew<vtkPlumeSmokeSolver> a, b;
+    failures += CheckTable(vtkPlumeSmokeSolver::GetParameterTable(), a, b);
+    // the pressure parameters are the pressure solver's own declaration,
+    // reached through the smoke solver, which is marked modified by them
+    const auto* tolerance = vtkPlumeSmokeSolver::GetParameterTable().Find("pressure_tolerance");
+    const vtkMTimeType before = a->GetMTime();
+    if (!tolerance || tolerance->Documentation !=
+          vtkPlumePressureSolver::GetParameterTable().Find("pressure_tolerance")->Documentation)
+    {
+      std::printf("pressure_tolerance is not the pressure solver's declaration\n");
+      ++failures;
+    }
+    else
+    {
+      tolerance->Set(a, 1e-4);
+      if (a->GetPressureSolver()->GetTolerance() != 1e-4 || !(a->GetMTime() > before))
+      {
+        std::printf("pressure_tolerance did not reach the pressure solver or left the solver unmodified\n");
+        ++failures;
+      }
+    }
   }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
