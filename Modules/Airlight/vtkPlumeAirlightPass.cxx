@@ -6,7 +6,6 @@
 #include "vtkPlumeShaderVariants.h"
 
 #include "vtkCamera.h"
-#include "vtkCameraPass.h"
 #include "vtkOpaquePass.h"
 #include "vtkProp.h"
 #include "vtkLight.h"
@@ -443,9 +442,10 @@ bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
   vtkCamera* saved = r->GetActiveCamera();
   saved->Register(this);
   r->SetActiveCamera(cam);
+  // No vtkCameraPass: vtkOpenGLCamera::Render would set the renderer's own
+  // viewport; the mappers take the light camera's matrices (with the
+  // renderer's aspect ratio, as ShadowMatrix does) and draw into the whole map.
   vtkNew<vtkOpaquePass> opaque;
-  vtkNew<vtkCameraPass> cameraPass;
-  cameraPass->SetDelegatePass(opaque);
   vtkRenderState inner(r);
   inner.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
   inner.SetFrameBuffer(m->FrameBuffer);
@@ -454,10 +454,9 @@ bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglClearDepth(1.0);
   ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  cameraPass->Render(&inner);
+  opaque->Render(&inner);
   r->SetActiveCamera(saved);
   saved->UnRegister(this);
-  cameraPass->ReleaseGraphicsResources(renWin);
   m->FrameBuffer->RemoveColorAttachments(1);
   m->FrameBuffer->RemoveDepthAttachment();
   ostate->PopFramebufferBindings();

@@ -150,7 +150,8 @@ bool vtkPlumeAirlightReference::Visible(const double light[3], const double poin
     b[c] = point[c] - 1e-9 * d;
   }
   vtkNew<vtkPoints> hits;
-  return this->Tree->IntersectWithLine(a, b, hits, nullptr) == 0;
+  this->Tree->IntersectWithLine(a, b, hits, nullptr);
+  return hits->GetNumberOfPoints() == 0;
 }
 
 //------------------------------------------------------------------------------
