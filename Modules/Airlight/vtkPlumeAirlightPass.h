@@ -16,7 +16,7 @@
  * the distance from the light, ks the scattering and ka the absorption
  * coefficient, kt = ks + ka, I0 the light's radiant intensity and w the spot
  * factor (1 for point lights). Isotropic phase function 1/(4 pi); single
- * scattering; unshadowed (the light reaches every point of the medium).
+ * scattering; spot lights can be shadowed by opaque props (below).
  *
  * The integral in closed form (Sun et al. 2005, seed 001, derived afresh in
  * Documentation/Airlight.md): with h the distance from the light to the ray's
