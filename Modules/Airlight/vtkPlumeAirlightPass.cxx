@@ -8,6 +8,7 @@
 #include "vtkCamera.h"
 #include "vtkOpaquePass.h"
 #include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -446,8 +447,21 @@ bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
   // viewport; the mappers take the light camera's matrices (with the
   // renderer's aspect ratio, as ShadowMatrix does) and draw into the whole map.
   vtkNew<vtkOpaquePass> opaque;
+  // Every visible prop, not the state's array: that one is culled to the
+  // eye's frustum, and an occluder outside the view still casts its shadow.
+  std::vector<vtkProp*> props;
+  vtkPropCollection* all = r->GetViewProps();
+  vtkCollectionSimpleIterator pit;
+  all->InitTraversal(pit);
+  while (vtkProp* prop = all->GetNextProp(pit))
+  {
+    if (prop->GetVisibility())
+    {
+      props.push_back(prop);
+    }
+  }
   vtkRenderState inner(r);
-  inner.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  inner.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   inner.SetFrameBuffer(m->FrameBuffer);
   ostate->vtkglViewport(0, 0, size, size);
   ostate->vtkglScissor(0, 0, size, size);
@@ -537,9 +551,11 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   vtkMTimeType propsTime = 0;
   if (this->Shadows)
   {
-    for (int i = 0; i < s->GetPropArrayCount(); ++i)
+    vtkPropCollection* all = r->GetViewProps(); // not the eye-culled array of the state
+    vtkCollectionSimpleIterator pit;
+    all->InitTraversal(pit);
+    while (vtkProp* prop = all->GetNextProp(pit))
     {
-      vtkProp* prop = s->GetPropArray()[i];
       const double* b = prop->GetVisibility() ? prop->GetBounds() : nullptr;
       if (!b || !(b[0] <= b[1]) || !std::isfinite(b[0]) || !std::isfinite(b[1]) ||
         prop->HasTranslucentPolygonalGeometry())
