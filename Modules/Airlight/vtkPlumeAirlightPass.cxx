@@ -6,6 +6,9 @@
 #include "vtkPlumeShaderVariants.h"
 
 #include "vtkCamera.h"
+#include "vtkOpaquePass.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -38,9 +41,40 @@
 
 vtkStandardNewMacro(vtkPlumeAirlightPass);
 
+// One spot light's shadow map: the light's camera, a depth (+ unused colour)
+// target and the key it was baked for.
+struct vtkPlumeAirlightPass::ShadowMap
+{
+  vtkNew<vtkCamera> Camera;
+  vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
+  vtkTextureObject* Depth = nullptr;
+  vtkTextureObject* Color = nullptr;
+  std::vector<double> Key;
+  double Near = 0, Far = 1;
+
+  void Release()
+  {
+    for (vtkTextureObject** t : { &this->Depth, &this->Color })
+    {
+      if (*t)
+      {
+        (*t)->Delete();
+        *t = nullptr;
+      }
+    }
+    if (this->FrameBuffer)
+    {
+      this->FrameBuffer->Delete();
+      this->FrameBuffer = nullptr;
+    }
+    this->Key.clear();
+  }
+};
+
 namespace
 {
 constexpr int MaximumLights = 8;
+constexpr int MaximumShadows = 4; // one sampler uniform each (GLSL 1.50: no dynamic sampler indexing)
 
 // Adaptive Simpson on [a, b] to absolute tolerance `tol` (the table's
 // integrands are smooth and bounded; the depth limit only guards round-off).
@@ -180,6 +214,23 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Advanced()
       .Doc("0: the closed form; N > 0: brute-force ray marching with N samples (for comparisons).")
       .Bind(&T::SetMarchSteps, &T::GetMarchSteps);
+    t.Boolean("shadows", "Shadows", true)
+      .Panel("Medium")
+      .Doc("Volumetric shadows of opaque geometry for spot lights (a shadow map per spot light whose cone holds a prop).")
+      .Bind(&T::SetShadows, &T::GetShadows);
+    t.Integer("shadow_steps", "ShadowSteps", 64)
+      .Between(1, 1024)
+      .Panel("Medium")
+      .Advanced()
+      .Doc("March steps along each view ray for a shadowed spot light (uniform in the angle seen from the light, jittered).")
+      .Bind(&T::SetShadowSteps, &T::GetShadowSteps);
+    t.Integer("shadow_map_size", "ShadowMapSize", 1024)
+      .Between(16, 8192)
+      .Units("texels")
+      .Panel("Medium")
+      .Advanced()
+      .Doc("Width and height of each spot light's shadow map.")
+      .Bind(&T::SetShadowMapSize, &T::GetShadowMapSize);
     return t;
   }();
   return table;
@@ -201,6 +252,11 @@ vtkPlumeAirlightPass::~vtkPlumeAirlightPass()
   // GL objects are released by the renderer (ReleaseGraphicsResources); the
   // helper holds no context of its own.
   delete this->Quad;
+  for (ShadowMap* m : this->ShadowMaps)
+  {
+    m->Release();
+    delete m;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -215,6 +271,9 @@ void vtkPlumeAirlightPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SpotSteps: " << this->SpotSteps << "\n";
   os << indent << "TableResolution: " << this->TableResolution << "\n";
   os << indent << "MarchSteps: " << this->MarchSteps << "\n";
+  os << indent << "Shadows: " << this->Shadows << "\n";
+  os << indent << "ShadowSteps: " << this->ShadowSteps << "\n";
+  os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -314,6 +373,113 @@ bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w,
 }
 
 //------------------------------------------------------------------------------
+bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
+  const std::vector<double>& key, const double position[3], const double focal[3],
+  double coneAngle, const double bounds[6])
+{
+  while (static_cast<int>(this->ShadowMaps.size()) <= index)
+  {
+    this->ShadowMaps.push_back(new ShadowMap);
+  }
+  ShadowMap* m = this->ShadowMaps[index];
+  if (m->Depth && m->Key == key)
+  {
+    return true; // light, props and size unchanged
+  }
+  vtkRenderer* r = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(r->GetRenderWindow());
+  const int size = this->ShadowMapSize;
+  if (!m->Depth)
+  {
+    m->Depth = vtkTextureObject::New();
+    m->Depth->SetContext(renWin);
+    m->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
+    m->Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+    m->Depth->SetWrapS(vtkTextureObject::ClampToEdge);
+    m->Depth->SetWrapT(vtkTextureObject::ClampToEdge);
+    m->Depth->AllocateDepth(size, size, vtkTextureObject::Float32);
+    m->Color = vtkTextureObject::New();
+    m->Color->SetContext(renWin);
+    m->Color->Allocate2D(size, size, 4, VTK_UNSIGNED_CHAR);
+    m->FrameBuffer = vtkOpenGLFramebufferObject::New();
+    m->FrameBuffer->SetContext(renWin);
+  }
+  m->Depth->Resize(size, size);
+  m->Color->Resize(size, size);
+
+  // The light's camera: its frustum holds the cone (VTK's projection uses the
+  // renderer's aspect ratio; the vertical angle is widened when it is < 1).
+  vtkCamera* cam = m->Camera;
+  const glm::dvec3 p(position[0], position[1], position[2]);
+  glm::dvec3 axis = glm::dvec3(focal[0], focal[1], focal[2]) - p;
+  axis = glm::length(axis) > 0 ? glm::normalize(axis) : glm::dvec3(0, 0, -1);
+  const glm::dvec3 up = std::fabs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+  cam->SetPosition(position);
+  cam->SetFocalPoint(p.x + axis.x, p.y + axis.y, p.z + axis.z);
+  cam->SetViewUp(up.x, up.y, up.z);
+  const double aspect = r->GetTiledAspectRatio();
+  const double half = vtkMath::RadiansFromDegrees(std::min(coneAngle * 1.02 + 0.5, 89.0));
+  const double tanHalf = std::tan(half) / std::min(aspect, 1.0);
+  cam->SetViewAngle(std::min(vtkMath::DegreesFromRadians(2.0 * std::atan(tanHalf)), 179.0));
+  double farthest = 0;
+  for (int c = 0; c < 8; ++c)
+  {
+    const glm::dvec3 corner(bounds[c & 1], bounds[2 + ((c >> 1) & 1)], bounds[4 + ((c >> 2) & 1)]);
+    farthest = std::max(farthest, glm::length(corner - p));
+  }
+  m->Far = std::max(farthest * 1.01, 1e-6);
+  m->Near = m->Far * 1e-3;
+  cam->SetClippingRange(m->Near, m->Far);
+
+  // Depth of the opaque props from the light, with the renderer's camera
+  // swapped for the light's (as vtkShadowMapBakerPass does).
+  vtkOpenGLState* ostate = renWin->GetState();
+  ostate->PushFramebufferBindings();
+  m->FrameBuffer->Bind();
+  m->FrameBuffer->AddColorAttachment(0, m->Color);
+  m->FrameBuffer->ActivateDrawBuffers(1);
+  m->FrameBuffer->AddDepthAttachment(m->Depth);
+  m->FrameBuffer->StartNonOrtho(size, size);
+  vtkCamera* saved = r->GetActiveCamera();
+  saved->Register(this);
+  r->SetActiveCamera(cam);
+  // No vtkCameraPass: vtkOpenGLCamera::Render would set the renderer's own
+  // viewport; the mappers take the light camera's matrices (with the
+  // renderer's aspect ratio, as ShadowMatrix does) and draw into the whole map.
+  vtkNew<vtkOpaquePass> opaque;
+  // Every visible prop, not the state's array: that one is culled to the
+  // eye's frustum, and an occluder outside the view still casts its shadow.
+  std::vector<vtkProp*> props;
+  vtkPropCollection* all = r->GetViewProps();
+  vtkCollectionSimpleIterator pit;
+  all->InitTraversal(pit);
+  while (vtkProp* prop = all->GetNextProp(pit))
+  {
+    if (prop->GetVisibility())
+    {
+      props.push_back(prop);
+    }
+  }
+  vtkRenderState inner(r);
+  inner.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+  inner.SetFrameBuffer(m->FrameBuffer);
+  ostate->vtkglViewport(0, 0, size, size);
+  ostate->vtkglScissor(0, 0, size, size);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  opaque->Render(&inner);
+  r->SetActiveCamera(saved);
+  saved->UnRegister(this);
+  m->FrameBuffer->RemoveColorAttachments(1);
+  m->FrameBuffer->RemoveDepthAttachment();
+  ostate->PopFramebufferBindings();
+  m->Key = key;
+  ++this->NumberOfShadowMapBakes;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
@@ -371,7 +537,45 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     return glm::dvec3(out[0], out[1], out[2]);
   };
   std::vector<float> positions, intensities, axes, cosCones, exponents;
+  std::vector<int> shadowIndex;
+  std::vector<double> shadowMatrices; // row-major, eye coordinates -> light clip coordinates
+  std::vector<float> shadowRanges;    // near, far per shadow map
   bool anySpot = false;
+  // The opaque props that can cast shadows: their bounds and their latest change.
+  struct Occluder
+  {
+    double Bounds[6];
+  };
+  std::vector<Occluder> occluders;
+  double sceneBounds[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
+  vtkMTimeType propsTime = 0;
+  if (this->Shadows)
+  {
+    vtkPropCollection* all = r->GetViewProps(); // not the eye-culled array of the state
+    vtkCollectionSimpleIterator pit;
+    all->InitTraversal(pit);
+    while (vtkProp* prop = all->GetNextProp(pit))
+    {
+      const double* b = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+      if (!b || !(b[0] <= b[1]) || !std::isfinite(b[0]) || !std::isfinite(b[1]) ||
+        prop->HasTranslucentPolygonalGeometry())
+      {
+        continue;
+      }
+      Occluder o;
+      std::copy(b, b + 6, o.Bounds);
+      occluders.push_back(o);
+      for (int k = 0; k < 3; ++k)
+      {
+        sceneBounds[2 * k] = std::min(sceneBounds[2 * k], b[2 * k]);
+        sceneBounds[2 * k + 1] = std::max(sceneBounds[2 * k + 1], b[2 * k + 1]);
+      }
+      propsTime = std::max({ propsTime, prop->GetMTime(), prop->GetRedrawMTime() });
+    }
+  }
+  vtkNew<vtkMatrix4x4> inverseView;
+  vtkMatrix4x4::Invert(view, inverseView);
+  int shadowCount = 0;
   vtkLightCollection* lights = r->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
@@ -407,9 +611,51 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     }
     cosCones.push_back(
       spot ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()))) : -2.0f);
+    // A shadow map for a spot light whose cone holds some opaque prop's bounding sphere.
+    int shadow = -1;
+    if (spot && this->Shadows && shadowCount < MaximumShadows && this->MarchSteps == 0)
+    {
+      const glm::dvec3 lp(position[0], position[1], position[2]);
+      glm::dvec3 la = glm::dvec3(focal[0], focal[1], focal[2]) - lp;
+      la = glm::length(la) > 0 ? glm::normalize(la) : glm::dvec3(0, 0, -1);
+      const double cone = vtkMath::RadiansFromDegrees(light->GetConeAngle());
+      bool occluded = false;
+      for (const Occluder& o : occluders)
+      {
+        const glm::dvec3 c(0.5 * (o.Bounds[0] + o.Bounds[1]), 0.5 * (o.Bounds[2] + o.Bounds[3]),
+          0.5 * (o.Bounds[4] + o.Bounds[5]));
+        const double radius = 0.5 *
+          glm::length(glm::dvec3(o.Bounds[1] - o.Bounds[0], o.Bounds[3] - o.Bounds[2], o.Bounds[5] - o.Bounds[4]));
+        const glm::dvec3 v = c - lp;
+        const double dist = glm::length(v);
+        if (dist <= radius ||
+          std::acos(std::min(1.0, std::max(-1.0, glm::dot(v, la) / dist))) - std::asin(radius / dist) <= cone)
+        {
+          occluded = true;
+          break;
+        }
+      }
+      const std::vector<double> key = { position[0], position[1], position[2], focal[0], focal[1],
+        focal[2], light->GetConeAngle(), static_cast<double>(this->ShadowMapSize),
+        static_cast<double>(propsTime), static_cast<double>(occluders.size()), r->GetTiledAspectRatio() };
+      if (occluded && this->BakeShadowMap(s, shadowCount, key, position, focal, light->GetConeAngle(), sceneBounds))
+      {
+        ShadowMap* m = this->ShadowMaps[shadowCount];
+        vtkNew<vtkMatrix4x4> toLight;
+        vtkMatrix4x4::Multiply4x4(
+          m->Camera->GetCompositeProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0),
+          inverseView, toLight);
+        shadowMatrices.insert(shadowMatrices.end(), toLight->GetData(), toLight->GetData() + 16);
+        shadowRanges.push_back(static_cast<float>(m->Near));
+        shadowRanges.push_back(static_cast<float>(m->Far));
+        shadow = shadowCount++;
+      }
+    }
+    shadowIndex.push_back(shadow);
     exponents.push_back(static_cast<float>(light->GetExponent()));
   }
   const int numberOfLights = static_cast<int>(cosCones.size());
+  this->NumberOfShadowedLights = shadowCount;
 
   // 3. The program for this variant (lights count, spot lights or not).
   std::ostringstream defines;
@@ -419,6 +665,11 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   {
     features.insert("SPOT");
     defines << "#define HAS_SPOT\n";
+  }
+  if (shadowCount > 0)
+  {
+    features.insert("SHADOW");
+    defines << "#define NUMBER_OF_SHADOWS " << shadowCount << "\n";
   }
   if (this->MarchSteps > 0)
   {
@@ -500,6 +751,19 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       program->SetUniform1fv("LightExponent", numberOfLights, exponents.data());
       program->SetUniformi("SpotSteps", this->SpotSteps);
     }
+    if (shadowCount > 0)
+    {
+      program->SetUniform1iv("LightShadow", numberOfLights, shadowIndex.data());
+      program->SetUniformi("ShadowSteps", this->ShadowSteps);
+      for (int k = 0; k < shadowCount; ++k)
+      {
+        const std::string n = std::to_string(k);
+        this->ShadowMaps[k]->Depth->Activate();
+        program->SetUniformi(("ShadowMap" + n).c_str(), this->ShadowMaps[k]->Depth->GetTextureUnit());
+        plume::SetUniformMatrix4x4(program, ("ShadowMatrix" + n).c_str(), &shadowMatrices[16 * k]);
+        program->SetUniform2f(("ShadowRange" + n).c_str(), &shadowRanges[2 * k]);
+      }
+    }
   }
 
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
@@ -515,6 +779,10 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   this->ColorTexture->Deactivate();
   this->DepthTexture->Deactivate();
   this->TableTexture->Deactivate();
+  for (int k = 0; k < shadowCount; ++k)
+  {
+    this->ShadowMaps[k]->Depth->Deactivate();
+  }
   vtkOpenGLCheckErrorMacro("failed after vtkPlumeAirlightPass::Render");
 }
 
@@ -534,6 +802,10 @@ void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
     }
   }
   this->UploadedTableResolution = 0;
+  for (ShadowMap* m : this->ShadowMaps)
+  {
+    m->Release();
+  }
   if (this->FrameBuffer)
   {
     this->FrameBuffer->Delete();

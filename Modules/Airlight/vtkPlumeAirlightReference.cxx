@@ -1,6 +1,17 @@
 #include "vtkPlumeAirlightReference.h"
 
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
+#include "vtkMapper.h"
+#include "vtkOBBTree.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkTriangleFilter.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -84,6 +95,66 @@ void vtkPlumeAirlightReference::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
+void vtkPlumeAirlightReference::SetOccluders(vtkRenderer* renderer)
+{
+  vtkNew<vtkAppendPolyData> append;
+  int count = 0;
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    vtkPolyData* input =
+      actor->GetMapper() ? vtkPolyData::SafeDownCast(actor->GetMapper()->GetInput()) : nullptr;
+    if (!actor->GetVisibility() || !input || actor->GetProperty()->GetOpacity() < 1.0)
+    {
+      continue;
+    }
+    vtkNew<vtkTransform> transform;
+    transform->SetMatrix(actor->GetMatrix());
+    vtkNew<vtkTransformPolyDataFilter> world;
+    world->SetInputData(input);
+    world->SetTransform(transform);
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputConnection(world->GetOutputPort());
+    triangles->Update();
+    vtkNew<vtkPolyData> copy;
+    copy->DeepCopy(triangles->GetOutput());
+    append->AddInputData(copy);
+    ++count;
+  }
+  this->Occluders = nullptr;
+  this->Tree = nullptr;
+  if (count == 0)
+  {
+    return;
+  }
+  append->Update();
+  this->Occluders = append->GetOutput();
+  this->Tree = vtkSmartPointer<vtkOBBTree>::New();
+  this->Tree->SetDataSet(this->Occluders);
+  this->Tree->SetTolerance(1e-12);
+  this->Tree->BuildLocator();
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeAirlightReference::Visible(const double light[3], const double point[3]) const
+{
+  // The segment stops 1e-9 of its length short of both ends: a point on a
+  // surface (or a light on one) does not shadow itself.
+  double a[3], b[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    const double d = point[c] - light[c];
+    a[c] = light[c] + 1e-9 * d;
+    b[c] = point[c] - 1e-9 * d;
+  }
+  vtkNew<vtkPoints> hits;
+  this->Tree->IntersectWithLine(a, b, hits, nullptr);
+  return hits->GetNumberOfPoints() == 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkPlumeAirlightReference::SetLights(vtkRenderer* renderer)
 {
   this->Lights.clear();
@@ -118,6 +189,7 @@ void vtkPlumeAirlightReference::SetLights(vtkRenderer* renderer)
     l.Spot = light->GetConeAngle() < 90.0;
     l.CosCone = std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()));
     l.Exponent = light->GetExponent();
+    l.Shadowed = l.Spot && this->Tree;
     this->Lights.push_back(l);
   }
 }
@@ -152,7 +224,17 @@ void vtkPlumeAirlightReference::ComputeRay(
       }
       const glm::dvec3 v = o + x * r - L;
       const double len = glm::length(v);
-      return len > 0.0 && glm::dot(v, axis) >= light.CosCone * len;
+      if (!(len > 0.0 && glm::dot(v, axis) >= light.CosCone * len))
+      {
+        return false;
+      }
+      if (light.Shadowed)
+      {
+        const glm::dvec3 q = o + x * r;
+        const double point[3] = { q.x, q.y, q.z };
+        return this->Visible(light.Position, point);
+      }
+      return true;
     };
     auto f = [&](double x) -> RGB {
       const glm::dvec3 v = o + x * r - L;
@@ -248,13 +330,15 @@ void vtkPlumeAirlightReference::ComputeRay(
       for (size_t p = 0; p + 1 < breaks.size(); ++p)
       {
         const double a = breaks[p], b = breaks[p + 1];
-        if (b > a)
+        // A shadowed light: pieces between the found lit/shadow changes are
+        // classified by the exact ray cast at their middle.
+        if (b > a && (!light.Shadowed || inside(0.5 * (a + b))))
         {
           sum = sum + (coarse ? ((b - a) / 6.0) * (f(a) + 4.0 * f(0.5 * (a + b)) + f(b))
                               : Integrate(f, a, b, tol));
         }
       }
-      if (infinite)
+      if (infinite && (!light.Shadowed || inside(breaks.back() + 1.0)))
       {
         auto g = mapped(breaks.back());
         sum = sum + (coarse ? (1.0 / 6.0) * (g(0.0) + 4.0 * g(0.5) + g(1.0)) : Integrate(g, 0.0, 1.0, tol));

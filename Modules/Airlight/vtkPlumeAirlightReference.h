@@ -25,9 +25,12 @@
 
 #include "PlumeAirlightModule.h" // For export macro
 #include "vtkObject.h"
+#include "vtkSmartPointer.h" // For members
 
 #include <vector> // For std::vector
 
+class vtkOBBTree;
+class vtkPolyData;
 class vtkRenderer;
 
 class PLUMEAIRLIGHT_EXPORT vtkPlumeAirlightReference : public vtkObject
@@ -55,6 +58,15 @@ public:
 
   /** Takes the renderer's switched-on positional lights (call after a render, so head/camera lights are placed). */
   void SetLights(vtkRenderer* renderer);
+
+  /**
+   * Takes the renderer's visible opaque actors' polygons (in world
+   * coordinates, after a render) as occluders: spot lights are then shadowed
+   * by exact ray casts (vtkOBBTree) from the light to each point of the view
+   * ray; point lights stay unshadowed, as in vtkPlumeAirlightPass. Call
+   * before SetLights. Without it (default) nothing casts shadows.
+   */
+  void SetOccluders(vtkRenderer* renderer);
 
   /** Number of lights taken by SetLights. */
   int GetNumberOfLights() const { return static_cast<int>(this->Lights.size()); }
@@ -87,7 +99,14 @@ protected:
     bool Spot;
     double CosCone;
     double Exponent;
+    bool Shadowed;
   };
+
+  // 1 if the segment from `light` to `point` crosses no occluder triangle.
+  bool Visible(const double light[3], const double point[3]) const;
+
+  vtkSmartPointer<vtkPolyData> Occluders;
+  vtkSmartPointer<vtkOBBTree> Tree;
 
   double Scattering[3] = { 0, 0, 0 };
   double Absorption[3] = { 0, 0, 0 };

@@ -35,6 +35,31 @@ uniform float LightCosCone[NUMBER_OF_LIGHTS]; // cos(cone angle); -2 for point l
 uniform float LightExponent[NUMBER_OF_LIGHTS];
 uniform int SpotSteps;
 //PLUME::ENDIF
+//PLUME::IF SHADOW
+// Shadowed spot lights: LightShadow[l] is the light's shadow map (-1: none).
+// ShadowMatrixK: eye coordinates -> the light camera's clip coordinates;
+// ShadowRangeK: its near and far distances; ShadowMapK: window depth.
+uniform int LightShadow[NUMBER_OF_LIGHTS];
+uniform int ShadowSteps;
+uniform sampler2D ShadowMap0;
+uniform mat4 ShadowMatrix0;
+uniform vec2 ShadowRange0;
+#if NUMBER_OF_SHADOWS > 1
+uniform sampler2D ShadowMap1;
+uniform mat4 ShadowMatrix1;
+uniform vec2 ShadowRange1;
+#endif
+#if NUMBER_OF_SHADOWS > 2
+uniform sampler2D ShadowMap2;
+uniform mat4 ShadowMatrix2;
+uniform vec2 ShadowRange2;
+#endif
+#if NUMBER_OF_SHADOWS > 3
+uniform sampler2D ShadowMap3;
+uniform mat4 ShadowMatrix3;
+uniform vec2 ShadowRange3;
+#endif
+//PLUME::ENDIF
 
 //VTK::Output::Dec
 
@@ -203,6 +228,47 @@ vec2 coneInterval(vec3 o, vec3 r, float xs, vec3 apex, vec3 axis, float c)
 }
 //PLUME::ENDIF
 
+//PLUME::IF SHADOW
+// 1 if the eye-space point p is lit in the shadow map (outside its frustum: lit).
+float litIn(sampler2D map, mat4 toLight, vec2 range, vec3 p)
+{
+  vec4 clip = toLight * vec4(p, 1.0);
+  if (clip.w <= range.x)
+  {
+    return 1.0; // behind the light or nearer than its near plane
+  }
+  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))))
+  {
+    return 1.0;
+  }
+  float depth = texture(map, uv).r;
+  if (depth >= 1.0)
+  {
+    return 1.0; // nothing drawn there
+  }
+  // The map's depth as a distance along the light's axis; clip.w is the point's.
+  float n = range.x;
+  float f = range.y;
+  float zMap = 2.0 * n * f / ((f + n) - (2.0 * depth - 1.0) * (f - n));
+  return clip.w <= zMap * 1.002 ? 1.0 : 0.0;
+}
+
+float lit(int s, vec3 p)
+{
+#if NUMBER_OF_SHADOWS > 1
+  if (s == 1) return litIn(ShadowMap1, ShadowMatrix1, ShadowRange1, p);
+#endif
+#if NUMBER_OF_SHADOWS > 2
+  if (s == 2) return litIn(ShadowMap2, ShadowMatrix2, ShadowRange2, p);
+#endif
+#if NUMBER_OF_SHADOWS > 3
+  if (s == 3) return litIn(ShadowMap3, ShadowMatrix3, ShadowRange3, p);
+#endif
+  return litIn(ShadowMap0, ShadowMatrix0, ShadowRange0, p);
+}
+//PLUME::ENDIF
+
 #ifdef MARCH
 // The brute-force peer (vtkPlumeAirlightPass::MarchSteps > 0): the same
 // integral by the midpoint rule with MARCH_STEPS samples per ray and light,
@@ -277,6 +343,49 @@ void main()
       vec2 span = coneInterval(o, r, xs, L, LightAxis[l], LightCosCone[l]);
       if (span.x < span.y)
       {
+//PLUME::IF SHADOW
+        if (LightShadow[l] >= 0)
+        {
+          // Shadowed: the march of Wyman & Ramsey over the cone's interval, in
+          // sub-intervals uniform in the angle seen from the light (shadow
+          // boundaries are angular there). Each adds w * [Phi(x_k) - Phi(x_k-1)]
+          // from the closed-form running integral when a jittered point of it
+          // is lit: a fully lit ray telescopes to the unshadowed result.
+          float th0 = atan(span.x - tc, h);
+          float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
+          int spotSteps = LightExponent[l] == 0.0 ? 1 :
+            min(SpotSteps * int(ceil(sqrt(max(LightExponent[l], 2.0) / 2.0))), 256);
+          int steps = max(ShadowSteps, spotSteps);
+          float dth = (th1 - th0) / float(steps);
+          // Interleaved gradient noise: a per-pixel offset of the lit test in each step.
+          float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+          vec3 footPhi = tc > 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
+          float tStart = max(-tc, 0.0);
+          vec3 footTail = tailPotential(tStart, h, tStart + tc);
+          vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
+          int s = LightShadow[l];
+          for (int k = 1; k <= steps; ++k)
+          {
+            float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
+            vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
+            float xj = tc + h * tan(th0 + (float(k) - 1.0 + jitter) * dth);
+            float v = lit(s, o + xj * r);
+            if (v > 0.0)
+            {
+              float w = 1.0;
+              if (LightExponent[l] != 0.0)
+              {
+                float thm = th0 + (float(k) - 0.5) * dth;
+                vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
+                w = pow(max(dot(dir, LightAxis[l]), 0.0), LightExponent[l]);
+              }
+              unit += w * max(phiB - phiA, vec3(0.0));
+            }
+            phiA = phiB;
+          }
+        }
+        else
+//PLUME::ENDIF
         if (LightExponent[l] == 0.0)
         {
           unit = segment(span.x, span.y, tc, h);

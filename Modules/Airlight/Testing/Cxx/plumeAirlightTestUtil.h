@@ -55,6 +55,8 @@ struct Scene
     this->Renderer->SetBackground(0.1, 0.15, 0.3);
     this->Window->AddRenderer(this->Renderer);
     this->Pass->SetDelegatePass(this->Steps);
+    // The unshadowed closed form unless a test turns shadows on (TestAirlightShadow).
+    this->Pass->ShadowsOff();
   }
 
   vtkActor* AddBox(double x0, double x1, double y0, double y1, double z0, double z1, double r, double g, double b)
@@ -187,6 +189,10 @@ struct Scene
     ref->SetScattering(this->Pass->GetScattering());
     ref->SetAbsorption(this->Pass->GetAbsorption());
     ref->SetIntensityScale(this->Pass->GetIntensityScale());
+    if (this->Pass->GetShadows())
+    {
+      ref->SetOccluders(this->Renderer); // exact ray-cast shadows for spot lights
+    }
     ref->SetLights(this->Renderer);
     auto clamp = [clampOutput](FloatImage& img) {
       if (!clampOutput)
