@@ -6,6 +6,7 @@
 #include "vtkAppendFilter.h"
 #include "vtkCGNSReader.h"
 #include "vtkCallbackCommand.h"
+#include "vtkPlumeQuietExecutive.h"
 #include "vtkCommand.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataPipeline.h"
@@ -598,28 +599,9 @@ int vtkPlumeDatasetReader::FillOutputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-namespace
-{
-// Swallows the executive's "returned failure for request" dump (the failure is reported
-// through GetLastError()); anything else goes to the output window as usual.
-void ExecutiveError(vtkObject*, unsigned long, void*, void* callData)
-{
-  const char* message = static_cast<const char*>(callData);
-  if (message && std::string(message).find("returned failure for request") != std::string::npos)
-  {
-    return;
-  }
-  vtkOutputWindowDisplayErrorText(message ? message : "");
-}
-}
-
 vtkExecutive* vtkPlumeDatasetReader::CreateDefaultExecutive()
 {
-  vtkExecutive* executive = vtkCompositeDataPipeline::New();
-  vtkNew<vtkCallbackCommand> observer;
-  observer->SetCallback(&ExecutiveError);
-  executive->AddObserver(vtkCommand::ErrorEvent, observer);
-  return executive;
+  return plume::NewQuietExecutive(); // RequestData reports the one error itself
 }
 
 //------------------------------------------------------------------------------

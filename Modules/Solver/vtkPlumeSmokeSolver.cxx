@@ -3,8 +3,7 @@
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumePressureSolver.h"
 
-#include "vtkCallbackCommand.h"
-#include "vtkCompositeDataPipeline.h"
+#include "vtkPlumeQuietExecutive.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -289,28 +288,9 @@ int vtkPlumeSmokeSolver::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-namespace
-{
-// Swallows the executive's "returned failure for request" dump: RequestData
-// has already reported the one error naming the problem.
-void ExecutiveError(vtkObject*, unsigned long, void*, void* callData)
-{
-  const char* message = static_cast<const char*>(callData);
-  if (message && std::string(message).find("returned failure for request") != std::string::npos)
-  {
-    return;
-  }
-  vtkOutputWindowDisplayErrorText(message ? message : "");
-}
-}
-
 vtkExecutive* vtkPlumeSmokeSolver::CreateDefaultExecutive()
 {
-  vtkExecutive* executive = vtkCompositeDataPipeline::New();
-  vtkNew<vtkCallbackCommand> observer;
-  observer->SetCallback(&ExecutiveError);
-  executive->AddObserver(vtkCommand::ErrorEvent, observer);
-  return executive;
+  return plume::NewQuietExecutive(); // RequestData reports the one error itself
 }
 
 //------------------------------------------------------------------------------
