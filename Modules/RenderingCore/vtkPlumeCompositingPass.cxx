@@ -243,7 +243,18 @@ void vtkPlumeCompositingPass::RenderOpaqueAndSurfaces(const vtkRenderState* s)
   }
   info->Set(CURRENT_STAGE(), STAGE_VTK);
 
-  // one copy of the opaque depth for every medium of the frame
+  // one copy of the opaque depth for every medium of the frame; none when
+  // the frame has no medium (nothing would read it)
+  bool anyMedium = false;
+  for (int i = 0; i < s->GetPropArrayCount() && !anyMedium; ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    anyMedium = prop->GetVisibility() && (vtkVolume::SafeDownCast(prop) || StagedMapper(prop, STAGE_MEDIA));
+  }
+  if (!anyMedium)
+  {
+    return;
+  }
   this->LastDepthShared = this->Depth->Capture(ren);
   if (this->LastDepthShared)
   {

@@ -14,7 +14,8 @@
  *      write depth and blend their faded part over the opaque scene), back
  *      to front;
  *   3. the opaque depth (2 + 1) is copied once into a shared
- *      vtkPlumeOpaqueDepthTexture (GetSharedDepth) for every medium of the frame;
+ *      vtkPlumeOpaqueDepthTexture (GetSharedDepth) for every medium of the
+ *      frame (not at all when the frame has no medium);
  *   4. VTK's translucent pass as vtkRenderer would run it: order-independent
  *      transparency, or dual depth peeling when the renderer's
  *      UseDepthPeeling is on;
@@ -122,7 +123,7 @@ public:
   const std::vector<vtkProp*>& GetLastMediaOrder() const { return this->LastMediaOrder; }
   ///@}
 
-  /** Whether the last frame's shared depth was captured (false: media drew unbounded). */
+  /** Whether the last frame's shared depth was captured (false: no medium, or media drew unbounded). */
   bool GetLastDepthShared() const { return this->LastDepthShared; }
 
 protected:

@@ -268,6 +268,15 @@ int TestCompositingPass(int argc, char* argv[])
     PLUME_CHECK(peeled <= 2.0 / 255);
   }
 
+  // ---- no medium in the frame: no depth copy
+  {
+    Scene s = Make({ 0, 1, 2, 3 }, true, false, front);
+    s.SheetActor->VisibilityOff();
+    s.Volume->VisibilityOff();
+    RenderScene(s, failures, "no medium");
+    PLUME_CHECK(!s.Pass->GetLastDepthShared());
+  }
+
   // ---- a volume behind the sheet is drawn first
   {
     Scene s = Make({ 3, 2, 1, 0 }, true, false, -1.6);
