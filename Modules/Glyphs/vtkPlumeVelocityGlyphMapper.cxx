@@ -10,7 +10,7 @@
 #include "vtkPlumeShaderFeatures.h"
 #include "vtkPlumeShaderProgramCache.h"
 #include "vtkPlumeShaderVariants.h"
-#include "vtkPlumeTextureHandOver.h"
+#include "vtkPlumeVectorTexture3D.h"
 #include "vtkPlumeThrottledDraw.h"
 
 #include "vtkPlumeGlyphFS.h"
@@ -68,38 +68,13 @@ void Apply(const double m[16], const double p[3], double out[4])
   }
 }
 
-// Velocity of points [begin, end) as RGBA floats (v, valid) into rgba[0..4*(end-begin)).
-template <typename T>
-void CopyVectors(const T* src, vtkIdType begin, vtkIdType end, float* rgba)
-{
-  for (vtkIdType i = begin; i < end; ++i, rgba += 4)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      rgba[c] = static_cast<float>(src[3 * i + c]);
-    }
-    rgba[3] = 1.0f;
-  }
-}
-
-template <typename T>
-void ApplyMask(const T* src, vtkIdType begin, vtkIdType end, int comps, float* rgba)
-{
-  for (vtkIdType i = begin; i < end; ++i, rgba += 4)
-  {
-    if (src[i * comps] == T(0))
-    {
-      rgba[3] = 0.0f;
-    }
-  }
-}
 } // namespace
 
 //------------------------------------------------------------------------------
 class vtkPlumeVelocityGlyphMapper::Internals
 {
 public:
-  // What the velocity texture (or the CPU statistics) were built from.
+  // What the CPU statistics were built from.
   struct Signature
   {
     vtkImageData* Image = nullptr;
@@ -114,79 +89,61 @@ public:
     bool operator!=(const Signature& o) const { return !(*this == o); }
   };
 
-  // Sanitised velocity of points [begin, end): RGBA = (v, valid), with
-  // non-finite or masked nodes set to (0, 0, 0, 0); widens range[0..1] by the
-  // speeds of the valid nodes.
-  static void ConvertVelocity(vtkDataArray* vectors, vtkDataArray* mask, vtkIdType begin,
-    vtkIdType end, float* rgba, double range[2])
+  // What one Render() works out and its steps pass on.
+  struct Frame
   {
-    switch (vectors->GetDataType())
-    {
-      vtkTemplateMacro(
-        CopyVectors(static_cast<const VTK_TT*>(vectors->GetVoidPointer(0)), begin, end, rgba));
-      default:
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          double v[3];
-          vectors->GetTuple(i, v);
-          float* t = rgba + 4 * (i - begin);
-          for (int c = 0; c < 3; ++c)
-          {
-            t[c] = static_cast<float>(v[c]);
-          }
-          t[3] = 1.0f;
-        }
-    }
-    if (mask)
-    {
-      const int comps = mask->GetNumberOfComponents();
-      switch (mask->GetDataType())
-      {
-        vtkTemplateMacro(ApplyMask(
-          static_cast<const VTK_TT*>(mask->GetVoidPointer(0)), begin, end, comps, rgba));
-        default:
-          for (vtkIdType i = begin; i < end; ++i)
-          {
-            if (mask->GetComponent(i, 0) == 0.0)
-            {
-              rgba[4 * (i - begin) + 3] = 0.0f;
-            }
-          }
-      }
-    }
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      float* t = rgba + 4 * (i - begin);
-      if (!std::isfinite(t[0]) || !std::isfinite(t[1]) || !std::isfinite(t[2]) || t[3] == 0.0f)
-      {
-        t[0] = t[1] = t[2] = t[3] = 0.0f;
-        continue;
-      }
-      const double s = std::sqrt(double(t[0]) * t[0] + double(t[1]) * t[1] + double(t[2]) * t[2]);
-      range[0] = std::min(range[0], s);
-      range[1] = std::max(range[1], s);
-    }
-  }
+    vtkRenderer* Renderer = nullptr;
+    vtkActor* Actor = nullptr;
+    vtkOpenGLRenderWindow* Window = nullptr;
+    vtkImageData* Image = nullptr;
+    int Dims[3] = { 0, 0, 0 };
+    // index space -> centre-relative model -> clip, composed in double
+    double Centre[4] = { 0, 0, 0, 1 };
+    double IndexToRel[16];
+    double RelToIndex[16];
+    double MCDCRel[16];
+    int Viewport[2] = { 0, 0 };
+    // roots
+    bool SeedMode = false;
+    int Stride = 1;
+    int StridedDims[3] = { 0, 0, 0 };
+    vtkIdType RootCount = 0;
+    // colour
+    bool UseLUT = false;
+    double ColorRange[2] = { 0, 0 };
+    // shader variant
+    int Segments = 1;
+    std::string Integrator = "STRAIGHT";
+    bool Wide = false;
+    bool LineVS = false;
+    bool Opaque = true;
+    std::vector<vtkOpenGLRenderPass*> Passes; // VTK's translucent pass, when it draws us
+  };
 
-  // Points converted per slab: the sanitised copy never exists whole on the
-  // CPU (the process's peak memory is what the benchmarks compare).
-  static constexpr vtkIdType SlabPoints = 1 << 16;
-
-  // Speed statistics of the valid nodes (SpeedRange), one slab at a time.
+  // Speed statistics of the valid nodes (SpeedRange, component ranges), one
+  // slab at a time in the velocity texture's own layout.
   void BuildStatistics(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask)
   {
     const vtkIdType n = image->GetNumberOfPoints();
-    std::vector<float> slab(4 * static_cast<size_t>(std::min(n, SlabPoints)));
+    const vtkIdType slabPoints = vtkPlumeVectorTexture3D::SlabPoints;
+    std::vector<float> slab(4 * static_cast<size_t>(std::min(n, slabPoints)));
     double range[2] = { VTK_DOUBLE_MAX, -1.0 };
     double low[3] = { 0, 0, 0 }, high[3] = { 0, 0, 0 };
-    for (vtkIdType begin = 0; begin < n; begin += SlabPoints)
+    for (vtkIdType begin = 0; begin < n; begin += slabPoints)
     {
-      const vtkIdType end = std::min(n, begin + SlabPoints);
-      ConvertVelocity(vectors, mask, begin, end, slab.data(), range);
+      const vtkIdType end = std::min(n, begin + slabPoints);
+      vtkPlumeVectorTexture3D::ConvertSlab(vectors, mask, begin, end, slab.data());
       for (vtkIdType i = 0; i < end - begin; ++i)
       {
         const float* v = &slab[4 * static_cast<size_t>(i)];
-        for (int a = 0; a < 3 && v[3] > 0.f; ++a)
+        if (!(v[3] > 0.f))
+        {
+          continue; // invalid: non-finite or masked
+        }
+        const double s = std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
+        range[0] = std::min(range[0], s);
+        range[1] = std::max(range[1], s);
+        for (int a = 0; a < 3; ++a)
         {
           low[a] = std::min(low[a], double(v[a]));
           high[a] = std::max(high[a], double(v[a]));
@@ -204,13 +161,13 @@ public:
   void BuildRobustSpeed(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask)
   {
     const vtkIdType n = image->GetNumberOfPoints();
-    std::vector<float> slab(4 * static_cast<size_t>(std::min(n, SlabPoints)));
+    const vtkIdType slabPoints = vtkPlumeVectorTexture3D::SlabPoints;
+    std::vector<float> slab(4 * static_cast<size_t>(std::min(n, slabPoints)));
     std::vector<float> speeds;
-    double range[2] = { VTK_DOUBLE_MAX, -1.0 };
-    for (vtkIdType begin = 0; begin < n; begin += SlabPoints)
+    for (vtkIdType begin = 0; begin < n; begin += slabPoints)
     {
-      const vtkIdType end = std::min(n, begin + SlabPoints);
-      ConvertVelocity(vectors, mask, begin, end, slab.data(), range);
+      const vtkIdType end = std::min(n, begin + slabPoints);
+      vtkPlumeVectorTexture3D::ConvertSlab(vectors, mask, begin, end, slab.data());
       for (vtkIdType i = 0; i < end - begin; ++i)
       {
         const float* v = &slab[4 * static_cast<size_t>(i)];
@@ -230,56 +187,30 @@ public:
     }
   }
 
-  // Velocity texture (internal format `internalFormat`) filled from whole
-  // z-slabs of the image converted on the fly (the ranges are BuildStatistics').
-  bool UploadVelocity(vtkOpenGLRenderWindow* renWin, vtkDataArray* vectors, vtkDataArray* mask,
-    const int dims[3], unsigned int internalFormat)
-  {
-    vtkTextureObject* texture = this->VelocityTexture;
-    texture->SetContext(renWin);
-    texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    texture->SetWrapR(vtkTextureObject::ClampToEdge);
-    texture->SetMinificationFilter(vtkTextureObject::Linear);
-    texture->SetMagnificationFilter(vtkTextureObject::Linear);
-    texture->SetInternalFormat(internalFormat);
-    if (!texture->Create3DFromRaw(dims[0], dims[1], dims[2], 4, VTK_FLOAT, nullptr))
-    {
-      return false;
-    }
-    const vtkIdType slice = vtkIdType(dims[0]) * dims[1];
-    const int slabSlices = static_cast<int>(std::max<vtkIdType>(1, SlabPoints / slice));
-    std::vector<float> slab(4 * static_cast<size_t>(slice) * std::min(slabSlices, dims[2]));
-    double range[2] = { VTK_DOUBLE_MAX, -1.0 }; // ConvertVelocity's by-product, not needed here
-    texture->Activate();
-    // rows are 16·dims[0] bytes: any GL_UNPACK_ALIGNMENT fits
-    for (int z = 0; z < dims[2]; z += slabSlices)
-    {
-      const int nz = std::min(slabSlices, dims[2] - z);
-      ConvertVelocity(vectors, mask, z * slice, (z + nz) * slice, slab.data(), range);
-      glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, z, dims[0], dims[1], nz, GL_RGBA, GL_FLOAT, slab.data());
-    }
-    texture->Deactivate();
-    return true;
-  }
+  // The render steps, in order (Render() calls them).
+  bool UpdateResources(vtkPlumeVelocityGlyphMapper* self, Frame& frame, vtkDataArray* vectors,
+    vtkDataArray* mask);
+  bool ComputeFrame(vtkPlumeVelocityGlyphMapper* self, Frame& frame);
+  bool UpdateRoots(vtkPlumeVelocityGlyphMapper* self, Frame& frame);
+  bool UpdateColors(vtkPlumeVelocityGlyphMapper* self, Frame& frame);
+  vtkShaderProgram* ReadyProgram(vtkPlumeVelocityGlyphMapper* self, Frame& frame);
+  void SetUniforms(vtkPlumeVelocityGlyphMapper* self, const Frame& frame, vtkShaderProgram* program);
+  void Draw(vtkPlumeVelocityGlyphMapper* self, const Frame& frame, vtkShaderProgram* program);
 
   // GL objects
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
-  vtkNew<vtkTextureObject> VelocityTexture;
+  vtkNew<vtkPlumeVectorTexture3D> Velocity;
   vtkNew<vtkPlumeLookupTexture> LUTTexture;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
   vtkNew<vtkOpenGLVertexArrayObject> SeedVAO;
   vtkNew<vtkOpenGLBufferObject> SeedBuffer;
   vtkNew<vtkPlumeShaderProgramCache> Programs;
   vtkShaderProgram* SeedVAOProgram = nullptr;
-  int Max3DTextureSize = 0;
 
-  // upload bookkeeping
-  Signature Uploaded;       // velocity texture content
+  // CPU-side bookkeeping
   Signature StatsSignature; // SpeedRange content
   Signature RobustSignature; // RobustSpeed content
   double RobustSpeed = 0.0;
-  Signature HandedSignature; // the last handed-over texture's data (counts hand-overs)
   double SpeedRange[2] = { 0, 0 };
   // Per-axis range of the valid vectors, widened to include 0 (for bounds).
   double ComponentLow[3] = { 0, 0, 0 };
@@ -294,21 +225,18 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window)
   {
-    this->VelocityTexture->ReleaseGraphicsResources(window);
+    this->Velocity->ReleaseGraphicsResources(window);
     this->LUTTexture->ReleaseGraphicsResources(window);
     this->EmptyVAO->ReleaseGraphicsResources();
     this->SeedVAO->ReleaseGraphicsResources();
     this->SeedBuffer->ReleaseGraphicsResources();
     this->Programs->ReleaseGraphicsResources(window);
     this->SeedVAOProgram = nullptr;
-    this->Uploaded = Signature();
     this->SeedTime = 0;
     this->SeedObject = nullptr;
-    this->Max3DTextureSize = 0;
     this->Window = nullptr;
   }
 };
-
 //------------------------------------------------------------------------------
 vtkStandardNewMacro(vtkPlumeVelocityGlyphMapper);
 
@@ -655,9 +583,12 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     vtkErrorMacro(<< "no input image");
     return;
   }
-  int dims[3];
-  image->GetDimensions(dims);
-  if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1 || image->GetNumberOfPoints() < 1)
+  Internals::Frame frame;
+  frame.Renderer = ren;
+  frame.Actor = actor;
+  frame.Image = image;
+  image->GetDimensions(frame.Dims);
+  if (frame.Dims[0] < 1 || frame.Dims[1] < 1 || frame.Dims[2] < 1 || image->GetNumberOfPoints() < 1)
   {
     return;
   }
@@ -681,123 +612,93 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
   {
     return; // hardware selection is not supported
   }
-
-  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  auto* camera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
-  if (!renWin || !camera)
+  frame.Window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!frame.Window || !vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera()))
   {
     vtkErrorMacro(<< "an OpenGL render window and camera are required");
     return;
   }
-  if (impl.Window && impl.Window != renWin)
+  if (impl.Window && impl.Window != frame.Window)
   {
-    impl.ReleaseGraphicsResources(impl.Window);
+    impl.ReleaseGraphicsResources(impl.Window); // GL objects belong to one context
   }
-  impl.Window = renWin;
+  impl.Window = frame.Window;
 
-  if (impl.Max3DTextureSize == 0)
+  if (!impl.UpdateResources(this, frame, vectors, mask) || !impl.ComputeFrame(this, frame) ||
+    !impl.UpdateRoots(this, frame) || !impl.UpdateColors(this, frame))
   {
-    GLint maxSize = 0;
-    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
-    impl.Max3DTextureSize = maxSize;
-  }
-  if (dims[0] > impl.Max3DTextureSize || dims[1] > impl.Max3DTextureSize ||
-    dims[2] > impl.Max3DTextureSize)
-  {
-    vtkErrorMacro(<< "grid " << dims[0] << "x" << dims[1] << "x" << dims[2]
-                  << " exceeds GL_MAX_3D_TEXTURE_SIZE = " << impl.Max3DTextureSize
-                  << " along at least one axis; resample the data to a coarser image");
     return;
   }
+  vtkShaderProgram* program = impl.ReadyProgram(this, frame);
+  if (!program)
+  {
+    return;
+  }
+  impl.SetUniforms(this, frame, program);
+  impl.Draw(this, frame, program);
+}
 
-  // ---- velocity texture: only when the data changed
-  Internals::Signature sig{ image, vectors, mask,
+//------------------------------------------------------------------------------
+// Step 1: the data on the GPU (hand-over or upload, only when it changed) and
+// its statistics (usually already computed by GetBounds).
+bool vtkPlumeVelocityGlyphMapper::Internals::UpdateResources(
+  vtkPlumeVelocityGlyphMapper* self, Frame& frame, vtkDataArray* vectors, vtkDataArray* mask)
+{
+  vtkImageData* image = frame.Image;
+  const Signature sig{ image, vectors, mask,
     std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 }) };
-  // speed and component ranges (usually already computed by GetBounds)
-  if (sig != impl.StatsSignature)
+  if (sig != this->StatsSignature)
   {
-    impl.BuildStatistics(image, vectors, mask);
-    impl.StatsSignature = sig;
+    this->BuildStatistics(image, vectors, mask);
+    this->StatsSignature = sig;
   }
-  // A GPU copy handed over by the filter that computed the array (same
-  // context, array unchanged since, our layout) replaces our own upload.
-  vtkTextureObject* handed = mask ? nullptr : vtkPlumeTextureHandOver::Find(vectors, renWin);
-  if (handed &&
-    (handed->GetWidth() != static_cast<unsigned int>(dims[0]) ||
-      handed->GetHeight() != static_cast<unsigned int>(dims[1]) ||
-      handed->GetDepth() != static_cast<unsigned int>(dims[2]) || handed->GetComponents() != 4 ||
-      handed->GetVTKDataType() != VTK_FLOAT))
+  if (!this->Velocity->Update(frame.Window, image, vectors, mask))
   {
-    handed = nullptr;
+    vtkErrorWithObjectMacro(self, << this->Velocity->GetLastError());
+    return false;
   }
-  if (handed)
-  {
-    if (impl.VelocityTexture->GetHandle())
-    {
-      impl.VelocityTexture->ReleaseGraphicsResources(renWin); // not needed meanwhile
-    }
-    impl.Uploaded = Internals::Signature();
-    handed->SetWrapS(vtkTextureObject::ClampToEdge);
-    handed->SetWrapT(vtkTextureObject::ClampToEdge);
-    handed->SetWrapR(vtkTextureObject::ClampToEdge);
-    handed->SetMinificationFilter(vtkTextureObject::Linear);
-    handed->SetMagnificationFilter(vtkTextureObject::Linear);
-    if (sig != impl.HandedSignature)
-    {
-      impl.HandedSignature = sig;
-      ++this->HandOverCount;
-    }
-  }
-  else if (sig != impl.Uploaded || !impl.VelocityTexture->GetHandle())
-  {
-    const bool uploaded = impl.UploadVelocity(renWin, vectors, mask, dims, GL_RGBA32F);
-    if (!uploaded)
-    {
-      vtkErrorMacro(<< "could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
-                    << " RGBA32F velocity texture");
-      impl.Uploaded = Internals::Signature();
-      return;
-    }
-    impl.Uploaded = sig;
-    ++this->UploadCount;
-  }
+  return true;
+}
 
-  // ---- geometry: index space -> centre-relative model -> clip, composed in double
-  // (the image's direction matrix and extent start honoured, as every renderer does)
+//------------------------------------------------------------------------------
+// Step 2: index space -> centre-relative model -> clip, composed in double
+// (the image's direction matrix and extent start honoured, as every renderer does).
+bool vtkPlumeVelocityGlyphMapper::Internals::ComputeFrame(
+  vtkPlumeVelocityGlyphMapper* vtkNotUsed(self), Frame& frame)
+{
+  const int* dims = frame.Dims;
   double indexToModel[16];
-  plume::IndexToPhysical(image, indexToModel);
-  double centre[4];
+  plume::IndexToPhysical(frame.Image, indexToModel);
   const double mid[3] = { 0.5 * (dims[0] - 1), 0.5 * (dims[1] - 1), 0.5 * (dims[2] - 1) };
-  Apply(indexToModel, mid, centre);
-  double indexToRel[16];
-  std::copy(indexToModel, indexToModel + 16, indexToRel);
+  Apply(indexToModel, mid, frame.Centre);
+  std::copy(indexToModel, indexToModel + 16, frame.IndexToRel);
   for (int r = 0; r < 3; ++r)
   {
-    indexToRel[4 * r + 3] = indexToModel[4 * r + 3] - centre[r];
+    frame.IndexToRel[4 * r + 3] = indexToModel[4 * r + 3] - frame.Centre[r];
   }
-  double relToIndex[16];
-  vtkMatrix4x4::Invert(indexToRel, relToIndex);
+  vtkMatrix4x4::Invert(frame.IndexToRel, frame.RelToIndex);
 
   vtkMatrix4x4* wcvc = nullptr;
   vtkMatrix4x4* vcdc = nullptr;
   vtkMatrix4x4* wcdcT = nullptr;
   vtkMatrix3x3* normals = nullptr;
-  camera->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdcT); // transposed for GL
+  vtkOpenGLCamera::SafeDownCast(frame.Renderer->GetActiveCamera())
+    ->GetKeyMatrices(frame.Renderer, wcvc, normals, vcdc, wcdcT); // transposed for GL
   double wcdc[16];
   vtkMatrix4x4::Transpose(wcdcT->GetData(), wcdc);
   double modelToWorld[16];
   vtkMatrix4x4::Identity(modelToWorld);
-  if (!actor->GetIsIdentity())
+  if (!frame.Actor->GetIsIdentity())
   {
-    std::copy(actor->GetMatrix()->GetData(), actor->GetMatrix()->GetData() + 16, modelToWorld);
+    std::copy(frame.Actor->GetMatrix()->GetData(), frame.Actor->GetMatrix()->GetData() + 16, modelToWorld);
   }
   double relToModel[16];
   vtkMatrix4x4::Identity(relToModel);
   for (int r = 0; r < 3; ++r)
   {
-    relToModel[4 * r + 3] = centre[r];
+    relToModel[4 * r + 3] = frame.Centre[r];
   }
-  double mcdcRel[16];
+  double* mcdcRel = frame.MCDCRel;
   vtkMatrix4x4::Multiply4x4(modelToWorld, relToModel, mcdcRel);
   vtkMatrix4x4::Multiply4x4(wcdc, mcdcRel, mcdcRel);
   // Coincident topology, as VTK does for lines: glyphs lying in a surface
@@ -809,23 +710,26 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     mcdcRel[8 + c] -= CoincidentDepthOffset * mcdcRel[12 + c];
   }
 
-  int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
-  ren->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &vpX, &vpY);
-  if (vpWidth < 1 || vpHeight < 1)
-  {
-    return;
-  }
+  int vpX = 0, vpY = 0;
+  frame.Renderer->GetTiledSizeAndOrigin(&frame.Viewport[0], &frame.Viewport[1], &vpX, &vpY);
+  return frame.Viewport[0] >= 1 && frame.Viewport[1] >= 1;
+}
 
-  // ---- roots
-  const bool seedMode = this->RootMode == ROOTS_SEEDS;
+//------------------------------------------------------------------------------
+// Step 3: the glyph roots: a lattice (fixed stride or one adaptive to the
+// projected footprint) or the seed points, uploaded only when they change.
+bool vtkPlumeVelocityGlyphMapper::Internals::UpdateRoots(vtkPlumeVelocityGlyphMapper* self, Frame& frame)
+{
+  const int* dims = frame.Dims;
+  frame.SeedMode = self->RootMode == ROOTS_SEEDS;
   int stride = 1;
-  int stridedDims[3] = { dims[0], dims[1], dims[2] };
+  std::copy(dims, dims + 3, frame.StridedDims);
   vtkIdType rootCount = 0;
-  if (!seedMode)
+  if (!frame.SeedMode)
   {
-    if (this->RootMode == ROOTS_LATTICE)
+    if (self->RootMode == ROOTS_LATTICE)
     {
-      stride = this->LatticeStride;
+      stride = self->LatticeStride;
     }
     else
     {
@@ -834,7 +738,7 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
       double ymin = VTK_DOUBLE_MAX, ymax = -VTK_DOUBLE_MAX;
       bool behind = false;
       double indexToClip[16];
-      vtkMatrix4x4::Multiply4x4(mcdcRel, indexToRel, indexToClip);
+      vtkMatrix4x4::Multiply4x4(frame.MCDCRel, frame.IndexToRel, indexToClip);
       for (int corner = 0; corner < 8; ++corner)
       {
         const double idx[3] = { (corner & 1) ? dims[0] - 1.0 : 0.0,
@@ -851,7 +755,8 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
         ymin = std::min(ymin, c[1] / c[3]);
         ymax = std::max(ymax, c[1] / c[3]);
       }
-      double area = double(vpWidth) * vpHeight;
+      const double vpWidth = frame.Viewport[0], vpHeight = frame.Viewport[1];
+      double area = vpWidth * vpHeight;
       if (!behind)
       {
         const double w = std::max(0.0, std::min(xmax, 1.0) - std::max(xmin, -1.0));
@@ -859,23 +764,24 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
         area = 0.25 * w * h * vpWidth * vpHeight;
       }
       const double nodes = double(dims[0]) * dims[1] * dims[2];
-      const double target = std::max(1.0, area / (this->ScreenSpacing * this->ScreenSpacing));
+      const double target = std::max(1.0, area / (self->ScreenSpacing * self->ScreenSpacing));
       stride = std::max(1, static_cast<int>(std::ceil(std::cbrt(nodes / target) - 1e-9)));
       stride = std::min(stride, std::max({ dims[0], dims[1], dims[2] }));
     }
     for (int a = 0; a < 3; ++a)
     {
-      stridedDims[a] = (dims[a] + stride - 1) / stride;
+      frame.StridedDims[a] = (dims[a] + stride - 1) / stride;
     }
-    rootCount = vtkIdType(stridedDims[0]) * stridedDims[1] * stridedDims[2];
+    rootCount = vtkIdType(frame.StridedDims[0]) * frame.StridedDims[1] * frame.StridedDims[2];
   }
   else
   {
-    vtkDataSet* seeds = SeedInput(this);
+    vtkDataSet* seeds = SeedInput(self);
     const vtkIdType n = seeds ? seeds->GetNumberOfPoints() : 0;
+    const double* centre = frame.Centre;
     if (n > 0 &&
-      (seeds != impl.SeedObject || seeds->GetMTime() != impl.SeedTime ||
-        !std::equal(centre, centre + 3, impl.SeedCentre) || !impl.SeedBuffer->GetHandle()))
+      (seeds != this->SeedObject || seeds->GetMTime() != this->SeedTime ||
+        !std::equal(centre, centre + 3, this->SeedCentre) || !this->SeedBuffer->GetHandle()))
     {
       std::vector<float> positions(3 * static_cast<size_t>(n));
       for (vtkIdType i = 0; i < n; ++i)
@@ -887,102 +793,104 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
           positions[3 * i + a] = static_cast<float>(p[a] - centre[a]);
         }
       }
-      impl.SeedBuffer->Upload(positions, vtkOpenGLBufferObject::ArrayBuffer);
-      impl.SeedObject = seeds;
-      impl.SeedTime = seeds->GetMTime();
-      std::copy(centre, centre + 3, impl.SeedCentre);
-      impl.SeedCount = n;
-      impl.SeedUploadChanged = true;
+      this->SeedBuffer->Upload(positions, vtkOpenGLBufferObject::ArrayBuffer);
+      this->SeedObject = seeds;
+      this->SeedTime = seeds->GetMTime();
+      std::copy(centre, centre + 3, this->SeedCentre);
+      this->SeedCount = n;
+      this->SeedUploadChanged = true;
     }
-    rootCount = n > 0 ? impl.SeedCount : 0;
+    rootCount = n > 0 ? this->SeedCount : 0;
   }
-  this->EffectiveStride = stride;
-  this->LastRootCount = rootCount;
-  if (rootCount < 1)
-  {
-    return;
-  }
+  frame.Stride = stride;
+  frame.RootCount = rootCount;
+  self->EffectiveStride = stride;
+  self->LastRootCount = rootCount;
+  return rootCount >= 1;
+}
 
-  // ---- colour lookup texture: only when the table, its range or the data range changed
-  const bool useLUT = this->ColorByMagnitude;
-  double colorRange[2] = { this->ScalarRange[0], this->ScalarRange[1] };
-  if (this->UseDataRange)
+//------------------------------------------------------------------------------
+// Step 4: the colour lookup texture, only when the table, its range or the data range changed.
+bool vtkPlumeVelocityGlyphMapper::Internals::UpdateColors(vtkPlumeVelocityGlyphMapper* self, Frame& frame)
+{
+  frame.UseLUT = self->ColorByMagnitude;
+  frame.ColorRange[0] = self->UseDataRange ? this->SpeedRange[0] : self->ScalarRange[0];
+  frame.ColorRange[1] = self->UseDataRange ? this->SpeedRange[1] : self->ScalarRange[1];
+  if (!frame.UseLUT)
   {
-    colorRange[0] = impl.SpeedRange[0];
-    colorRange[1] = impl.SpeedRange[1];
+    return true;
   }
-  if (useLUT)
+  vtkScalarsToColors* lut = self->GetLookupTable();
+  lut->SetRange(frame.ColorRange);
+  lut->Build();
+  const int uploads = this->LUTTexture->GetUploadCount();
+  if (!this->LUTTexture->Update(frame.Window, lut, lut->GetMTime(), frame.ColorRange, LUTSize,
+        [lut](double value, float rgba[4]) {
+          const unsigned char* c = lut->MapValue(value);
+          for (int k = 0; k < 4; ++k)
+          {
+            rgba[k] = c[k] / 255.0f;
+          }
+        }))
   {
-    vtkScalarsToColors* lut = this->GetLookupTable();
-    lut->SetRange(colorRange);
-    lut->Build();
-    const int uploads = impl.LUTTexture->GetUploadCount();
-    if (!impl.LUTTexture->Update(renWin, lut, lut->GetMTime(), colorRange, Internals::LUTSize,
-          [lut](double value, float rgba[4]) {
-            const unsigned char* c = lut->MapValue(value);
-            for (int k = 0; k < 4; ++k)
-            {
-              rgba[k] = c[k] / 255.0f;
-            }
-          }))
+    vtkErrorWithObjectMacro(self, << "could not create the colour lookup texture");
+    return false;
+  }
+  if (this->LUTTexture->GetUploadCount() != uploads)
+  {
+    const std::vector<float>& table = this->LUTTexture->GetTable();
+    this->LUTOpaque = true;
+    for (int i = 0; i < LUTSize; ++i)
     {
-      vtkErrorMacro(<< "could not create the colour lookup texture");
-      return;
-    }
-    if (impl.LUTTexture->GetUploadCount() != uploads)
-    {
-      const std::vector<float>& table = impl.LUTTexture->GetTable();
-      impl.LUTOpaque = true;
-      for (int i = 0; i < Internals::LUTSize; ++i)
-      {
-        impl.LUTOpaque = impl.LUTOpaque && table[4 * i + 3] >= 1.0f;
-      }
+      this->LUTOpaque = this->LUTOpaque && table[4 * i + 3] >= 1.0f;
     }
   }
+  return true;
+}
 
-  // ---- shader variant
-  int segments = 1;
-  std::string integrator = "STRAIGHT";
-  if (this->Integrator == RK2 || this->Integrator == RK4)
+//------------------------------------------------------------------------------
+// Step 5: the shader variant for the features in use (compiled once per variant).
+vtkShaderProgram* vtkPlumeVelocityGlyphMapper::Internals::ReadyProgram(
+  vtkPlumeVelocityGlyphMapper* self, Frame& frame)
+{
+  if (self->Integrator == RK2 || self->Integrator == RK4)
   {
-    segments = this->StreamletSegments;
-    integrator = this->Integrator == RK2 ? "RK2" : "RK4";
+    frame.Segments = self->StreamletSegments;
+    frame.Integrator = self->Integrator == RK2 ? "RK2" : "RK4";
   }
-  const bool wide = this->LineWidth > 1.0;
-  const bool lineVS = !seedMode && integrator == "STRAIGHT" && !wide &&
-    this->StraightLineShader == VERTEX_SHADER;
+  frame.Wide = self->LineWidth > 1.0;
+  frame.LineVS = !frame.SeedMode && frame.Integrator == "STRAIGHT" && !frame.Wide &&
+    self->StraightLineShader == VERTEX_SHADER;
   // Opaque glyphs (no fade, actor opacity 1, an opaque table or solid colour)
   // need no alpha varying, no discard and no blending: the same image with
   // less work per fragment, which dominates dense glyphs on llvmpipe.
-  vtkProperty* property = actor->GetProperty();
-  const bool opaque = this->RootAlpha >= 1.0 && property->GetOpacity() >= 1.0 &&
-    (!useLUT || impl.LUTOpaque);
+  frame.Opaque = self->RootAlpha >= 1.0 && frame.Actor->GetProperty()->GetOpacity() >= 1.0 &&
+    (!frame.UseLUT || this->LUTOpaque);
   vtkPlumeShaderFeatures features;
-  features.Enable(seedMode ? "SEEDS" : "LATTICE")
-    .Enable(integrator)
-    .Enable(wide ? "WIDE" : "THIN")
-    .Enable(useLUT ? "LUT" : "SOLID")
-    .Enable(opaque ? "OPAQUE" : "FADE")
-    .Define("PLUME_SEGMENTS", segments)
-    .Define("PLUME_POINTS", segments + 1)
-    .Define("PLUME_VERTICES_WIDE", 2 * (segments + 1));
-  const char* vsTemplate = lineVS ? vtkPlumeGlyphLineVS : vtkPlumeGlyphVS;
-  const char* gsTemplate = lineVS ? nullptr : vtkPlumeGlyphGS;
+  features.Enable(frame.SeedMode ? "SEEDS" : "LATTICE")
+    .Enable(frame.Integrator)
+    .Enable(frame.Wide ? "WIDE" : "THIN")
+    .Enable(frame.UseLUT ? "LUT" : "SOLID")
+    .Enable(frame.Opaque ? "OPAQUE" : "FADE")
+    .Define("PLUME_SEGMENTS", frame.Segments)
+    .Define("PLUME_POINTS", frame.Segments + 1)
+    .Define("PLUME_VERTICES_WIDE", 2 * (frame.Segments + 1));
+  const char* vsTemplate = frame.LineVS ? vtkPlumeGlyphLineVS : vtkPlumeGlyphVS;
+  const char* gsTemplate = frame.LineVS ? nullptr : vtkPlumeGlyphGS;
   // A translucent actor is drawn inside VTK's translucent pass (order-
   // independent transparency or depth peeling), which rewrites fragment
   // shaders through the actor's render-pass keys and owns the blending.
-  std::vector<vtkOpenGLRenderPass*> passes;
-  vtkInformation* passKeys = actor->GetPropertyKeys();
+  vtkInformation* passKeys = frame.Actor->GetPropertyKeys();
   if (passKeys && passKeys->Has(vtkOpenGLRenderPass::RenderPasses()))
   {
     for (int i = 0; i < passKeys->Length(vtkOpenGLRenderPass::RenderPasses()); ++i)
     {
-      passes.push_back(
+      frame.Passes.push_back(
         static_cast<vtkOpenGLRenderPass*>(passKeys->Get(vtkOpenGLRenderPass::RenderPasses(), i)));
     }
   }
   vtkShaderProgram* program = nullptr;
-  if (!passes.empty())
+  if (!frame.Passes.empty())
   {
     // the passes' replacements change between their stages: the shader
     // cache (keyed by the final source) keeps one program per stage
@@ -991,67 +899,74 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     std::string gs =
       gsTemplate ? vtkPlumeShaderVariants::Select(gsTemplate, features.GetEnabled(), defines) : std::string();
     std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeGlyphFS, features.GetEnabled(), defines);
-    for (vtkOpenGLRenderPass* pass : passes)
+    for (vtkOpenGLRenderPass* pass : frame.Passes)
     {
-      pass->PreReplaceShaderValues(vs, gs, fs, this, actor);
+      pass->PreReplaceShaderValues(vs, gs, fs, self, frame.Actor);
     }
-    for (vtkOpenGLRenderPass* pass : passes)
+    for (vtkOpenGLRenderPass* pass : frame.Passes)
     {
-      pass->PostReplaceShaderValues(vs, gs, fs, this, actor);
+      pass->PostReplaceShaderValues(vs, gs, fs, self, frame.Actor);
     }
-    program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+    program = frame.Window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
   }
   else
   {
-    program = impl.Programs->Ready(renWin, vsTemplate, gsTemplate, vtkPlumeGlyphFS, features);
+    program = this->Programs->Ready(frame.Window, vsTemplate, gsTemplate, vtkPlumeGlyphFS, features);
   }
   if (!program)
   {
-    vtkErrorMacro(<< "could not build the glyph shader program (" << features.GetKey() << ")");
-    return;
+    vtkErrorWithObjectMacro(self, << "could not build the glyph shader program (" << features.GetKey() << ")");
   }
+  return program;
+}
 
-  // ---- uniforms
-  plume::SetUniformMatrix4x4(program, "MCDCRel", mcdcRel);
-  plume::SetUniformMatrix4x4(program, "IndexToRel", indexToRel);
-  plume::SetUniformMatrix4x4(program, "RelToIndex", relToIndex);
+//------------------------------------------------------------------------------
+// Step 6: uniforms and textures.
+void vtkPlumeVelocityGlyphMapper::Internals::SetUniforms(
+  vtkPlumeVelocityGlyphMapper* self, const Frame& frame, vtkShaderProgram* program)
+{
+  const int* dims = frame.Dims;
+  plume::SetUniformMatrix4x4(program, "MCDCRel", frame.MCDCRel);
+  plume::SetUniformMatrix4x4(program, "IndexToRel", frame.IndexToRel);
+  plume::SetUniformMatrix4x4(program, "RelToIndex", frame.RelToIndex);
   const float fdims[3] = { float(dims[0]), float(dims[1]), float(dims[2]) };
   program->SetUniform3f("Dims", fdims);
-  program->SetUniformf("Scale", static_cast<float>(this->GetEffectiveScale()));
-  if (segments > 1 || integrator != "STRAIGHT")
+  program->SetUniformf("Scale", static_cast<float>(self->GetEffectiveScale()));
+  if (frame.Segments > 1 || frame.Integrator != "STRAIGHT")
   {
     // streamlets stay inside a grid that is one node thick along an axis
     const float axes[3] = { dims[0] > 1 ? 1.0f : 0.0f, dims[1] > 1 ? 1.0f : 0.0f,
       dims[2] > 1 ? 1.0f : 0.0f };
     program->SetUniform3f("StreamAxes", axes);
   }
-  program->SetUniformf("MinimumSpeed", static_cast<float>(this->MinimumSpeed));
-  program->SetUniformf("RootAlpha", static_cast<float>(this->RootAlpha));
-  const double span = colorRange[1] - colorRange[0];
-  const float cr[2] = { static_cast<float>(colorRange[0]),
+  program->SetUniformf("MinimumSpeed", static_cast<float>(self->MinimumSpeed));
+  program->SetUniformf("RootAlpha", static_cast<float>(self->RootAlpha));
+  const double span = frame.ColorRange[1] - frame.ColorRange[0];
+  const float cr[2] = { static_cast<float>(frame.ColorRange[0]),
     span > 0 && std::isfinite(1.0 / span) ? static_cast<float>(1.0 / span) : 0.0f };
   program->SetUniform2f("ColorRange", cr);
+  vtkProperty* property = frame.Actor->GetProperty();
   program->SetUniformf("Opacity", static_cast<float>(property->GetOpacity()));
-  if (wide)
+  if (frame.Wide)
   {
-    const float vp[2] = { float(vpWidth), float(vpHeight) };
+    const float vp[2] = { float(frame.Viewport[0]), float(frame.Viewport[1]) };
     program->SetUniform2f("ViewportSize", vp);
-    program->SetUniformf("HalfWidth", static_cast<float>(0.5 * this->LineWidth));
+    program->SetUniformf("HalfWidth", static_cast<float>(0.5 * self->LineWidth));
   }
-  if (!seedMode)
+  if (!frame.SeedMode)
   {
-    const int sd[2] = { stridedDims[0], stridedDims[1] };
+    const int sd[2] = { frame.StridedDims[0], frame.StridedDims[1] };
     program->SetUniform2i("StridedDims", sd);
-    program->SetUniformi("Stride", stride);
+    program->SetUniformi("Stride", frame.Stride);
   }
-  vtkTextureObject* velocityTexture = handed ? handed : impl.VelocityTexture.GetPointer();
-  velocityTexture->Activate();
-  program->SetUniformi("Velocity", velocityTexture->GetTextureUnit());
-  if (useLUT)
+  vtkTextureObject* velocity = this->Velocity->GetTextureObject();
+  velocity->Activate();
+  program->SetUniformi("Velocity", velocity->GetTextureUnit());
+  if (frame.UseLUT)
   {
-    impl.LUTTexture->GetTextureObject()->Activate();
-    program->SetUniformi("ColorLUT", impl.LUTTexture->GetTextureObject()->GetTextureUnit());
-    program->SetUniformf("LUTSize", static_cast<float>(Internals::LUTSize));
+    this->LUTTexture->GetTextureObject()->Activate();
+    program->SetUniformi("ColorLUT", this->LUTTexture->GetTextureObject()->GetTextureUnit());
+    program->SetUniformf("LUTSize", static_cast<float>(LUTSize));
   }
   else
   {
@@ -1059,19 +974,25 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     property->GetDiffuseColor(color);
     program->SetUniform3f("SolidColor", color);
   }
+}
 
-  // ---- state: depth test + write, standard alpha blending (restored afterwards)
-  vtkOpenGLState* state = renWin->GetState();
+//------------------------------------------------------------------------------
+// Step 7: GL state and the draws; the textures are released afterwards.
+void vtkPlumeVelocityGlyphMapper::Internals::Draw(
+  vtkPlumeVelocityGlyphMapper* self, const Frame& frame, vtkShaderProgram* program)
+{
+  // depth test + write, standard alpha blending (restored afterwards)
+  vtkOpenGLState* state = frame.Window->GetState();
   vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  if (passes.empty()) // else the translucent pass has set depth and blending up
+  if (frame.Passes.empty()) // else the translucent pass has set depth and blending up
   {
     state->vtkglEnable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_TRUE);
     // opaque: no blending, the same result without the read-modify-write of every fragment
-    if (opaque)
+    if (frame.Opaque)
     {
       state->vtkglDisable(GL_BLEND);
     }
@@ -1082,50 +1003,64 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     }
   }
   auto passParameters = [&](vtkOpenGLVertexArrayObject* vao) {
-    for (vtkOpenGLRenderPass* pass : passes)
+    for (vtkOpenGLRenderPass* pass : frame.Passes)
     {
-      if (!pass->SetShaderParameters(program, this, actor, vao))
+      if (!pass->SetShaderParameters(program, self, frame.Actor, vao))
       {
-        vtkErrorMacro(<< "render pass " << pass->GetClassName() << " could not set its shader parameters");
+        vtkErrorWithObjectMacro(
+          self, << "render pass " << pass->GetClassName() << " could not set its shader parameters");
       }
     }
   };
 
   // chunked draws keep at most two draws queued in the driver (see vtkPlumeThrottledDraw.h)
-  const vtkIdType chunk = this->MaximumGlyphsPerDraw;
+  const vtkIdType chunk = self->MaximumGlyphsPerDraw;
   const int inFlight = 2;
-  if (seedMode)
+  if (frame.SeedMode)
   {
-    impl.SeedVAO->Bind();
-    if (impl.SeedVAOProgram != program || impl.SeedUploadChanged)
+    this->SeedVAO->Bind();
+    if (this->SeedVAOProgram != program || this->SeedUploadChanged)
     {
-      impl.SeedVAO->ShaderProgramChanged();
-      impl.SeedVAO->Bind();
-      if (!impl.SeedVAO->AddAttributeArray(program, impl.SeedBuffer, "seedPosition", 0,
+      this->SeedVAO->ShaderProgramChanged();
+      this->SeedVAO->Bind();
+      if (!this->SeedVAO->AddAttributeArray(program, this->SeedBuffer, "seedPosition", 0,
             3 * sizeof(float), VTK_FLOAT, 3, false))
       {
-        vtkErrorMacro(<< "could not bind the seed positions");
+        vtkErrorWithObjectMacro(self, << "could not bind the seed positions");
       }
-      impl.SeedVAOProgram = program;
-      impl.SeedUploadChanged = false;
+      this->SeedVAOProgram = program;
+      this->SeedUploadChanged = false;
     }
-    passParameters(impl.SeedVAO);
-    plume::DrawArraysThrottled(GL_POINTS, 1, rootCount, chunk, inFlight);
-    impl.SeedVAO->Release();
+    passParameters(this->SeedVAO);
+    plume::DrawArraysThrottled(GL_POINTS, 1, frame.RootCount, chunk, inFlight);
+    this->SeedVAO->Release();
   }
   else
   {
-    impl.EmptyVAO->Bind();
-    passParameters(impl.EmptyVAO);
-    plume::DrawArraysThrottled(lineVS ? GL_LINES : GL_POINTS, lineVS ? 2 : 1, rootCount, chunk, inFlight);
-    impl.EmptyVAO->Release();
+    this->EmptyVAO->Bind();
+    passParameters(this->EmptyVAO);
+    plume::DrawArraysThrottled(
+      frame.LineVS ? GL_LINES : GL_POINTS, frame.LineVS ? 2 : 1, frame.RootCount, chunk, inFlight);
+    this->EmptyVAO->Release();
   }
 
-  velocityTexture->Deactivate();
-  if (useLUT)
+  this->Velocity->GetTextureObject()->Deactivate();
+  if (frame.UseLUT)
   {
-    impl.LUTTexture->GetTextureObject()->Deactivate();
+    this->LUTTexture->GetTextureObject()->Deactivate();
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkPlumeVelocityGlyphMapper::GetUploadCount()
+{
+  return this->Impl->Velocity->GetUploadCount();
+}
+
+//------------------------------------------------------------------------------
+int vtkPlumeVelocityGlyphMapper::GetHandOverCount()
+{
+  return this->Impl->Velocity->GetHandOverCount();
 }
 
 //------------------------------------------------------------------------------
@@ -1157,6 +1092,6 @@ void vtkPlumeVelocityGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
      << (this->StraightLineShader == VERTEX_SHADER ? "VERTEX_SHADER" : "GEOMETRY_SHADER") << "\n";
   os << indent << "MaximumGlyphsPerDraw: " << this->MaximumGlyphsPerDraw << "\n";
   os << indent << "LastRootCount: " << this->LastRootCount << "\n";
-  os << indent << "UploadCount: " << this->UploadCount << "\n";
-  os << indent << "HandOverCount: " << this->HandOverCount << "\n";
+  os << indent << "UploadCount: " << this->Impl->Velocity->GetUploadCount() << "\n";
+  os << indent << "HandOverCount: " << this->Impl->Velocity->GetHandOverCount() << "\n";
 }

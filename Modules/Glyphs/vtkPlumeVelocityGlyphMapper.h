@@ -296,9 +296,9 @@ public:
    * Number of velocity-texture uploads so far (tests check that re-renders do
    * not upload). A new upload happens only when the image, the chosen vector
    * array or the mask array changes (pointer or MTime) or after
-   * ReleaseGraphicsResources.
+   * ReleaseGraphicsResources (vtkPlumeVectorTexture3D decides).
    */
-  vtkGetMacro(UploadCount, int);
+  int GetUploadCount();
 
   /**
    * Number of times a GPU copy of the vector array handed over by the filter
@@ -307,7 +307,7 @@ public:
    * Used only when there is no mask array and the texture is an RGBA32F grid
    * of the input's dimensions; otherwise the array is uploaded as usual.
    */
-  vtkGetMacro(HandOverCount, int);
+  int GetHandOverCount();
 
   /**
    * Glyphs of an opaque actor are drawn in the opaque pass (blended there when
@@ -360,8 +360,6 @@ protected:
   int StraightLineShader = VERTEX_SHADER;
   vtkIdType MaximumGlyphsPerDraw = 262144;
   vtkIdType LastRootCount = 0;
-  int UploadCount = 0;
-  int HandOverCount = 0;
 
 private:
   vtkPlumeVelocityGlyphMapper(const vtkPlumeVelocityGlyphMapper&) = delete;
