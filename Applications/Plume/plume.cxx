@@ -8,6 +8,7 @@
 #include "plumeRenderWindowFactory.h"
 #include "plumeScene.h"
 #include "plumeSceneError.h"
+#include "plumeSimulate.h"
 
 #include "vtkPlumeDatasetReader.h"
 #include "vtkPlumeParameterTable.h"
@@ -203,6 +204,19 @@ int main(int argc, char* argv[])
   info->add_flag("--no-merge", noMerge, "keep multiblock data as blocks");
   info->add_flag("--json", json, "print JSON");
 
+  auto* simulate = app.add_subcommand("simulate", "run a scene's smoke dataset and write its time steps (.pvd)");
+  plume::SimulateOptions simulation;
+  simulate->add_option("scene", simulation.Scene, "scene file with a \"source\": \"smoke\" dataset")->required();
+  simulate->add_option("-o,--output", simulation.Output, "output collection (.pvd); steps go to the folder of its stem")
+    ->required();
+  simulate->add_option("--dataset", simulation.Dataset, "which smoke dataset (default: the only one)");
+  simulate->add_option("--steps", simulation.Steps, "last step (default: the dataset's \"step\")")
+    ->check(CLI::Range(1, 10000000).description("a step count: 1 or more"));
+  simulate->add_option("--every", simulation.Every, "write every K-th step, and the last (default 10)")
+    ->check(CLI::Range(1, 10000000).description("1 or more"));
+  simulate->add_option("--restart", simulation.Restart, "continue from this checkpoint (plume simulate --checkpoint)");
+  simulate->add_option("--checkpoint", simulation.Checkpoint, "write the final state here, to continue later");
+
   // listed for --help; main() hands `plume bench ...` to plume-bench before parsing
   app.add_subcommand("bench", "run a named benchmark (JSON lines on stdout; plume bench --list)")
     ->allow_extras()
@@ -260,6 +274,10 @@ int main(int argc, char* argv[])
         reader->AddBlockName(b.c_str());
       }
       status = plume::RunInfo(reader, json, std::cout, std::cerr);
+    }
+    else if (*simulate)
+    {
+      status = plume::Simulate(simulation, std::cout);
     }
     else if (*params)
     {

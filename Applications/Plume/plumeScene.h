@@ -16,6 +16,7 @@
 
 class vtkDataObject;
 class vtkImageData;
+class vtkPlumeSmokeSolver;
 class vtkProp;
 class vtkRenderer;
 
@@ -81,6 +82,13 @@ void RegisterSheetRepresentations(std::map<std::string, RepresentationBuilder>& 
 vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
 /** The dataset `"source": "smoke"` (plumeSmokeSource.cxx). */
 vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
+/**
+ * The solver of a `"source": "smoke"` dataset, configured from its keys but
+ * not run; `step` receives the dataset's `step` key (plume simulate's default
+ * number of steps).
+ */
+vtkSmartPointer<vtkPlumeSmokeSolver> ConfigureSmokeSolver(
+  Parameters& p, SceneDatasets& datasets, const std::string& name, int& step);
 
 struct SceneOptions
 {

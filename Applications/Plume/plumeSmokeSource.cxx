@@ -19,7 +19,8 @@
 
 namespace plume
 {
-vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets& datasets, const std::string& name)
+vtkSmartPointer<vtkPlumeSmokeSolver> ConfigureSmokeSolver(
+  Parameters& p, SceneDatasets& datasets, const std::string& name, int& step)
 {
   const std::string where = "datasets." + name;
   auto solver = vtkSmartPointer<vtkPlumeSmokeSolver>::New();
@@ -129,8 +130,16 @@ vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets& d
       }
     }
   }
-  const int step = p.Integer("step", 100, 0, 10000000);
+  step = p.Integer("step", 100, 0, 10000000);
   p.RejectUnknown();
+  return solver;
+}
+
+vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets& datasets, const std::string& name)
+{
+  const std::string where = "datasets." + name;
+  int step = 0;
+  vtkSmartPointer<vtkPlumeSmokeSolver> solver = ConfigureSmokeSolver(p, datasets, name, step);
 
   // The pipeline's time request drives the simulation, as ParaView's animation would.
   if (ProgressEnabled())
