@@ -310,7 +310,10 @@ bool SplatGPU::Run(vtkRenderWindow* window, const Grid& grid, const Settings& se
         for (int a = 0; a < 3 && touches; ++a)
         {
           touches = AxisSpan(grid, a, sp.Center[a], reach, sum && settings.Integrate, it.Lo[a], hi[a]);
-          it.N[a] = hi[a] - it.Lo[a] + 1;
+          if (touches) // else the span is undefined (UBSan: overflow on a far-away splat)
+          {
+            it.N[a] = hi[a] - it.Lo[a] + 1;
+          }
         }
         if (!touches)
         {
