@@ -231,12 +231,12 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Advanced()
       .Doc("A new jitter pattern every frame (else a fixed one).")
       .Bind(&T::SetAnimatedJitter, &T::GetAnimatedJitter);
-    t.Real("opacity_threshold", "OpacityThreshold", 0.995)
-      .Between(0.5, 1.0)
+    t.Real("termination_error", "TerminationError", 0.001)
+      .Between(0.0, 0.5)
       .Panel("Quality")
       .Advanced()
-      .Doc("Early ray termination at this opacity (1: never).")
-      .Bind(&T::SetOpacityThreshold, &T::GetOpacityThreshold);
+      .Doc("Early ray termination: the most a stopped ray may change a pixel, of full scale (0: never stop).")
+      .Bind(&T::SetTerminationError, &T::GetTerminationError);
     t.Real("shadow_sample_distance", "ShadowSampleDistance", 1.0)
       .Between(0.05, 100.0)
       .Units("voxels")
@@ -766,7 +766,42 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const int maxSteps = static_cast<int>(std::min(16384.0, std::ceil(diagonal / this->SampleDistance) + 2));
   program->SetUniformi("MaxSteps", maxSteps);
   program->SetUniformf("UnitDistance", static_cast<float>(1.0 / invUnit));
-  program->SetUniformf("OpacityThreshold", static_cast<float>(this->OpacityThreshold));
+  // early termination from the error budget: what the rest of a ray with
+  // transmittance T adds is T (L - a B), L <= R a its radiance, a its opacity
+  // and B <= 1 what lies behind, so |error| <= T max(R, 1)
+  this->EffectiveOpacityThreshold = 1.0;
+  if (this->TerminationError > 0 && (mode == "PLUME_COMPOSITE" || mode == "PLUME_SMOKE"))
+  {
+    double brightest = 0; // of the table entries with extinction
+    const std::vector<float>& table = impl.Table->GetTable();
+    for (size_t i = 0; 4 * i + 3 < table.size(); ++i)
+    {
+      if (table[4 * i + 3] > 0.0f)
+      {
+        brightest = std::max({ brightest, double(table[4 * i]), double(table[4 * i + 1]), double(table[4 * i + 2]) });
+      }
+    }
+    double lights = 0; // brightest channel of the lights, summed
+    for (int l = 0; l < nLights; ++l)
+    {
+      lights += std::max({ lightColors[l][0], lightColors[l][1], lightColors[l][2], 0.0 });
+    }
+    double radiance = brightest;
+    if (mode == "PLUME_SMOKE")
+    {
+      radiance = brightest * (std::abs(property->GetAmbient(0)) + std::abs(property->GetDiffuse(0)) * lights);
+    }
+    else if (shade)
+    {
+      radiance = brightest * (std::abs(property->GetAmbient(0)) + std::abs(property->GetDiffuse(0)) * lights) +
+        std::abs(property->GetSpecular(0)) * lights;
+    }
+    const double bound = std::isfinite(radiance) ? std::max(radiance, 1.0) : VTK_DOUBLE_MAX;
+    this->EffectiveOpacityThreshold = std::max(0.0, 1.0 - this->TerminationError / bound);
+  }
+  // (a float just below 1 would round to 1: 1 - 2^-24 is the largest below it)
+  program->SetUniformf("OpacityThreshold",
+    this->EffectiveOpacityThreshold >= 1.0 ? 2.0f : std::min(static_cast<float>(this->EffectiveOpacityThreshold), 1.0f - 6e-8f));
   program->SetUniformf("TFSize", static_cast<float>(TableSize));
   if (this->Jitter)
   {
@@ -927,7 +962,8 @@ void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "Jitter: " << this->Jitter << " (animated " << this->AnimatedJitter
      << ", seed " << this->JitterSeed << ")\n";
-  os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
+  os << indent << "TerminationError: " << this->TerminationError << "\n";
+  os << indent << "EffectiveOpacityThreshold: " << this->EffectiveOpacityThreshold << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";
   os << indent << "ValidMaskArrayName: " << this->ValidMaskArrayName << "\n";
   os << indent << "Smoke: " << this->Smoke << "\n";

@@ -331,7 +331,10 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     ours->SetInputData(image);
     ours->SetSampleDistance(step);
     ours->SetEmptySpaceSkipping(kind != "ours-noskip" && kind != "ours-plain");
-    ours->SetOpacityThreshold(kind == "ours-noert" || kind == "ours-plain" ? 1.0 : 0.995);
+    if (kind == "ours-noert" || kind == "ours-plain")
+    {
+      ours->SetTerminationError(0.0); // never stop early
+    }
     if (ModeOf(variant) == "mip")
     {
       ours->SetBlendModeToMaximumIntensity();
