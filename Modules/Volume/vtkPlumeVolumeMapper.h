@@ -141,6 +141,51 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Ray lattice (VTK's ImageSampleDistance, made error-controlled): with a
+   * value L > 1, rays are first cast on a lattice one every L pixels (into a
+   * small texture); then every pixel whose four nearest lattice rays agree
+   * within LatticeTolerance, and (when rays stop at opaque geometry) whose
+   * opaque depth is what theirs predict within half a voxel, interpolates them
+   * bilinearly; every other pixel (edges, opaque-depth discontinuities,
+   * silhouettes) casts its own ray. Features narrower than L pixels that no
+   * lattice ray sees can be missed, as with the peers' ImageSampleDistance.
+   * Default 1 (one ray per pixel). Clamped to 1..16.
+   */
+  vtkSetClampMacro(ImageSampleDistance, int, 1, 16);
+  vtkGetMacro(ImageSampleDistance, int);
+  ///@}
+
+  ///@{
+  /**
+   * The lattice while the user interacts, when AutoAdjustSampleDistances is on:
+   * VTK's convention, the volume's allocated render time below 1 s (the
+   * interactor sets the window's DesiredUpdateRate, 15 frames/s by default,
+   * while the camera moves, and its still rate, 0.0001, afterwards: the still
+   * frame is then drawn at ImageSampleDistance). Default 2. Clamped to 1..16.
+   */
+  vtkSetClampMacro(InteractiveImageSampleDistance, int, 1, 16);
+  vtkGetMacro(InteractiveImageSampleDistance, int);
+  vtkSetMacro(AutoAdjustSampleDistances, bool);
+  vtkGetMacro(AutoAdjustSampleDistances, bool);
+  vtkBooleanMacro(AutoAdjustSampleDistances, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Ray lattice: the largest difference (any premultiplied RGBA channel, 0..1)
+   * between the four lattice rays around a pixel for which it interpolates
+   * them instead of casting its own ray. Default 0.004 (about one 8-bit step).
+   * Clamped to 0..1 (0: only where they are equal).
+   */
+  vtkSetClampMacro(LatticeTolerance, double, 0.0, 1.0);
+  vtkGetMacro(LatticeTolerance, double);
+  ///@}
+
+  /** The ray lattice used at the last render (1: one ray per pixel). */
+  vtkGetMacro(LastImageSampleDistance, int);
+
+  ///@{
   /** Per-pixel jitter of the first sample (against wood-grain). Default on. */
   vtkSetMacro(Jitter, bool);
   vtkGetMacro(Jitter, bool);
@@ -306,6 +351,11 @@ protected:
   bool AnimatedJitter = false;
   int JitterSeed = 0;
   double TerminationError = 0.001;
+  int ImageSampleDistance = 1;
+  int InteractiveImageSampleDistance = 2;
+  bool AutoAdjustSampleDistances = true;
+  double LatticeTolerance = 0.004;
+  int LastImageSampleDistance = 1;
   double EffectiveOpacityThreshold = 1.0;
   double IsoValue;
   bool Smoke = false;
