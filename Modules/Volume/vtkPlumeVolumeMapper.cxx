@@ -26,6 +26,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
@@ -123,6 +124,8 @@ public:
   double OccupiedMin[3] = { 0, 0, 0 }; // index-space bounds of the non-transparent blocks
   double OccupiedMax[3] = { 0, 0, 0 };
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
+  vtkNew<vtkTextureObject> Lattice; // RGBA32F: the lattice rays' premultiplied colour
+  vtkNew<vtkOpenGLFramebufferObject> LatticeFBO;
   vtkNew<vtkPlumeShaderProgramCache> Programs;
   vtkOpenGLRenderWindow* Window = nullptr;
   double AutomaticBudgetMB = 0; // of Window
@@ -139,6 +142,8 @@ public:
     this->BlockRanges->ReleaseGraphicsResources(window);
     this->RangesUpload = -1;
     this->EmptyVAO->ReleaseGraphicsResources();
+    this->Lattice->ReleaseGraphicsResources(window);
+    this->LatticeFBO->ReleaseGraphicsResources(window);
     this->Programs->ReleaseGraphicsResources(window);
     this->Window = nullptr;
     this->AutomaticBudgetMB = 0;
@@ -222,6 +227,28 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Panel("Quality")
       .Doc("Step along rays.")
       .Bind(&T::SetSampleDistance, &T::GetSampleDistance);
+    t.Integer("image_sample_distance", "ImageSampleDistance", 1)
+      .Between(1, 16)
+      .Units("pixels")
+      .Panel("Quality")
+      .Doc("Ray lattice: one ray every this many pixels, interpolated where neighbours agree, refined where not (1: every pixel).")
+      .Bind(&T::SetImageSampleDistance, &T::GetImageSampleDistance);
+    t.Integer("interactive_image_sample_distance", "InteractiveImageSampleDistance", 2)
+      .Between(1, 16)
+      .Units("pixels")
+      .Panel("Quality")
+      .Doc("The ray lattice while the camera moves (with auto_adjust_sample_distances).")
+      .Bind(&T::SetInteractiveImageSampleDistance, &T::GetInteractiveImageSampleDistance);
+    t.Boolean("auto_adjust_sample_distances", "AutoAdjustSampleDistances", true)
+      .Panel("Quality")
+      .Doc("Use the interactive ray lattice while the volume's allocated render time is below 1 s (VTK's interaction).")
+      .Bind(&T::SetAutoAdjustSampleDistances, &T::GetAutoAdjustSampleDistances);
+    t.Real("lattice_tolerance", "LatticeTolerance", 0.004)
+      .Between(0.0, 1.0)
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Ray lattice: neighbouring rays that differ by more than this (any channel) make a pixel cast its own ray.")
+      .Bind(&T::SetLatticeTolerance, &T::GetLatticeTolerance);
     t.Boolean("jitter", "Jitter", true)
       .Panel("Quality")
       .Doc("Per-pixel jitter of the first step (no wood-grain).")
@@ -231,12 +258,12 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Advanced()
       .Doc("A new jitter pattern every frame (else a fixed one).")
       .Bind(&T::SetAnimatedJitter, &T::GetAnimatedJitter);
-    t.Real("opacity_threshold", "OpacityThreshold", 0.995)
-      .Between(0.5, 1.0)
+    t.Real("termination_error", "TerminationError", 0.001)
+      .Between(0.0, 0.5)
       .Panel("Quality")
       .Advanced()
-      .Doc("Early ray termination at this opacity (1: never).")
-      .Bind(&T::SetOpacityThreshold, &T::GetOpacityThreshold);
+      .Doc("Early ray termination: the most a stopped ray may change a pixel, of full scale (0: never stop).")
+      .Bind(&T::SetTerminationError, &T::GetTerminationError);
     t.Real("shadow_sample_distance", "ShadowSampleDistance", 1.0)
       .Between(0.05, 100.0)
       .Units("voxels")
@@ -737,6 +764,50 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     features.Define("PLUME_LIGHTS", nLights);
   }
+
+  // ---- ray lattice: one ray per lattice x lattice pixels first (into a small
+  // texture), then every pixel interpolates its four nearest lattice rays where
+  // they agree and casts its own ray where they do not (VTK's conventions: the
+  // interactive lattice while the volume's allocated render time is below 1 s)
+  int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
+  ren->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &vpX, &vpY);
+  const bool interactive = this->AutoAdjustSampleDistances && vol->GetAllocatedRenderTime() < 1.0;
+  int lattice = interactive ? this->InteractiveImageSampleDistance : this->ImageSampleDistance;
+  lattice = std::max(1, std::min(lattice, std::min(vpWidth, vpHeight) / 2));
+  this->LastImageSampleDistance = lattice;
+  const int latticeSize[2] = { (vpWidth + lattice - 1) / std::max(lattice, 1),
+    (vpHeight + lattice - 1) / std::max(lattice, 1) };
+  if (lattice > 1)
+  {
+    if (!impl.Lattice->GetHandle() || impl.Lattice->GetContext() != renWin)
+    {
+      impl.Lattice->SetContext(renWin);
+      impl.Lattice->SetMinificationFilter(vtkTextureObject::Nearest);
+      impl.Lattice->SetMagnificationFilter(vtkTextureObject::Nearest);
+      impl.Lattice->SetWrapS(vtkTextureObject::ClampToEdge);
+      impl.Lattice->SetWrapT(vtkTextureObject::ClampToEdge);
+      impl.Lattice->Allocate2D(latticeSize[0], latticeSize[1], 4, VTK_FLOAT);
+      impl.LatticeFBO->SetContext(renWin);
+    }
+    else if (static_cast<int>(impl.Lattice->GetWidth()) != latticeSize[0] ||
+      static_cast<int>(impl.Lattice->GetHeight()) != latticeSize[1])
+    {
+      impl.Lattice->Resize(latticeSize[0], latticeSize[1]);
+    }
+  }
+  vtkPlumeShaderFeatures coarseFeatures = features;
+  coarseFeatures.Enable("COARSE");
+  features.Enable("REFINE", lattice > 1);
+  vtkShaderProgram* coarse = nullptr;
+  if (lattice > 1)
+  {
+    coarse = impl.Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, coarseFeatures);
+    if (!coarse)
+    {
+      vtkErrorMacro(<< "could not build the volume shader program (ray lattice)");
+      return;
+    }
+  }
   vtkShaderProgram* program = impl.Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, features);
   if (!program)
   {
@@ -744,6 +815,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
 
+  auto setUniforms = [&](vtkShaderProgram* program) {
   // ---- uniforms
   plume::SetUniformMatrix4x4(program, "IndexToClip", indexToClip);
   plume::SetUniformMatrix4x4(program, "ClipToIndex", clipToIndex);
@@ -753,8 +825,6 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniform3f("DrawMax", drawMax);
   program->SetUniform3f("Dims", fdims);
   plume::SetUniformMatrix3x3(program, "IndexToWorld", linear);
-  int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
-  ren->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &vpX, &vpY);
   const float vpOrigin[2] = { float(vpX), float(vpY) };
   const float vpSize[2] = { float(vpWidth), float(vpHeight) };
   program->SetUniform2f("ViewportOrigin", vpOrigin);
@@ -766,7 +836,42 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const int maxSteps = static_cast<int>(std::min(16384.0, std::ceil(diagonal / this->SampleDistance) + 2));
   program->SetUniformi("MaxSteps", maxSteps);
   program->SetUniformf("UnitDistance", static_cast<float>(1.0 / invUnit));
-  program->SetUniformf("OpacityThreshold", static_cast<float>(this->OpacityThreshold));
+  // early termination from the error budget: what the rest of a ray with
+  // transmittance T adds is T (L - a B), L <= R a its radiance, a its opacity
+  // and B <= 1 what lies behind, so |error| <= T max(R, 1)
+  this->EffectiveOpacityThreshold = 1.0;
+  if (this->TerminationError > 0 && (mode == "PLUME_COMPOSITE" || mode == "PLUME_SMOKE"))
+  {
+    double brightest = 0; // of the table entries with extinction
+    const std::vector<float>& table = impl.Table->GetTable();
+    for (size_t i = 0; 4 * i + 3 < table.size(); ++i)
+    {
+      if (table[4 * i + 3] > 0.0f)
+      {
+        brightest = std::max({ brightest, double(table[4 * i]), double(table[4 * i + 1]), double(table[4 * i + 2]) });
+      }
+    }
+    double lights = 0; // brightest channel of the lights, summed
+    for (int l = 0; l < nLights; ++l)
+    {
+      lights += std::max({ lightColors[l][0], lightColors[l][1], lightColors[l][2], 0.0 });
+    }
+    double radiance = brightest;
+    if (mode == "PLUME_SMOKE")
+    {
+      radiance = brightest * (std::abs(property->GetAmbient(0)) + std::abs(property->GetDiffuse(0)) * lights);
+    }
+    else if (shade)
+    {
+      radiance = brightest * (std::abs(property->GetAmbient(0)) + std::abs(property->GetDiffuse(0)) * lights) +
+        std::abs(property->GetSpecular(0)) * lights;
+    }
+    const double bound = std::isfinite(radiance) ? std::max(radiance, 1.0) : VTK_DOUBLE_MAX;
+    this->EffectiveOpacityThreshold = std::max(0.0, 1.0 - this->TerminationError / bound);
+  }
+  // (a float just below 1 would round to 1: 1 - 2^-24 is the largest below it)
+  program->SetUniformf("OpacityThreshold",
+    this->EffectiveOpacityThreshold >= 1.0 ? 2.0f : std::min(static_cast<float>(this->EffectiveOpacityThreshold), 1.0f - 6e-8f));
   program->SetUniformf("TFSize", static_cast<float>(TableSize));
   if (this->Jitter)
   {
@@ -869,6 +974,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     const float fbd[3] = { float(bd[0]), float(bd[1]), float(bd[2]) };
     program->SetUniform3f("BlockDims", fbd);
   }
+  };
 
   // ---- state: back faces only (front faces if the transform mirrors), no depth test/write,
   // premultiplied blending, depth clamp so the far plane never clips the box
@@ -888,8 +994,52 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   glEnable(GL_DEPTH_CLAMP);
 
   impl.EmptyVAO->Bind();
+  if (lattice > 1)
+  {
+    // the lattice rays into their texture: premultiplied colour, no blending
+    impl.Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, coarseFeatures);
+    setUniforms(coarse);
+    const float clipScale[2] = { float(vpWidth) / float(lattice * latticeSize[0]),
+      float(vpHeight) / float(lattice * latticeSize[1]) };
+    coarse->SetUniform2f("ClipScale", clipScale);
+    coarse->SetUniformf("Lattice", static_cast<float>(lattice));
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    state->PushFramebufferBindings();
+    impl.LatticeFBO->Bind();
+    impl.LatticeFBO->AddColorAttachment(0, impl.Lattice);
+    impl.LatticeFBO->ActivateDrawBuffers(1);
+    {
+      vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+      vtkOpenGLState::ScopedglClearColor clearSaver(state);
+      state->vtkglDisable(GL_SCISSOR_TEST);
+      state->vtkglViewport(0, 0, latticeSize[0], latticeSize[1]);
+      state->vtkglClearColor(0, 0, 0, 0);
+      state->vtkglClear(GL_COLOR_BUFFER_BIT);
+      state->vtkglDisable(GL_BLEND);
+      glDrawArrays(GL_TRIANGLES, 0, 36);
+      state->vtkglEnable(GL_BLEND);
+    }
+    impl.LatticeFBO->RemoveColorAttachment(0);
+    state->PopFramebufferBindings();
+    state->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    impl.Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, features);
+    impl.Lattice->Activate();
+    program->SetUniformi("LatticeColor", impl.Lattice->GetTextureUnit());
+    program->SetUniformf("Lattice", static_cast<float>(lattice));
+    const float latticeDims[2] = { float(latticeSize[0]), float(latticeSize[1]) };
+    program->SetUniform2f("LatticeSize", latticeDims);
+    program->SetUniformf("LatticeTolerance", static_cast<float>(this->LatticeTolerance));
+  }
+  setUniforms(program);
+  const float unitScale[2] = { 1.0f, 1.0f };
+  program->SetUniform2f("ClipScale", unitScale);
   glDrawArrays(GL_TRIANGLES, 0, 36);
   impl.EmptyVAO->Release();
+  if (lattice > 1)
+  {
+    impl.Lattice->Deactivate();
+  }
 
   if (!depthClampWasOn)
   {
@@ -927,7 +1077,12 @@ void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "Jitter: " << this->Jitter << " (animated " << this->AnimatedJitter
      << ", seed " << this->JitterSeed << ")\n";
-  os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
+  os << indent << "TerminationError: " << this->TerminationError << "\n";
+  os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
+  os << indent << "InteractiveImageSampleDistance: " << this->InteractiveImageSampleDistance << "\n";
+  os << indent << "AutoAdjustSampleDistances: " << this->AutoAdjustSampleDistances << "\n";
+  os << indent << "LatticeTolerance: " << this->LatticeTolerance << "\n";
+  os << indent << "EffectiveOpacityThreshold: " << this->EffectiveOpacityThreshold << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";
   os << indent << "ValidMaskArrayName: " << this->ValidMaskArrayName << "\n";
   os << indent << "Smoke: " << this->Smoke << "\n";

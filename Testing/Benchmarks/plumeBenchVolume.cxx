@@ -10,6 +10,15 @@
 // (a low-opacity field that fills the box), each unshaded and shaded (the
 // property's Shade on, headlight; note the peers' shading models differ from
 // ours in detail, so part of their shaded error is model, not sampling).
+// Settings: ours at one ray per pixel and with the error-controlled ray
+// lattice (ImageSampleDistance 2, 4), steps up to 64 voxels and the 100-voxel
+// floor; "ours-base" is the state before issue 18's work (one ray per pixel,
+// termination at 0.995); the peers at every step with ImageSampleDistance 1,
+// and in their interactive modes (ImageSampleDistance 2 and 4 at steps 1/4/16,
+// AutoAdjustSampleDistances at DesiredUpdateRate 15). Headline lines
+// (headline: true) pair every peer setting with our fastest setting whose
+// error is not above its error; "before" lines do the same for ours-base.
+// PLUME_BENCH_VOLUME_GRIDS=128 (or 256) runs one grid size.
 // Sparsity report: ours at step 1 with empty-space skipping and/or early ray
 // termination switched off, on the sparse smoke, the dense field and an
 // "opaque" one (the dense field with the smoke's opacity, where rays saturate
@@ -52,9 +61,20 @@ int Size(bool quick)
 }
 
 // grid sizes (quick: one small stand-in that runs the same code paths)
+// (PLUME_BENCH_VOLUME_GRIDS=128 or =256 runs one size only: a full run takes
+// over an hour on a loaded machine)
 std::vector<int> Grids(bool quick)
 {
-  return quick ? std::vector<int>{ 32 } : std::vector<int>{ 128, 256 };
+  if (quick)
+  {
+    return { 32 };
+  }
+  const char* only = std::getenv("PLUME_BENCH_VOLUME_GRIDS");
+  if (only && (std::string(only) == "128" || std::string(only) == "256"))
+  {
+    return { std::stoi(only) };
+  }
+  return { 128, 256 };
 }
 
 std::vector<double> Steps(bool quick, int n)
@@ -122,9 +142,84 @@ std::string Describe(const std::string& variant)
   return FieldOf(variant) + (Shaded(variant) ? ", shaded" : ", unshaded");
 }
 
-const char* PeerName(const std::string& kind)
+// Peer settings: kind = "gpu" or "fixed", optionally with a suffix for the
+// peers' interactive modes, which a user would pick for speed: "-isd2"/"-isd4"
+// cast one ray per 2x2 / 4x4 pixels (ImageSampleDistance, the image
+// interpolated up), "-auto" lets the mapper adapt (AutoAdjustSampleDistances
+// with the render window's DesiredUpdateRate at 15 frames/s, VTK's
+// interactive rate: FixedPoint then raises ImageSampleDistance up to 10 until
+// a frame fits 1/15 s; the GPU mapper also picks its own step along the ray,
+// so its "-auto" job ignores the step and runs once).
+const char* const PeerKinds[] = { "gpu", "gpu-isd2", "gpu-isd4", "gpu-auto", "fixed", "fixed-isd2", "fixed-isd4",
+  "fixed-auto" };
+
+bool IsGPU(const std::string& kind)
 {
-  return kind == "gpu" ? "vtkGPUVolumeRayCastMapper" : "vtkFixedPointVolumeRayCastMapper";
+  return kind.compare(0, 3, "gpu") == 0;
+}
+
+double PeerImageSampleDistance(const std::string& kind)
+{
+  return kind.find("-isd4") != std::string::npos ? 4.0 : (kind.find("-isd2") != std::string::npos ? 2.0 : 1.0);
+}
+
+bool PeerAuto(const std::string& kind)
+{
+  return kind.find("-auto") != std::string::npos;
+}
+
+std::string PeerName(const std::string& kind)
+{
+  std::string name = IsGPU(kind) ? "vtkGPUVolumeRayCastMapper" : "vtkFixedPointVolumeRayCastMapper";
+  if (PeerAuto(kind))
+  {
+    name += ", AutoAdjustSampleDistances at DesiredUpdateRate 15";
+  }
+  else if (PeerImageSampleDistance(kind) > 1)
+  {
+    name += ", ImageSampleDistance " + StepText(PeerImageSampleDistance(kind));
+  }
+  return name;
+}
+
+// the steps a peer setting runs at (interactive settings: fewer; gpu-auto picks its own)
+std::vector<double> PeerSteps(const std::string& kind, bool quick, int n)
+{
+  const std::vector<double> all = Steps(quick, n);
+  if (quick || kind == "gpu" || kind == "fixed")
+  {
+    return all;
+  }
+  if (kind == "gpu-auto")
+  {
+    return { 1.0 };
+  }
+  return { 1.0, 4.0, 16.0 };
+}
+
+// our settings: one ray per pixel, and the error-controlled ray lattice
+// (ImageSampleDistance 2 and 4, refined where neighbouring rays disagree)
+const char* const OurKinds[] = { "ours", "ours-isd2", "ours-isd4" };
+// "before": one ray per pixel and the former early-termination threshold 0.995
+// (termination budget 0.005: the same threshold wherever R <= 1, i.e. unshaded)
+const char* const BeforeKind = "ours-base";
+
+int OurImageSampleDistance(const std::string& kind)
+{
+  return kind == "ours-isd4" ? 4 : (kind == "ours-isd2" ? 2 : 1);
+}
+
+// our steps: the peers' plus longer ones (our error grows slowly with the step;
+// the peers' interactive settings have large errors)
+std::vector<double> OurSteps(bool quick, int n)
+{
+  std::vector<double> steps = Steps(quick, n);
+  if (!quick)
+  {
+    steps.push_back(32.0);
+    steps.push_back(64.0);
+  }
+  return steps;
 }
 
 vtkSmartPointer<vtkImageData> Field(const std::string& name, int n)
@@ -261,12 +356,22 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   const double spacing = 1.0 / (n - 1);
   vtkNew<vtkPlumeVolumeMapper> ours;
   const bool isOurs = kind.compare(0, 4, "ours") == 0;
+  vtkSmartPointer<vtkGPUVolumeRayCastMapper> gpuPeer;
+  vtkSmartPointer<vtkFixedPointVolumeRayCastMapper> fixedPeer;
   if (isOurs)
   {
     ours->SetInputData(image);
     ours->SetSampleDistance(step);
+    ours->SetImageSampleDistance(OurImageSampleDistance(kind));
+    if (kind == "ours-base")
+    {
+      ours->SetTerminationError(0.005); // the former fixed threshold, 0.995, where R <= 1
+    }
     ours->SetEmptySpaceSkipping(kind != "ours-noskip" && kind != "ours-plain");
-    ours->SetOpacityThreshold(kind == "ours-noert" || kind == "ours-plain" ? 1.0 : 0.995);
+    if (kind == "ours-noert" || kind == "ours-plain")
+    {
+      ours->SetTerminationError(0.0); // never stop early
+    }
     if (ModeOf(variant) == "mip")
     {
       ours->SetBlendModeToMaximumIntensity();
@@ -279,34 +384,44 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     }
     volume->SetMapper(ours);
   }
-  else if (kind == "gpu")
+  else if (IsGPU(kind))
   {
     vtkNew<vtkOpenGLGPUVolumeRayCastMapper> mapper; // what vtkGPUVolumeRayCastMapper::New() gives
     mapper->SetInputData(image);
-    mapper->AutoAdjustSampleDistancesOff();
+    mapper->SetAutoAdjustSampleDistances(PeerAuto(kind));
     mapper->LockSampleDistanceToInputSpacingOff();
     mapper->SetSampleDistance(step * spacing);
+    mapper->SetImageSampleDistance(PeerImageSampleDistance(kind));
     volume->SetMapper(mapper);
+    gpuPeer = mapper;
   }
   else
   {
     vtkNew<vtkFixedPointVolumeRayCastMapper> mapper;
     mapper->SetInputData(image);
-    mapper->AutoAdjustSampleDistancesOff();
+    mapper->SetAutoAdjustSampleDistances(PeerAuto(kind));
     mapper->LockSampleDistanceToInputSpacingOff();
     mapper->SetSampleDistance(step * spacing);
-    mapper->SetImageSampleDistance(1.0);
+    mapper->SetImageSampleDistance(PeerImageSampleDistance(kind));
     volume->SetMapper(mapper);
+    fixedPeer = mapper;
   }
   renderer->AddVolume(volume);
+  if (PeerAuto(kind))
+  {
+    window->SetDesiredUpdateRate(15.0); // what vtkRenderWindowInteractor sets while the user interacts
+  }
 
   std::vector<double> times;
-  for (int f = 0; f < frames + 2; ++f)
+  // warm-up frames (texture upload, shader compilation; the auto-adjusting
+  // peers settle their sample distances over a few frames)
+  const int warmUp = PeerAuto(kind) ? 8 : 2;
+  for (int f = 0; f < frames + warmUp; ++f)
   {
     const double t0 = Now();
     window->Render();
     window->WaitForCompletion();
-    if (f >= 2) // warm-up frames (texture upload, shader compilation)
+    if (f >= warmUp)
     {
       times.push_back(Now() - t0);
     }
@@ -336,6 +451,15 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   }
   nlohmann::json result = { { "render_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() },
     { "empty_block_fraction", isOurs ? ours->GetEmptyBlockFraction() : 0.0 } };
+  // the image sample distance the peer ended on (auto: what it adapted to)
+  if (gpuPeer)
+  {
+    result["image_sample_distance"] = gpuPeer->GetImageSampleDistance();
+  }
+  else if (fixedPeer)
+  {
+    result["image_sample_distance"] = fixedPeer->GetImageSampleDistance();
+  }
   if (haveReference)
   {
     result["rms_error"] = std::sqrt(sum / (3.0 * compared));
@@ -379,14 +503,21 @@ std::vector<std::string> Jobs(bool quick)
     for (const char* field : Fields)
     {
       jobs.push_back(JobId("reference", field, n));
-      for (double step : Steps(quick, n))
+      for (const char* kind : { OurKinds[0], OurKinds[1], OurKinds[2], BeforeKind })
       {
-        for (const char* kind : { "ours", "gpu", "fixed" })
+        for (double step : OurSteps(quick, n))
         {
           jobs.push_back(JobId(kind, field, n, step));
         }
       }
       jobs.push_back(JobId("ours", field, n, FloorStep));
+      for (const char* kind : PeerKinds)
+      {
+        for (double step : PeerSteps(kind, quick, n))
+        {
+          jobs.push_back(JobId(kind, field, n, step));
+        }
+      }
     }
   }
   for (const auto& c : SparsityCases(quick))
@@ -416,68 +547,79 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
     const auto it = results.find(id);
     return it == results.end() || !it->second.contains("render_s") ? nullptr : &it->second;
   };
+  auto peerFields = [](nlohmann::json& line, const nlohmann::json& other) {
+    line["peer_peak_rss_mb"] = other["peak_rss_mb"];
+    if (other.contains("image_sample_distance"))
+    {
+      line["peer_image_sample_distance"] = other["image_sample_distance"];
+    }
+    if (other.contains("rms_error"))
+    {
+      line["peer_error"] = other["rms_error"];
+      line["peer_max_error"] = other["max_error"];
+    }
+  };
   for (int n : Grids(quick))
   {
-    const std::vector<double> steps = Steps(quick, n);
+    std::vector<double> ourSteps = OurSteps(quick, n);
+    ourSteps.push_back(FloorStep); // a setting too (SampleDistance goes up to 100)
     for (const char* field : Fields)
     {
       std::remove(ReferencePath(field, n, quick, getpid()).c_str()); // (same parent: this process)
-      // every step, and the per-ray floor: against it, ratio = the most that
-      // fewer or cheaper samples could give (one ray per pixel)
-      std::vector<double> ourSteps = steps;
-      ourSteps.push_back(FloorStep);
-      for (double ourStep : ourSteps)
+      for (const std::string peer : PeerKinds)
       {
-        const nlohmann::json* ours = find(JobId("ours", field, n, ourStep));
-        if (!ours)
+        for (double peerStep : PeerSteps(peer, quick, n))
         {
-          continue;
-        }
-        const bool floor = ourStep == FloorStep;
-        for (const std::string peer : { "gpu", "fixed" })
-        {
-          for (double peerStep : steps)
+          const nlohmann::json* other = find(JobId(peer, field, n, peerStep));
+          if (!other)
           {
-            const nlohmann::json* other = find(JobId(peer, field, n, peerStep));
-            if (!other)
+            continue;
+          }
+          const double p = (*other)["render_s"].get<double>();
+          const std::string peerStepText = peer == "gpu-auto" ? std::string("its own") : StepText(peerStep) + " voxel";
+          // like for like: ours at the same step; and the per-ray floor: ours at
+          // 100-voxel steps (a few samples per ray), ratio = the most that fewer or
+          // cheaper samples could give with one ray per pixel
+          for (double ourStep : { peerStep, FloorStep })
+          {
+            const nlohmann::json* ours = find(JobId("ours", field, n, ourStep));
+            if (!ours || (ourStep == peerStep && peer == "gpu-auto"))
             {
               continue;
             }
+            const bool floor = ourStep == FloorStep;
             const double o = (*ours)["render_s"].get<double>();
-            const double p = (*other)["render_s"].get<double>();
             nlohmann::json line = { { "bench", "volume" },
               { "case", CaseName(field, n, size) +
                   (floor ? ", per-ray floor: ours at " + StepText(ourStep) + "-voxel steps (a few samples per ray)"
                          : ", ours step " + StepText(ourStep) + " voxel") +
-                  ", peer step " + StepText(peerStep) + " voxel" },
-              { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o },
-              { "grid", n }, { "ours_step", ourStep }, { "peer_step", peerStep },
-              { "peak_rss_mb", (*ours)["peak_rss_mb"] }, { "peer_peak_rss_mb", (*other)["peak_rss_mb"] },
+                  ", peer step " + peerStepText },
+              { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o }, { "grid", n },
+              { "ours_step", ourStep }, { "peer_step", peerStep }, { "peak_rss_mb", (*ours)["peak_rss_mb"] },
               { "empty_block_fraction", (*ours)["empty_block_fraction"] } };
             if (floor)
             {
               line["floor"] = true;
             }
-            if (ours->contains("rms_error") && other->contains("rms_error"))
+            if (ours->contains("rms_error"))
             {
               line["error"] = (*ours)["rms_error"];
-              line["peer_error"] = (*other)["rms_error"];
               line["max_error"] = (*ours)["max_error"];
-              line["peer_max_error"] = (*other)["max_error"];
               line["error_pixels"] = (*ours)["error_pixels"];
             }
+            peerFields(line, *other);
             lines.push_back(line);
           }
         }
       }
     }
-    // headline per field and peer: every peer configuration against our fastest
-    // configuration whose error is not larger than that peer configuration's
+    // headline per field and peer setting: every peer setting against our
+    // fastest setting whose error is not larger than that peer setting's
     for (const char* field : Fields)
     {
-      for (const std::string peer : { "gpu", "fixed" })
+      for (const std::string peer : PeerKinds)
       {
-        for (double peerStep : steps)
+        for (double peerStep : PeerSteps(peer, quick, n))
         {
           const nlohmann::json* other = find(JobId(peer, field, n, peerStep));
           if (!other || !other->contains("rms_error"))
@@ -485,34 +627,48 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
             continue;
           }
           const double peerError = (*other)["rms_error"].get<double>();
-          const nlohmann::json* best = nullptr;
-          double bestStep = 0;
-          for (double ourStep : steps)
+          for (const bool before : { false, true })
           {
-            const nlohmann::json* ours = find(JobId("ours", field, n, ourStep));
-            if (!ours || !ours->contains("rms_error") || (*ours)["rms_error"].get<double>() > peerError)
+            const nlohmann::json* best = nullptr;
+            double bestStep = 0;
+            int bestLattice = 1;
+            const std::vector<std::string> candidates = before ? std::vector<std::string>{ BeforeKind }
+                                                               : std::vector<std::string>(std::begin(OurKinds), std::end(OurKinds));
+            for (const std::string& ourKind : candidates)
+            {
+              for (double ourStep : ourSteps)
+              {
+                const nlohmann::json* ours = find(JobId(ourKind, field, n, ourStep));
+                if (!ours || !ours->contains("rms_error") || (*ours)["rms_error"].get<double>() > peerError)
+                {
+                  continue;
+                }
+                if (!best || (*ours)["render_s"].get<double>() < (*best)["render_s"].get<double>())
+                {
+                  best = ours;
+                  bestStep = ourStep;
+                  bestLattice = OurImageSampleDistance(ourKind);
+                }
+              }
+            }
+            if (!best)
             {
               continue;
             }
-            if (!best || (*ours)["render_s"].get<double>() < (*best)["render_s"].get<double>())
-            {
-              best = ours;
-              bestStep = ourStep;
-            }
+            const double o = (*best)["render_s"].get<double>();
+            const double p = (*other)["render_s"].get<double>();
+            nlohmann::json line = { { "bench", "volume" },
+              { "case", CaseName(field, n, size) + (before ? ", before (one ray per pixel, threshold 0.995)" : "") +
+                  ", equal or lower error: our fastest vs peer step " +
+                  (peer == "gpu-auto" ? std::string("its own") : StepText(peerStep) + " voxel") },
+              { before ? "before" : "headline", true }, { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p },
+              { "ratio", p / o }, { "grid", n }, { "ours_step", bestStep }, { "ours_image_sample_distance", bestLattice },
+              { "peer_step", peerStep },
+              { "error", (*best)["rms_error"] }, { "error_pixels", (*best)["error_pixels"] },
+              { "peak_rss_mb", (*best)["peak_rss_mb"] }, { "empty_block_fraction", (*best)["empty_block_fraction"] } };
+            peerFields(line, *other);
+            lines.push_back(line);
           }
-          if (!best)
-          {
-            continue;
-          }
-          const double o = (*best)["render_s"].get<double>();
-          const double p = (*other)["render_s"].get<double>();
-          lines.push_back({ { "bench", "volume" },
-            { "case", CaseName(field, n, size) + ", equal or lower error: our fastest vs peer step " +
-                StepText(peerStep) + " voxel" },
-            { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p }, { "ratio", p / o }, { "grid", n },
-            { "ours_step", bestStep }, { "peer_step", peerStep }, { "error", (*best)["rms_error"] },
-            { "peer_error", peerError }, { "error_pixels", (*best)["error_pixels"] },
-            { "peak_rss_mb", (*best)["peak_rss_mb"] }, { "empty_block_fraction", (*best)["empty_block_fraction"] } });
         }
       }
     }

@@ -22,6 +22,12 @@
 //                    data (valid-point mask), 0 outside: values are r / g, over
 //                    the valid nodes only, and extinction is weighted by g, so
 //                    the data fades out over its last voxel | a plain u texture
+//   COARSE           the ray-lattice pass: one ray per Lattice x Lattice pixels
+//                    into the lattice texture (pixel i: the ray through i L + L / 2)
+//   REFINE           the full-resolution pass after it: a pixel whose four
+//                    nearest lattice rays agree within LatticeTolerance (every
+//                    premultiplied channel) and, with DEPTH, whose opaque depth
+//                    is what theirs predict, interpolates them; else casts its own
 // Values (#define): PLUME_LIGHTS n (lit modes), PLUME_ISO_MARGIN (SKIP_ISO).
 
 //PLUME::Defines
@@ -42,6 +48,14 @@ uniform float UnitDistance;         // scalar opacity unit distance (world)
 uniform float OpacityThreshold;
 //PLUME::IF DEPTH
 uniform sampler2D OpaqueDepth;
+//PLUME::ENDIF
+//PLUME::IF COARSE REFINE
+uniform float Lattice;              // pixels between lattice rays
+//PLUME::ENDIF
+//PLUME::IF REFINE
+uniform sampler2D LatticeColor;     // the lattice rays' premultiplied colour
+uniform vec2 LatticeSize;
+uniform float LatticeTolerance;
 //PLUME::ENDIF
 //PLUME::IF JITTER
 uniform int JitterSeed;
@@ -225,16 +239,82 @@ vec3 phong(vec3 base, vec3 g, vec3 viewDir)
 }
 //PLUME::ENDIF
 
+//PLUME::IF DEPTH+REFINE
+// where the ray through viewport position `local` meets the opaque scene,
+// index space, clamped to the box (rays that end beyond it all look alike)
+vec3 opaqueEnd(vec2 local)
+{
+  ivec2 px = clamp(ivec2(local), ivec2(0), ivec2(ViewportSize) - 1);
+  float z = texelFetch(OpaqueDepth, px, 0).r;
+  vec4 q = ClipToIndex * vec4(2.0 * local / ViewportSize - 1.0, 2.0 * z - 1.0, 1.0);
+  return clamp(q.xyz / q.w, BoxMin, BoxMax);
+}
+//PLUME::ENDIF
+
 void main()
 {
-  vec2 ndc = 2.0 * (gl_FragCoord.xy - ViewportOrigin) / ViewportSize - 1.0;
+  vec2 fragLocal = gl_FragCoord.xy - ViewportOrigin; // position in the viewport, pixels
+//PLUME::IF COARSE
+  fragLocal = gl_FragCoord.xy * Lattice; // (the lattice texture starts at 0)
+//PLUME::ENDIF
+//PLUME::IF REFINE
+  {
+    // the four nearest lattice rays (ray i sits at i L + L / 2)
+    vec2 c = fragLocal / Lattice - 0.5;
+    vec2 cf = floor(c);
+    vec2 f = c - cf;
+    ivec2 top = ivec2(LatticeSize) - 1;
+    ivec2 a00 = clamp(ivec2(cf), ivec2(0), top);
+    ivec2 a11 = clamp(ivec2(cf) + 1, ivec2(0), top);
+    // the 4 x 4 lattice rays around (g[5], g[6], g[9], g[10] are the cell's corners)
+    vec4 g[16];
+    for (int k = 0; k < 16; ++k)
+    {
+      g[k] = texelFetch(LatticeColor, clamp(ivec2(cf) + ivec2(k % 4 - 1, k / 4 - 1), ivec2(0), top), 0);
+    }
+    vec4 c00 = g[5], c10 = g[6], c01 = g[9], c11 = g[10];
+    // bilinear interpolation is exact for bilinear images; its error is about
+    // 1/8 of the second differences across the cell (edges, silhouettes and
+    // peaks make them large), taken at the four corners along x and y
+    vec4 curvature = vec4(0.0);
+    for (int k = 5; k <= 10; k += (k == 6 ? 3 : 1))
+    {
+      curvature = max(curvature, abs(g[k - 1] - 2.0 * g[k] + g[k + 1]));
+      curvature = max(curvature, abs(g[k - 4] - 2.0 * g[k] + g[k + 4]));
+    }
+    bool agree = all(lessThanEqual(0.125 * curvature, vec4(LatticeTolerance)));
+//PLUME::ENDIF
+//PLUME::IF DEPTH+REFINE
+    if (agree)
+    {
+      // no opaque edge between them: this pixel's opaque end is what theirs
+      // predict, within half a voxel
+      vec3 e = mix(mix(opaqueEnd((vec2(a00) + 0.5) * Lattice), opaqueEnd((vec2(a11.x, a00.y) + 0.5) * Lattice), f.x),
+        mix(opaqueEnd((vec2(a00.x, a11.y) + 0.5) * Lattice), opaqueEnd((vec2(a11) + 0.5) * Lattice), f.x), f.y);
+      agree = length(opaqueEnd(fragLocal) - e) <= 0.5;
+    }
+//PLUME::ENDIF
+//PLUME::IF REFINE
+    if (agree)
+    {
+      vec4 v = mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y);
+      if (v.a <= 0.0)
+      {
+        discard;
+      }
+      gl_FragData[0] = v;
+      return;
+    }
+  }
+//PLUME::ENDIF
+  vec2 ndc = 2.0 * fragLocal / ViewportSize - 1.0;
   vec4 a = ClipToIndex * vec4(ndc, -1.0, 1.0);
   vec4 b = ClipToIndex * vec4(ndc, 1.0, 1.0);
   vec3 p0 = a.xyz / a.w;   // ray at the near plane
   vec3 d = b.xyz / b.w - p0; // to the far plane: t in [0, 1]
   float tEnd = 1.0;
 //PLUME::IF DEPTH
-  float z = texelFetch(OpaqueDepth, ivec2(gl_FragCoord.xy - ViewportOrigin), 0).r;
+  float z = texelFetch(OpaqueDepth, clamp(ivec2(fragLocal), ivec2(0), ivec2(ViewportSize) - 1), 0).r;
   if (z < 1.0)
   {
     vec4 q = ClipToIndex * vec4(ndc, 2.0 * z - 1.0, 1.0);
