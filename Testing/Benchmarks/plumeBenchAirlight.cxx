@@ -150,9 +150,17 @@ test::FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer, vtk
   return image;
 }
 
-nlohmann::json RunJob(const Context& context, const std::string& job)
+nlohmann::json RunJob(const Context& context, const std::string& jobName)
 {
-  const int size = context.Quick ? 128 : 512;
+  // "NAME@S": the job at S x S (the fixed vs per-pixel split of the pass's cost).
+  std::string job = jobName;
+  int size = context.Quick ? 128 : 512;
+  const size_t at = job.find('@');
+  if (at != std::string::npos)
+  {
+    size = std::stoi(job.substr(at + 1));
+    job = job.substr(0, at);
+  }
   const int frames = context.Quick ? 3 : 7;
   auto window = context.MakeWindow(size, size);
   vtkNew<vtkRenderer> renderer;
@@ -251,7 +259,9 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
 
 std::vector<std::string> Jobs(bool quick)
 {
-  std::vector<std::string> jobs = { "opaque", "ours", "grey", "shadow", "shadow_rebake" };
+  const std::string half = quick ? "@64" : "@256";
+  std::vector<std::string> jobs = { "opaque", "ours", "grey", "shadow", "shadow_rebake", "opaque" + half,
+    "ours" + half };
   for (int n : MarchSteps(quick))
   {
     jobs.push_back("march:" + std::to_string(n));
@@ -344,6 +354,25 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
         { "bakes", rebake->second.value("bakes", 0) },
         { "peak_rss_mb", rebake->second.value("peak_rss_mb", 0.0) } });
     }
+  }
+  // Where the pass's time goes: added time at S and S/2 -> a per-pixel and a fixed part.
+  const std::string half = quick ? "@64" : "@256";
+  const auto opaqueHalf = results.find("opaque" + half);
+  const auto oursHalf = results.find("ours" + half);
+  if (opaque != results.end() && opaqueHalf != results.end() && oursHalf != results.end())
+  {
+    const double n = quick ? 128.0 * 128.0 : 512.0 * 512.0;
+    const double added = oursTime - opaque->second.value("frame_s", 0.0);
+    const double addedHalf = oursHalf->second.value("frame_s", 0.0) - opaqueHalf->second.value("frame_s", 0.0);
+    const double perPixel = (added - addedHalf) / (0.75 * n);
+    const double fixed = added - perPixel * n;
+    lines.push_back({ { "bench", "airlight" }, { "case", size + " pass cost split (added time at full and half size)" },
+      { "ours_s", oursTime }, { "peer", "ours at half the width and height" },
+      { "peer_s", oursHalf->second.value("frame_s", 0.0) },
+      { "ratio", oursTime > 0 ? oursHalf->second.value("frame_s", 0.0) / oursTime : 0.0 },
+      { "added_ms", 1e3 * added }, { "added_half_ms", 1e3 * addedHalf }, { "per_pixel_ns", 1e9 * perPixel },
+      { "fixed_ms", 1e3 * fixed }, { "per_pixel_share", added > 0 ? perPixel * n / added : 0.0 },
+      { "peak_rss_mb", ours->second.value("peak_rss_mb", 0.0) } });
   }
   const auto grey = results.find("grey");
   if (grey != results.end())
