@@ -51,6 +51,10 @@ struct vtkPlumeAirlightPass::ShadowMap
   vtkTextureObject* Color = nullptr;
   std::vector<double> Key;
   double Near = 0, Far = 1;
+  // 1 for a spot light (the whole texture); 6 for a point light: the faces
+  // +x, -x, +y, -y, +z, -z (world axes) as tiles (f % 3, f / 3) of a 3 x 2 atlas.
+  int Faces = 1;
+  double WorldToClip[6][16]; // per face, row-major, with the renderer's aspect ratio
 
   void Release()
   {
@@ -74,7 +78,6 @@ struct vtkPlumeAirlightPass::ShadowMap
 namespace
 {
 constexpr int MaximumLights = 8;
-constexpr int MaximumShadows = 4; // one sampler uniform each (GLSL 1.50: no dynamic sampler indexing)
 
 // Adaptive Simpson on [a, b] to absolute tolerance `tol` (the table's
 // integrands are smooth and bounded; the depth limit only guards round-off).
@@ -216,20 +219,20 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Bind(&T::SetMarchSteps, &T::GetMarchSteps);
     t.Boolean("shadows", "Shadows", true)
       .Panel("Medium")
-      .Doc("Volumetric shadows of opaque geometry for spot lights (a shadow map per spot light whose cone holds a prop).")
+      .Doc("Volumetric shadows of opaque geometry: a shadow map per spot light whose cone holds a prop, a cube map (six faces) per point light with any opaque prop; at most 4 lights shadowed (MaximumShadowedLights, a warning names the rest).")
       .Bind(&T::SetShadows, &T::GetShadows);
     t.Integer("shadow_steps", "ShadowSteps", 64)
       .Between(1, 1024)
       .Panel("Medium")
       .Advanced()
-      .Doc("March steps along each view ray for a shadowed spot light (uniform in the angle seen from the light, jittered).")
+      .Doc("March steps along each view ray for a shadowed light (uniform in the angle seen from the light, jittered).")
       .Bind(&T::SetShadowSteps, &T::GetShadowSteps);
     t.Integer("shadow_map_size", "ShadowMapSize", 1024)
       .Between(16, 8192)
       .Units("texels")
       .Panel("Medium")
       .Advanced()
-      .Doc("Width and height of each spot light's shadow map.")
+      .Doc("Width and height of each spot light's shadow map and of each face of a point light's cube map.")
       .Bind(&T::SetShadowMapSize, &T::GetShadowMapSize);
     return t;
   }();
@@ -375,7 +378,7 @@ bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w,
 //------------------------------------------------------------------------------
 bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
   const std::vector<double>& key, const double position[3], const double focal[3],
-  double coneAngle, const double bounds[6])
+  double coneAngle, const double bounds[6], bool point)
 {
   while (static_cast<int>(this->ShadowMaps.size()) <= index)
   {
@@ -389,6 +392,9 @@ bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
   vtkRenderer* r = s->GetRenderer();
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(r->GetRenderWindow());
   const int size = this->ShadowMapSize;
+  const int faces = point ? 6 : 1;
+  const int mapW = point ? 3 * size : size;
+  const int mapH = point ? 2 * size : size;
   if (!m->Depth)
   {
     m->Depth = vtkTextureObject::New();
@@ -397,30 +403,23 @@ bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
     m->Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
     m->Depth->SetWrapS(vtkTextureObject::ClampToEdge);
     m->Depth->SetWrapT(vtkTextureObject::ClampToEdge);
-    m->Depth->AllocateDepth(size, size, vtkTextureObject::Float32);
+    m->Depth->AllocateDepth(mapW, mapH, vtkTextureObject::Float32);
     m->Color = vtkTextureObject::New();
     m->Color->SetContext(renWin);
-    m->Color->Allocate2D(size, size, 4, VTK_UNSIGNED_CHAR);
+    m->Color->Allocate2D(mapW, mapH, 4, VTK_UNSIGNED_CHAR);
     m->FrameBuffer = vtkOpenGLFramebufferObject::New();
     m->FrameBuffer->SetContext(renWin);
   }
-  m->Depth->Resize(size, size);
-  m->Color->Resize(size, size);
+  m->Depth->Resize(mapW, mapH);
+  m->Color->Resize(mapW, mapH);
+  m->Faces = faces;
 
-  // The light's camera: its frustum holds the cone (VTK's projection uses the
-  // renderer's aspect ratio; the vertical angle is widened when it is < 1).
+  // The light's camera: its frustum holds the cone, or for a point light
+  // each face's 90 degree square (VTK's projection uses the renderer's aspect
+  // ratio; the vertical angle is widened when it is < 1).
   vtkCamera* cam = m->Camera;
   const glm::dvec3 p(position[0], position[1], position[2]);
-  glm::dvec3 axis = glm::dvec3(focal[0], focal[1], focal[2]) - p;
-  axis = glm::length(axis) > 0 ? glm::normalize(axis) : glm::dvec3(0, 0, -1);
-  const glm::dvec3 up = std::fabs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-  cam->SetPosition(position);
-  cam->SetFocalPoint(p.x + axis.x, p.y + axis.y, p.z + axis.z);
-  cam->SetViewUp(up.x, up.y, up.z);
   const double aspect = r->GetTiledAspectRatio();
-  const double half = vtkMath::RadiansFromDegrees(std::min(coneAngle * 1.02 + 0.5, 89.0));
-  const double tanHalf = std::tan(half) / std::min(aspect, 1.0);
-  cam->SetViewAngle(std::min(vtkMath::DegreesFromRadians(2.0 * std::atan(tanHalf)), 179.0));
   double farthest = 0;
   for (int c = 0; c < 8; ++c)
   {
@@ -429,7 +428,18 @@ bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
   }
   m->Far = std::max(farthest * 1.01, 1e-6);
   m->Near = m->Far * 1e-3;
+  cam->SetPosition(position);
   cam->SetClippingRange(m->Near, m->Far);
+  auto aim = [&](const glm::dvec3& axis, double halfAngle) {
+    const glm::dvec3 up = std::fabs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+    cam->SetFocalPoint(p.x + axis.x, p.y + axis.y, p.z + axis.z);
+    cam->SetViewUp(up.x, up.y, up.z);
+    const double tanHalf = std::tan(halfAngle) / std::min(aspect, 1.0);
+    cam->SetViewAngle(std::min(vtkMath::DegreesFromRadians(2.0 * std::atan(tanHalf)), 179.0));
+    cam->SetClippingRange(m->Near, m->Far);
+  };
+  static const double faceAxes[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
+    { 0, 0, 1 }, { 0, 0, -1 } };
 
   // Depth of the opaque props from the light, with the renderer's camera
   // swapped for the light's (as vtkShadowMapBakerPass does).
@@ -439,7 +449,7 @@ bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
   m->FrameBuffer->AddColorAttachment(0, m->Color);
   m->FrameBuffer->ActivateDrawBuffers(1);
   m->FrameBuffer->AddDepthAttachment(m->Depth);
-  m->FrameBuffer->StartNonOrtho(size, size);
+  m->FrameBuffer->StartNonOrtho(mapW, mapH);
   vtkCamera* saved = r->GetActiveCamera();
   saved->Register(this);
   r->SetActiveCamera(cam);
@@ -463,12 +473,31 @@ bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
   vtkRenderState inner(r);
   inner.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   inner.SetFrameBuffer(m->FrameBuffer);
-  ostate->vtkglViewport(0, 0, size, size);
-  ostate->vtkglScissor(0, 0, size, size);
+  ostate->vtkglViewport(0, 0, mapW, mapH);
+  ostate->vtkglScissor(0, 0, mapW, mapH);
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglClearDepth(1.0);
   ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  opaque->Render(&inner);
+  for (int f = 0; f < faces; ++f)
+  {
+    if (point)
+    {
+      // A margin of 2 % keeps the faces' frusta overlapping at their seams.
+      aim(glm::dvec3(faceAxes[f][0], faceAxes[f][1], faceAxes[f][2]), std::atan(1.02));
+    }
+    else
+    {
+      glm::dvec3 axis = glm::dvec3(focal[0], focal[1], focal[2]) - p;
+      axis = glm::length(axis) > 0 ? glm::normalize(axis) : glm::dvec3(0, 0, -1);
+      aim(axis, vtkMath::RadiansFromDegrees(std::min(coneAngle * 1.02 + 0.5, 89.0)));
+    }
+    vtkMatrix4x4* toClip = cam->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0);
+    std::copy(toClip->GetData(), toClip->GetData() + 16, m->WorldToClip[f]);
+    const int tx = (f % 3) * size, ty = (f / 3) * size;
+    ostate->vtkglViewport(tx, ty, size, size);
+    ostate->vtkglScissor(tx, ty, size, size);
+    opaque->Render(&inner);
+  }
   r->SetActiveCamera(saved);
   saved->UnRegister(this);
   m->FrameBuffer->RemoveColorAttachments(1);
@@ -540,6 +569,9 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   std::vector<int> shadowIndex;
   std::vector<double> shadowMatrices; // row-major, eye coordinates -> light clip coordinates
   std::vector<float> shadowRanges;    // near, far per shadow map
+  std::vector<int> shadowFaces;       // 1 (spot) or 6 (point) per shadow map
+  std::vector<float> shadowLights;    // the light's eye position per shadow map
+  int unshadowed = 0;                 // lights that needed a map beyond the limit
   bool anySpot = false;
   // The opaque props that can cast shadows: their bounds and their latest change.
   struct Occluder
@@ -611,9 +643,10 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     }
     cosCones.push_back(
       spot ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()))) : -2.0f);
-    // A shadow map for a spot light whose cone holds some opaque prop's bounding sphere.
+    // A shadow map for a spot light whose cone holds some opaque prop's
+    // bounding sphere, or for a point light with any opaque prop (a cube map).
     int shadow = -1;
-    if (spot && this->Shadows && shadowCount < MaximumShadows && this->MarchSteps == 0)
+    if (this->Shadows)
     {
       const glm::dvec3 lp(position[0], position[1], position[2]);
       glm::dvec3 la = glm::dvec3(focal[0], focal[1], focal[2]) - lp;
@@ -628,7 +661,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
           glm::length(glm::dvec3(o.Bounds[1] - o.Bounds[0], o.Bounds[3] - o.Bounds[2], o.Bounds[5] - o.Bounds[4]));
         const glm::dvec3 v = c - lp;
         const double dist = glm::length(v);
-        if (dist <= radius ||
+        if (!spot || dist <= radius ||
           std::acos(std::min(1.0, std::max(-1.0, glm::dot(v, la) / dist))) - std::asin(radius / dist) <= cone)
         {
           occluded = true;
@@ -636,18 +669,28 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
         }
       }
       const std::vector<double> key = { position[0], position[1], position[2], focal[0], focal[1],
-        focal[2], light->GetConeAngle(), static_cast<double>(this->ShadowMapSize),
+        focal[2], spot ? light->GetConeAngle() : 180.0, static_cast<double>(this->ShadowMapSize),
         static_cast<double>(propsTime), static_cast<double>(occluders.size()), r->GetTiledAspectRatio() };
-      if (occluded && this->BakeShadowMap(s, shadowCount, key, position, focal, light->GetConeAngle(), sceneBounds))
+      if (occluded && shadowCount >= MaximumShadowedLights)
+      {
+        ++unshadowed; // reported below
+      }
+      else if (occluded &&
+        this->BakeShadowMap(s, shadowCount, key, position, focal, light->GetConeAngle(), sceneBounds, !spot))
       {
         ShadowMap* m = this->ShadowMaps[shadowCount];
-        vtkNew<vtkMatrix4x4> toLight;
-        vtkMatrix4x4::Multiply4x4(
-          m->Camera->GetCompositeProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0),
-          inverseView, toLight);
-        shadowMatrices.insert(shadowMatrices.end(), toLight->GetData(), toLight->GetData() + 16);
+        for (int f = 0; f < 6; ++f)
+        {
+          vtkNew<vtkMatrix4x4> worldToClip, toLight;
+          worldToClip->DeepCopy(m->WorldToClip[std::min(f, m->Faces - 1)]);
+          vtkMatrix4x4::Multiply4x4(worldToClip, inverseView, toLight);
+          shadowMatrices.insert(shadowMatrices.end(), toLight->GetData(), toLight->GetData() + 16);
+        }
         shadowRanges.push_back(static_cast<float>(m->Near));
         shadowRanges.push_back(static_cast<float>(m->Far));
+        shadowFaces.push_back(m->Faces);
+        shadowLights.insert(shadowLights.end(), { static_cast<float>(pe.x), static_cast<float>(pe.y),
+          static_cast<float>(pe.z) });
         shadow = shadowCount++;
       }
     }
@@ -656,12 +699,21 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   }
   const int numberOfLights = static_cast<int>(cosCones.size());
   this->NumberOfShadowedLights = shadowCount;
+  this->NumberOfUnshadowedLights = unshadowed;
+  if (unshadowed > 0 && unshadowed != this->ReportedUnshadowed)
+  {
+    vtkWarningMacro("vtkPlumeAirlightPass: " << shadowCount + unshadowed
+      << " lights need a shadow map but at most " << MaximumShadowedLights
+      << " are shadowed (MaximumShadowedLights, one sampler each); the last " << unshadowed
+      << " are rendered unshadowed.");
+  }
+  this->ReportedUnshadowed = unshadowed;
 
   // 3. The program for this variant (lights count, spot lights or not).
   std::ostringstream defines;
   defines << "#define NUMBER_OF_LIGHTS " << std::max(numberOfLights, 1) << "\n";
   std::set<std::string> features;
-  if (anySpot)
+  if (anySpot || shadowCount > 0) // the shadowed march uses the spot path's running integral
   {
     features.insert("SPOT");
     defines << "#define HAS_SPOT\n";
@@ -744,7 +796,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   {
     program->SetUniform3fv("LightPosition", numberOfLights, reinterpret_cast<const float(*)[3]>(positions.data()));
     program->SetUniform3fv("LightI0", numberOfLights, reinterpret_cast<const float(*)[3]>(intensities.data()));
-    if (anySpot)
+    if (anySpot || shadowCount > 0)
     {
       program->SetUniform3fv("LightAxis", numberOfLights, reinterpret_cast<const float(*)[3]>(axes.data()));
       program->SetUniform1fv("LightCosCone", numberOfLights, cosCones.data());
@@ -755,13 +807,29 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     {
       program->SetUniform1iv("LightShadow", numberOfLights, shadowIndex.data());
       program->SetUniformi("ShadowSteps", this->ShadowSteps);
+      // Cube faces are world-axis aligned: the shader picks one by the world direction.
+      double eyeToWorld[9];
+      for (int i = 0; i < 3; ++i)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          eyeToWorld[3 * i + j] = inverseView->GetElement(i, j);
+        }
+      }
+      plume::SetUniformMatrix3x3(program, "EyeToWorld", eyeToWorld);
       for (int k = 0; k < shadowCount; ++k)
       {
         const std::string n = std::to_string(k);
         this->ShadowMaps[k]->Depth->Activate();
         program->SetUniformi(("ShadowMap" + n).c_str(), this->ShadowMaps[k]->Depth->GetTextureUnit());
-        plume::SetUniformMatrix4x4(program, ("ShadowMatrix" + n).c_str(), &shadowMatrices[16 * k]);
+        for (int f = 0; f < 6; ++f)
+        {
+          plume::SetUniformMatrix4x4(program, ("ShadowMatrix" + n + "[" + std::to_string(f) + "]").c_str(),
+            &shadowMatrices[16 * (6 * k + f)]);
+        }
         program->SetUniform2f(("ShadowRange" + n).c_str(), &shadowRanges[2 * k]);
+        program->SetUniformi(("ShadowFaces" + n).c_str(), shadowFaces[k]);
+        program->SetUniform3f(("ShadowLight" + n).c_str(), &shadowLights[3 * k]);
       }
     }
   }

@@ -52,16 +52,18 @@
  * directly (no framebuffer, no pass). The table is built once per process
  * and resolution and uploaded once per context.
  *
- * Volumetric shadows (Wyman & Ramsey 2008, seed 001), spot lights only: with
- * Shadows on, every spot light whose cone contains the bounds of some visible
- * opaque prop gets a depth map of the opaque props from its frustum (rebuilt
- * only when the light, a prop or the map size changes), and its airlight is
- * a march along the view ray inside the cone: ShadowSteps sub-intervals
- * uniform in the angle seen from the light, each adding
+ * Volumetric shadows (Wyman & Ramsey 2008, seed 001): with Shadows on,
+ * every spot light whose cone contains the bounds of some visible opaque prop
+ * gets a depth map of the opaque props from its frustum, and every point
+ * light with some opaque prop a cube map (six 90-degree frusta along the
+ * world axes, drawn as tiles of one 3 x 2 atlas); maps are rebuilt only when
+ * the light, a prop or the map size changes. A shadowed light's airlight is
+ * a march along the view ray (inside the cone for a spot): ShadowSteps
+ * sub-intervals uniform in the angle seen from the light, each adding
  * w * [Phi(x_k) - Phi(x_{k-1})] when a jittered point of it is lit, Phi the
  * closed-form running integral (so a fully lit ray with exponent 0 is the
- * unshadowed result; no arctan in the loop). Point lights stay unshadowed.
- * At most 4 shadowed spot lights (the others unshadowed).
+ * unshadowed result; no arctan in the loop). At most MaximumShadowedLights
+ * (4) lights are shadowed; the others are unshadowed, with a warning.
  *
  * Limits: a light exactly on a view ray (the integral of 1/d^2 diverges)
  * gives a huge but finite value, clamped to 1e20.
@@ -135,7 +137,8 @@ public:
    * For comparisons and benchmarks only: 0 uses the closed form; N > 0
    * replaces it by brute-force ray marching of the same integral (midpoint
    * rule, N samples per ray and light, rays that hit nothing stop where the
-   * transmittance is 1e-6), what a user would write in a shader. Default 0.
+   * transmittance is 1e-6; with Shadows, each sample is tested in the same
+   * shadow maps), what a user would write in a shader. Default 0.
    */
   vtkSetClampMacro(MarchSteps, int, 0, 65536);
   vtkGetMacro(MarchSteps, int);
@@ -143,8 +146,8 @@ public:
 
   ///@{
   /**
-   * Volumetric shadows of the opaque props for spot lights (a shadow map per
-   * spot light whose cone contains a prop's bounds). Default on.
+   * Volumetric shadows of the opaque props (a shadow map per spot light whose
+   * cone contains a prop's bounds, a cube map per point light). Default on.
    */
   vtkSetMacro(Shadows, bool);
   vtkGetMacro(Shadows, bool);
@@ -153,7 +156,7 @@ public:
 
   ///@{
   /**
-   * March steps along a view ray for a shadowed spot light (sub-intervals
+   * March steps along a view ray for a shadowed light (sub-intervals
    * uniform in the angle seen from the light; at least the spot exponent's
    * own count). Default 64.
    */
@@ -162,7 +165,10 @@ public:
   ///@}
 
   ///@{
-  /** Width and height of each spot light's shadow map, texels. Default 1024. */
+  /**
+   * Width and height of each spot light's shadow map and of each face of a
+   * point light's cube map (a 3 x 2 atlas of faces), texels. Default 1024.
+   */
   vtkSetClampMacro(ShadowMapSize, int, 16, 8192);
   vtkGetMacro(ShadowMapSize, int);
   ///@}
@@ -170,8 +176,22 @@ public:
   /** How many shadow maps have been rendered so far (for tests: maps are rebuilt only on change). */
   vtkGetMacro(NumberOfShadowMapBakes, int);
 
-  /** How many spot lights were shadowed in the last frame. */
+  /** How many lights were shadowed in the last frame. */
   vtkGetMacro(NumberOfShadowedLights, int);
+
+  /**
+   * How many lights needed a shadow map in the last frame but were left
+   * unshadowed because MaximumShadowedLights were already shadowed (a warning
+   * names the numbers when this count changes to a value above 0).
+   */
+  vtkGetMacro(NumberOfUnshadowedLights, int);
+
+  /**
+   * At most this many lights are shadowed per frame (one shadow-map sampler
+   * each: GLSL 1.50 cannot index samplers dynamically); the others get their
+   * airlight unshadowed, with a warning.
+   */
+  static constexpr int MaximumShadowedLights = 4;
 
   ///@{
   /**
@@ -214,12 +234,14 @@ protected:
   int ShadowMapSize = 1024;
   int NumberOfShadowMapBakes = 0;
   int NumberOfShadowedLights = 0;
+  int NumberOfUnshadowedLights = 0;
+  int ReportedUnshadowed = 0;
 
   struct ShadowMap;
   std::vector<ShadowMap*> ShadowMaps;
   // Bakes the depth map of light `index` if its key changed; returns false on failure.
   bool BakeShadowMap(const vtkRenderState* s, int index, const std::vector<double>& key,
-    const double position[3], const double focal[3], double coneAngle, const double bounds[6]);
+    const double position[3], const double focal[3], double coneAngle, const double bounds[6], bool point);
 
   vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
   vtkTextureObject* ColorTexture = nullptr;

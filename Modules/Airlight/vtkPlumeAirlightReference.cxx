@@ -189,7 +189,7 @@ void vtkPlumeAirlightReference::SetLights(vtkRenderer* renderer)
     l.Spot = light->GetConeAngle() < 90.0;
     l.CosCone = std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()));
     l.Exponent = light->GetExponent();
-    l.Shadowed = l.Spot && this->Tree;
+    l.Shadowed = this->Tree != nullptr; // spot and point lights alike
     this->Lights.push_back(l);
   }
 }
@@ -218,15 +218,14 @@ void vtkPlumeAirlightReference::ComputeRay(
       coef[c] = ks[c] * light.I0[c] / (4.0 * vtkMath::Pi());
     }
     auto inside = [&](double x) {
-      if (!light.Spot)
+      if (light.Spot)
       {
-        return true;
-      }
-      const glm::dvec3 v = o + x * r - L;
-      const double len = glm::length(v);
-      if (!(len > 0.0 && glm::dot(v, axis) >= light.CosCone * len))
-      {
-        return false;
+        const glm::dvec3 v = o + x * r - L;
+        const double len = glm::length(v);
+        if (!(len > 0.0 && glm::dot(v, axis) >= light.CosCone * len))
+        {
+          return false;
+        }
       }
       if (light.Shadowed)
       {
@@ -284,9 +283,9 @@ void vtkPlumeAirlightReference::ComputeRay(
     {
       breaks.push_back(distance);
     }
-    if (light.Spot)
+    if (light.Spot || light.Shadowed)
     {
-      // Sample the inside test on every piece (the infinite one in s) and bisect changes.
+      // Sample the inside test (cone and shadow) on every piece (the infinite one in s) and bisect changes.
       std::vector<double> extra;
       auto xOf = [&](size_t piece, double u) {
         if (piece + 1 < breaks.size())
@@ -357,9 +356,13 @@ void vtkPlumeAirlightReference::ComputeRay(
 
 //------------------------------------------------------------------------------
 void vtkPlumeAirlightReference::ComputeImage(vtkRenderer* renderer, int w, int h, const float* rgba,
-  const float* depth, std::vector<float>& out, int stride) const
+  const float* depth, std::vector<float>& out, int stride, std::vector<float>* airlight) const
 {
   out.assign(4 * static_cast<size_t>(w) * h, std::numeric_limits<float>::quiet_NaN());
+  if (airlight)
+  {
+    airlight->assign(out.size(), std::numeric_limits<float>::quiet_NaN());
+  }
   vtkCamera* camera = renderer->GetActiveCamera();
   vtkNew<vtkMatrix4x4> inverse;
   inverse->DeepCopy(
@@ -404,8 +407,16 @@ void vtkPlumeAirlightReference::ComputeImage(vtkRenderer* renderer, int w, int h
       {
         const double T = kt[c] == 0.0 ? 1.0 : std::exp(-kt[c] * distance);
         out[4 * p + c] = static_cast<float>(rgba[4 * p + c] * T + air[c]);
+        if (airlight)
+        {
+          (*airlight)[4 * p + c] = static_cast<float>(air[c]);
+        }
       }
       out[4 * p + 3] = 1.0f;
+      if (airlight)
+      {
+        (*airlight)[4 * p + 3] = 1.0f;
+      }
     }
   }
 }

@@ -61,10 +61,11 @@ public:
 
   /**
    * Takes the renderer's visible opaque actors' polygons (in world
-   * coordinates, after a render) as occluders: spot lights are then shadowed
-   * by exact ray casts (vtkOBBTree) from the light to each point of the view
-   * ray; point lights stay unshadowed, as in vtkPlumeAirlightPass. Call
-   * before SetLights. Without it (default) nothing casts shadows.
+   * coordinates, after a render) as occluders: spot and point lights are
+   * then shadowed by exact ray casts (vtkOBBTree) from the light to each
+   * point of the view ray (shadow boundaries found by 256 samples per piece
+   * and bisection). Call before SetLights. Without it (default) nothing
+   * casts shadows.
    */
   void SetOccluders(vtkRenderer* renderer);
 
@@ -83,9 +84,11 @@ public:
    * pass (w x h, bottom row first, window depth in [0, 1]); `out` gets
    * RGB = rgb * exp(-kt ds) + airlight and A = 1 (w*h*4). Only every
    * `stride`-th pixel along x and y is computed (others are left NaN).
+   * `airlight` (optional) gets the airlight alone (RGB, A = 1) of the same
+   * rays, so a caller needing both does not trace the rays twice.
    */
   void ComputeImage(vtkRenderer* renderer, int w, int h, const float* rgba, const float* depth,
-    std::vector<float>& out, int stride = 1) const;
+    std::vector<float>& out, int stride = 1, std::vector<float>* airlight = nullptr) const;
 
 protected:
   vtkPlumeAirlightReference();

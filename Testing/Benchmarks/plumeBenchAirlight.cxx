@@ -6,7 +6,10 @@
 // N samples per ray and light). Each job in its own process: frame time
 // (median after two warm-ups), peak memory, and RMS/max error against
 // vtkPlumeAirlightReference on a pixel lattice, in % of the airlight
-// image's range. Also the scene without the medium, for the pass's own cost.
+// image's range. Also the scene without the medium, for the pass's own cost,
+// and the shadowed path (a cube map for the point light, a map for the spot)
+// against the march with the same shadow-map tests, and the share of a
+// shadowed frame spent rebuilding a map (the spot light moved every frame).
 #include "plumeBenchmarks.h"
 #include "plumeTestSupport.h"
 
@@ -18,6 +21,7 @@
 #include "vtkCubeSource.h"
 #include "vtkFramebufferPass.h"
 #include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -39,6 +43,12 @@ namespace
 std::vector<int> MarchSteps(bool quick)
 {
   return quick ? std::vector<int>{ 16, 64 } : std::vector<int>{ 16, 32, 64, 128, 256, 512, 1024 };
+}
+
+// The shadowed peers: the march tests every sample in the same shadow maps.
+std::vector<int> ShadowMarchSteps(bool quick)
+{
+  return quick ? std::vector<int>{ 64 } : std::vector<int>{ 64, 128, 256, 512 };
 }
 
 void AddBox(vtkRenderer* renderer, const double b[6], double r, double g, double bl)
@@ -140,9 +150,17 @@ test::FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer, vtk
   return image;
 }
 
-nlohmann::json RunJob(const Context& context, const std::string& job)
+nlohmann::json RunJob(const Context& context, const std::string& jobName)
 {
-  const int size = context.Quick ? 128 : 512;
+  // "NAME@S": the job at S x S (the fixed vs per-pixel split of the pass's cost).
+  std::string job = jobName;
+  int size = context.Quick ? 128 : 512;
+  const size_t at = job.find('@');
+  if (at != std::string::npos)
+  {
+    size = std::stoi(job.substr(at + 1));
+    job = job.substr(0, at);
+  }
   const int frames = context.Quick ? 3 : 7;
   auto window = context.MakeWindow(size, size);
   vtkNew<vtkRenderer> renderer;
@@ -152,6 +170,10 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   vtkNew<vtkRenderStepsPass> steps;
   vtkNew<vtkPlumeAirlightPass> pass;
   pass->SetDelegatePass(steps);
+  // Shadowed jobs: "shadow" (ours), "shadow_rebake" (ours with the maps
+  // rebuilt every frame: the light moves by 1e-6), "shadow_march:N".
+  const bool shadowed = job.rfind("shadow", 0) == 0;
+  pass->SetShadows(shadowed);
   if (job != "opaque")
   {
     SetMedium(pass, job == "grey");
@@ -160,11 +182,20 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   {
     pass->SetMarchSteps(std::stoi(job.substr(6)));
   }
+  if (job.rfind("shadow_march:", 0) == 0)
+  {
+    pass->SetMarchSteps(std::stoi(job.substr(13)));
+  }
   renderer->SetPass(pass);
   std::vector<double> times;
+  vtkLight* spot = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(1));
   for (int f = 0; f < frames + 2; ++f)
   {
     renderer->GetActiveCamera()->Azimuth(f % 2 ? 0.5 : -0.5); // a real re-render
+    if (job == "shadow_rebake")
+    {
+      spot->SetPosition(2.5, 3.5, f % 2 ? -1.5 : -1.500001); // a changed light: its map is rebuilt
+    }
     const double t0 = Now();
     window->Render();
     window->WaitForCompletion();
@@ -173,29 +204,34 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
       times.push_back(Now() - t0);
     }
   }
-  nlohmann::json result = { { "frame_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() } };
-  if (job == "opaque")
+  nlohmann::json result = { { "frame_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() },
+    { "shadowed_lights", pass->GetNumberOfShadowedLights() }, { "bakes", pass->GetNumberOfShadowMapBakes() } };
+  if (job == "opaque" || job == "shadow_rebake")
   {
     return result;
   }
 
-  // Error against the reference on a lattice of pixels (every `stride`-th).
-  const int stride = context.Quick ? 4 : 16;
+  // Error against the reference on a lattice of pixels (every `stride`-th;
+  // shadowed: a quarter as many pixels, the reference's exact shadow rays are slow).
+  const int stride = (context.Quick ? 4 : 16) * (shadowed ? 2 : 1);
   const test::FloatImage plain = RenderFloat(window, renderer, nullptr);
   const test::FloatImage image = RenderFloat(window, renderer, pass);
   vtkNew<vtkPlumeAirlightReference> reference;
   reference->SetScattering(pass->GetScattering());
   reference->SetAbsorption(pass->GetAbsorption());
   reference->SetIntensityScale(pass->GetIntensityScale());
+  if (shadowed)
+  {
+    reference->SetOccluders(renderer); // exact ray-cast shadows
+  }
   reference->SetLights(renderer);
   std::vector<float> surface(plain.RGBA), expected, airlight;
   for (float& v : surface)
   {
     v = std::min(std::max(v, 0.0f), 1.0f);
   }
-  reference->ComputeImage(renderer, size, size, surface.data(), plain.Depth.data(), expected, stride);
-  const std::vector<float> black(surface.size(), 0.0f);
-  reference->ComputeImage(renderer, size, size, black.data(), plain.Depth.data(), airlight, stride);
+  reference->ComputeImage(
+    renderer, size, size, surface.data(), plain.Depth.data(), expected, stride, &airlight);
   double lo = HUGE_VAL, hi = -HUGE_VAL, sum = 0, worst = 0;
   size_t count = 0;
   for (size_t p = 0; p < expected.size() / 4; ++p)
@@ -223,10 +259,16 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
 
 std::vector<std::string> Jobs(bool quick)
 {
-  std::vector<std::string> jobs = { "opaque", "ours", "grey" };
+  const std::string half = quick ? "@64" : "@256";
+  std::vector<std::string> jobs = { "opaque", "ours", "grey", "shadow", "shadow_rebake", "opaque" + half,
+    "ours" + half };
   for (int n : MarchSteps(quick))
   {
     jobs.push_back("march:" + std::to_string(n));
+  }
+  for (int n : ShadowMarchSteps(quick))
+  {
+    jobs.push_back("shadow_march:" + std::to_string(n));
   }
   return jobs;
 }
@@ -266,6 +308,71 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
       line["equal_error"] = true; // the fewest steps whose error is at most ours
     }
     lines.push_back(line);
+  }
+  // Shadowed: the point light (cube map) and the spot light (one map) both shadowed.
+  const auto shadow = results.find("shadow");
+  if (shadow != results.end())
+  {
+    const double shadowTime = shadow->second.value("frame_s", 0.0);
+    const double shadowError = shadow->second.value("error", 0.0);
+    bool matched = false;
+    for (int n : ShadowMarchSteps(quick))
+    {
+      const auto peer = results.find("shadow_march:" + std::to_string(n));
+      if (peer == results.end())
+      {
+        continue;
+      }
+      const double peerTime = peer->second.value("frame_s", 0.0);
+      const double peerError = peer->second.value("error", 0.0);
+      nlohmann::json line = { { "bench", "airlight" },
+        { "case", size + " shadowed point+spot, march " + std::to_string(n) }, { "ours_s", shadowTime },
+        { "peer", "shader ray march with shadow-map tests, " + std::to_string(n) + " steps" },
+        { "peer_s", peerTime }, { "ratio", shadowTime > 0 ? peerTime / shadowTime : 0.0 },
+        { "error", shadowError }, { "peer_error", peerError },
+        { "error_max", shadow->second.value("error_max", 0.0) },
+        { "peer_error_max", peer->second.value("error_max", 0.0) },
+        { "shadowed_lights", shadow->second.value("shadowed_lights", 0) },
+        { "peak_rss_mb", shadow->second.value("peak_rss_mb", 0.0) },
+        { "peer_peak_rss_mb", peer->second.value("peak_rss_mb", 0.0) } };
+      if (!matched && peerError <= shadowError)
+      {
+        matched = true;
+        line["equal_error"] = true;
+      }
+      lines.push_back(line);
+    }
+    const auto rebake = results.find("shadow_rebake");
+    if (rebake != results.end())
+    {
+      const double rebakeTime = rebake->second.value("frame_s", 0.0);
+      lines.push_back({ { "bench", "airlight" },
+        { "case", size + " shadow-map rebuild share (spot map rebuilt every frame)" }, { "ours_s", shadowTime },
+        { "peer", "ours, light moved every frame" }, { "peer_s", rebakeTime },
+        { "ratio", shadowTime > 0 ? rebakeTime / shadowTime : 0.0 },
+        { "rebuild_share", rebakeTime > 0 ? std::max(0.0, rebakeTime - shadowTime) / rebakeTime : 0.0 },
+        { "bakes", rebake->second.value("bakes", 0) },
+        { "peak_rss_mb", rebake->second.value("peak_rss_mb", 0.0) } });
+    }
+  }
+  // Where the pass's time goes: added time at S and S/2 -> a per-pixel and a fixed part.
+  const std::string half = quick ? "@64" : "@256";
+  const auto opaqueHalf = results.find("opaque" + half);
+  const auto oursHalf = results.find("ours" + half);
+  if (opaque != results.end() && opaqueHalf != results.end() && oursHalf != results.end())
+  {
+    const double n = quick ? 128.0 * 128.0 : 512.0 * 512.0;
+    const double added = oursTime - opaque->second.value("frame_s", 0.0);
+    const double addedHalf = oursHalf->second.value("frame_s", 0.0) - opaqueHalf->second.value("frame_s", 0.0);
+    const double perPixel = (added - addedHalf) / (0.75 * n);
+    const double fixed = added - perPixel * n;
+    lines.push_back({ { "bench", "airlight" }, { "case", size + " pass cost split (added time at full and half size)" },
+      { "ours_s", oursTime }, { "peer", "ours at half the width and height" },
+      { "peer_s", oursHalf->second.value("frame_s", 0.0) },
+      { "ratio", oursTime > 0 ? oursHalf->second.value("frame_s", 0.0) / oursTime : 0.0 },
+      { "added_ms", 1e3 * added }, { "added_half_ms", 1e3 * addedHalf }, { "per_pixel_ns", 1e9 * perPixel },
+      { "fixed_ms", 1e3 * fixed }, { "per_pixel_share", added > 0 ? perPixel * n / added : 0.0 },
+      { "peak_rss_mb", ours->second.value("peak_rss_mb", 0.0) } });
   }
   const auto grey = results.find("grey");
   if (grey != results.end())

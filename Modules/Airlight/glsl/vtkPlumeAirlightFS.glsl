@@ -36,28 +36,40 @@ uniform float LightExponent[NUMBER_OF_LIGHTS];
 uniform int SpotSteps;
 //PLUME::ENDIF
 //PLUME::IF SHADOW
-// Shadowed spot lights: LightShadow[l] is the light's shadow map (-1: none).
-// ShadowMatrixK: eye coordinates -> the light camera's clip coordinates;
-// ShadowRangeK: its near and far distances; ShadowMapK: window depth.
+// Shadowed lights: LightShadow[l] is the light's shadow map (-1: none).
+// ShadowMatrixK[f]: eye coordinates -> the light camera's clip coordinates of
+// face f; ShadowFacesK: 1 for a spot light (face 0, the whole map), 6 for a
+// point light (faces +x, -x, +y, -y, +z, -z of the world, tiles (f % 3, f / 3)
+// of a 3 x 2 atlas); ShadowLightK: the light's eye position; ShadowRangeK:
+// near and far distances; ShadowMapK: window depth.
 uniform int LightShadow[NUMBER_OF_LIGHTS];
 uniform int ShadowSteps;
+uniform mat3 EyeToWorld;
 uniform sampler2D ShadowMap0;
-uniform mat4 ShadowMatrix0;
+uniform mat4 ShadowMatrix0[6];
 uniform vec2 ShadowRange0;
+uniform int ShadowFaces0;
+uniform vec3 ShadowLight0;
 #if NUMBER_OF_SHADOWS > 1
 uniform sampler2D ShadowMap1;
-uniform mat4 ShadowMatrix1;
+uniform mat4 ShadowMatrix1[6];
 uniform vec2 ShadowRange1;
+uniform int ShadowFaces1;
+uniform vec3 ShadowLight1;
 #endif
 #if NUMBER_OF_SHADOWS > 2
 uniform sampler2D ShadowMap2;
-uniform mat4 ShadowMatrix2;
+uniform mat4 ShadowMatrix2[6];
 uniform vec2 ShadowRange2;
+uniform int ShadowFaces2;
+uniform vec3 ShadowLight2;
 #endif
 #if NUMBER_OF_SHADOWS > 3
 uniform sampler2D ShadowMap3;
-uniform mat4 ShadowMatrix3;
+uniform mat4 ShadowMatrix3[6];
 uniform vec2 ShadowRange3;
+uniform int ShadowFaces3;
+uniform vec3 ShadowLight3;
 #endif
 //PLUME::ENDIF
 
@@ -229,8 +241,26 @@ vec2 coneInterval(vec3 o, vec3 r, float xs, vec3 apex, vec3 axis, float c)
 //PLUME::ENDIF
 
 //PLUME::IF SHADOW
+// The cube face of a point light for the eye-space offset v from the light:
+// the world axis of v's largest component (+x 0, -x 1, +y 2, -y 3, +z 4, -z 5).
+int cubeFace(vec3 v)
+{
+  vec3 w = EyeToWorld * v;
+  vec3 a = abs(w);
+  if (a.x >= a.y && a.x >= a.z)
+  {
+    return w.x >= 0.0 ? 0 : 1;
+  }
+  if (a.y >= a.z)
+  {
+    return w.y >= 0.0 ? 2 : 3;
+  }
+  return w.z >= 0.0 ? 4 : 5;
+}
+
 // 1 if the eye-space point p is lit in the shadow map (outside its frustum: lit).
-float litIn(sampler2D map, mat4 toLight, vec2 range, vec3 p)
+// faces 6: p's face f is the tile (f % 3, f / 3) of the 3 x 2 atlas.
+float litIn(sampler2D map, mat4 toLight, vec2 range, vec3 p, int face, int faces)
 {
   vec4 clip = toLight * vec4(p, 1.0);
   if (clip.w <= range.x)
@@ -241,6 +271,12 @@ float litIn(sampler2D map, mat4 toLight, vec2 range, vec3 p)
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))))
   {
     return 1.0;
+  }
+  if (faces == 6)
+  {
+    // Half a texel inside the tile: no depth from the neighbouring face.
+    vec2 inset = 0.5 / vec2(textureSize(map, 0)) * vec2(3.0, 2.0);
+    uv = (vec2(float(face % 3), float(face / 3)) + clamp(uv, inset, 1.0 - inset)) / vec2(3.0, 2.0);
   }
   float depth = texture(map, uv).r;
   if (depth >= 1.0)
@@ -257,15 +293,71 @@ float litIn(sampler2D map, mat4 toLight, vec2 range, vec3 p)
 float lit(int s, vec3 p)
 {
 #if NUMBER_OF_SHADOWS > 1
-  if (s == 1) return litIn(ShadowMap1, ShadowMatrix1, ShadowRange1, p);
+  if (s == 1)
+  {
+    int f = ShadowFaces1 == 6 ? cubeFace(p - ShadowLight1) : 0;
+    return litIn(ShadowMap1, ShadowMatrix1[f], ShadowRange1, p, f, ShadowFaces1);
+  }
 #endif
 #if NUMBER_OF_SHADOWS > 2
-  if (s == 2) return litIn(ShadowMap2, ShadowMatrix2, ShadowRange2, p);
+  if (s == 2)
+  {
+    int f = ShadowFaces2 == 6 ? cubeFace(p - ShadowLight2) : 0;
+    return litIn(ShadowMap2, ShadowMatrix2[f], ShadowRange2, p, f, ShadowFaces2);
+  }
 #endif
 #if NUMBER_OF_SHADOWS > 3
-  if (s == 3) return litIn(ShadowMap3, ShadowMatrix3, ShadowRange3, p);
+  if (s == 3)
+  {
+    int f = ShadowFaces3 == 6 ? cubeFace(p - ShadowLight3) : 0;
+    return litIn(ShadowMap3, ShadowMatrix3[f], ShadowRange3, p, f, ShadowFaces3);
+  }
 #endif
-  return litIn(ShadowMap0, ShadowMatrix0, ShadowRange0, p);
+  int f = ShadowFaces0 == 6 ? cubeFace(p - ShadowLight0) : 0;
+  return litIn(ShadowMap0, ShadowMatrix0[f], ShadowRange0, p, f, ShadowFaces0);
+}
+
+// The march of Wyman & Ramsey over [span.x, span.y] for shadowed light l (a
+// spot light's cone interval, or the whole ray for a point light), in
+// sub-intervals uniform in the angle seen from the light (shadow boundaries
+// are angular there). Each adds w * [Phi(x_k) - Phi(x_k-1)] from the
+// closed-form running integral when a jittered point of it is lit: a fully
+// lit ray telescopes to the unshadowed result. `exponent` 0: w = 1.
+vec3 shadowedMarch(vec3 o, vec3 r, vec2 span, float tc, float h, int l, float exponent)
+{
+  vec3 L = LightPosition[l];
+  float th0 = atan(span.x - tc, h);
+  float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
+  int spotSteps = exponent == 0.0 ? 1 : min(SpotSteps * int(ceil(sqrt(max(exponent, 2.0) / 2.0))), 256);
+  int steps = max(ShadowSteps, spotSteps);
+  float dth = (th1 - th0) / float(steps);
+  // Interleaved gradient noise: a per-pixel offset of the lit test in each step.
+  float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+  vec3 footPhi = tc > 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
+  float tStart = max(-tc, 0.0);
+  vec3 footTail = tailPotential(tStart, h, tStart + tc);
+  vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
+  int s = LightShadow[l];
+  vec3 unit = vec3(0.0);
+  for (int k = 1; k <= steps; ++k)
+  {
+    float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
+    vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
+    float xj = tc + h * tan(th0 + (float(k) - 1.0 + jitter) * dth);
+    if (lit(s, o + xj * r) > 0.0)
+    {
+      float w = 1.0;
+      if (exponent != 0.0)
+      {
+        float thm = th0 + (float(k) - 0.5) * dth;
+        vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
+        w = pow(max(dot(dir, LightAxis[l]), 0.0), exponent);
+      }
+      unit += w * max(phiB - phiA, vec3(0.0));
+    }
+    phiA = phiB;
+  }
+  return unit;
 }
 //PLUME::ENDIF
 
@@ -294,6 +386,13 @@ vec3 march(vec3 o, vec3 r, float xs, int l)
       w = c >= LightCosCone[l] ? pow(max(c, 0.0), LightExponent[l]) : 0.0;
     }
 #endif
+//PLUME::IF SHADOW
+    // A shadowed light: the same shadow map test at every sample.
+    if (LightShadow[l] >= 0 && w > 0.0)
+    {
+      w *= lit(LightShadow[l], o + x * r);
+    }
+//PLUME::ENDIF
     sum += w * exp(-KappaT * (x + d)) / d2;
   }
   return 0.5 * dx * sum;
@@ -337,90 +436,55 @@ void main()
 #ifdef MARCH
     unit = march(o, r, xs, l);
 #else
+    vec2 span = vec2(0.0, xs); // the lit part of the ray: all of it, or a spot's cone interval
+    float exponent = 0.0;
 //PLUME::IF SPOT
     if (LightCosCone[l] > -1.5)
     {
-      vec2 span = coneInterval(o, r, xs, L, LightAxis[l], LightCosCone[l]);
-      if (span.x < span.y)
-      {
-//PLUME::IF SHADOW
-        if (LightShadow[l] >= 0)
-        {
-          // Shadowed: the march of Wyman & Ramsey over the cone's interval, in
-          // sub-intervals uniform in the angle seen from the light (shadow
-          // boundaries are angular there). Each adds w * [Phi(x_k) - Phi(x_k-1)]
-          // from the closed-form running integral when a jittered point of it
-          // is lit: a fully lit ray telescopes to the unshadowed result.
-          float th0 = atan(span.x - tc, h);
-          float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
-          int spotSteps = LightExponent[l] == 0.0 ? 1 :
-            min(SpotSteps * int(ceil(sqrt(max(LightExponent[l], 2.0) / 2.0))), 256);
-          int steps = max(ShadowSteps, spotSteps);
-          float dth = (th1 - th0) / float(steps);
-          // Interleaved gradient noise: a per-pixel offset of the lit test in each step.
-          float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-          vec3 footPhi = tc > 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
-          float tStart = max(-tc, 0.0);
-          vec3 footTail = tailPotential(tStart, h, tStart + tc);
-          vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
-          int s = LightShadow[l];
-          for (int k = 1; k <= steps; ++k)
-          {
-            float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
-            vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
-            float xj = tc + h * tan(th0 + (float(k) - 1.0 + jitter) * dth);
-            float v = lit(s, o + xj * r);
-            if (v > 0.0)
-            {
-              float w = 1.0;
-              if (LightExponent[l] != 0.0)
-              {
-                float thm = th0 + (float(k) - 0.5) * dth;
-                vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
-                w = pow(max(dot(dir, LightAxis[l]), 0.0), LightExponent[l]);
-              }
-              unit += w * max(phiB - phiA, vec3(0.0));
-            }
-            phiA = phiB;
-          }
-        }
-        else
+      span = coneInterval(o, r, xs, L, LightAxis[l], LightCosCone[l]);
+      exponent = LightExponent[l];
+    }
 //PLUME::ENDIF
-        if (LightExponent[l] == 0.0)
+    if (span.x < span.y)
+    {
+//PLUME::IF SHADOW
+      if (LightShadow[l] >= 0)
+      {
+        unit = shadowedMarch(o, r, span, tc, h, l, exponent);
+      }
+      else
+//PLUME::ENDIF
+      if (exponent == 0.0)
+      {
+        unit = segment(span.x, span.y, tc, h);
+      }
+//PLUME::IF SPOT
+      else
+      {
+        // Sub-intervals uniform in the angle theta = atan(t/h) seen from the
+        // light; each weighted by pow(cos angle to the axis) at its middle.
+        float th0 = atan(span.x - tc, h);
+        float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
+        // The weight's angular width shrinks as 1/sqrt(exponent): SpotSteps
+        // sub-intervals per unit of sqrt(exponent / 2), at most 256.
+        int steps = min(SpotSteps * int(ceil(sqrt(max(exponent, 2.0) / 2.0))), 256);
+        float dth = (th1 - th0) / float(steps);
+        vec3 footPhi = tc > 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
+        float tStart = max(-tc, 0.0);
+        vec3 footTail = tailPotential(tStart, h, tStart + tc);
+        vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
+        for (int k = 1; k <= steps; ++k)
         {
-          unit = segment(span.x, span.y, tc, h);
-        }
-        else
-        {
-          // Sub-intervals uniform in the angle theta = atan(t/h) seen from the
-          // light; each weighted by pow(cos angle to the axis) at its middle.
-          float th0 = atan(span.x - tc, h);
-          float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
-          // The weight's angular width shrinks as 1/sqrt(exponent): SpotSteps
-          // sub-intervals per unit of sqrt(exponent / 2), at most 256.
-          int steps = min(SpotSteps * int(ceil(sqrt(max(LightExponent[l], 2.0) / 2.0))), 256);
-          float dth = (th1 - th0) / float(steps);
-          vec3 footPhi = tc > 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
-          float tStart = max(-tc, 0.0);
-          vec3 footTail = tailPotential(tStart, h, tStart + tc);
-          vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
-          for (int k = 1; k <= steps; ++k)
-          {
-            float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
-            float thm = th0 + (float(k) - 0.5) * dth;
-            vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
-            float w = pow(max(dot(dir, LightAxis[l]), 0.0), LightExponent[l]);
-            vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
-            unit += w * max(phiB - phiA, vec3(0.0));
-            phiA = phiB;
-          }
+          float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
+          float thm = th0 + (float(k) - 0.5) * dth;
+          vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
+          float w = pow(max(dot(dir, LightAxis[l]), 0.0), exponent);
+          vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
+          unit += w * max(phiB - phiA, vec3(0.0));
+          phiA = phiB;
         }
       }
-    }
-    else
 //PLUME::ENDIF
-    {
-      unit = segment(0.0, xs, tc, h);
     }
 #endif
     airlight += min(KappaS * LightI0[l] * INV_2PI * unit, vec3(HUGE));

@@ -214,15 +214,15 @@ struct Scene
       v = std::min(std::max(v, 0.0f), 1.0f);
     }
     FloatImage out = plain;
+    if (airlight)
+    {
+      *airlight = plain; // the same rays' airlight alone (surfaces black)
+    }
     ref->ComputeImage(this->Renderer, plain.Width, plain.Height, surface.data(), plain.Depth.data(),
-      out.RGBA, stride);
+      out.RGBA, stride, airlight ? &airlight->RGBA : nullptr);
     clamp(out);
     if (airlight)
     {
-      *airlight = plain;
-      std::vector<float> black(plain.RGBA.size(), 0.0f);
-      ref->ComputeImage(this->Renderer, plain.Width, plain.Height, black.data(), plain.Depth.data(),
-        airlight->RGBA, stride);
       clamp(*airlight);
     }
     return out;
@@ -304,6 +304,65 @@ inline void Print(const char* what, const Error& e)
 {
   std::cout << what << ": RMS " << 100 * e.RMS << " %, max " << 100 * e.Max << " % (at " << e.MaxX << ", "
             << e.MaxY << ") of the airlight range " << e.Range << " over " << e.Pixels << " pixels\n";
+}
+
+// Splits a comparison into pixels near a shadow boundary of the reference
+// (its shadow, refLit - ref, changes by > 2 % of the range to a neighbour) and the others.
+struct EdgeSplit
+{
+  airtest::Error Inner, Edge;
+  size_t EdgePixels = 0;
+};
+
+// Splits the comparison into pixels near a shadow boundary and the others.
+inline EdgeSplit CompareAwayFromEdges(const airtest::FloatImage& image, const airtest::FloatImage& ref,
+  const airtest::FloatImage& refLit, const airtest::FloatImage& air, int stride)
+{
+  const int w = image.Width, h = image.Height;
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (size_t p = 0; p < static_cast<size_t>(w) * h; ++p)
+  {
+    for (int c = 0; c < 3 && !std::isnan(air.RGBA[4 * p]); ++c)
+    {
+      lo = std::min(lo, double(air.RGBA[4 * p + c]));
+      hi = std::max(hi, double(air.RGBA[4 * p + c]));
+    }
+  }
+  const double range = hi - lo;
+  auto shadow = [&](int i, int j, int c) {
+    const size_t p = static_cast<size_t>(j) * w + i;
+    return double(refLit.RGBA[4 * p + c]) - ref.RGBA[4 * p + c];
+  };
+  airtest::FloatImage inner = ref, edge = ref;
+  EdgeSplit split;
+  for (int j = 0; j < h; j += stride)
+  {
+    for (int i = 0; i < w; i += stride)
+    {
+      bool isEdge = false;
+      for (int dj = -stride; dj <= stride && !isEdge; dj += stride)
+      {
+        for (int di = -stride; di <= stride && !isEdge; di += stride)
+        {
+          const int a = i + di, b = j + dj;
+          if (a < 0 || b < 0 || a >= w || b >= h)
+          {
+            continue;
+          }
+          for (int c = 0; c < 3; ++c)
+          {
+            isEdge = isEdge || std::fabs(shadow(a, b, c) - shadow(i, j, c)) > 0.02 * range;
+          }
+        }
+      }
+      const size_t p = static_cast<size_t>(j) * w + i;
+      (isEdge ? inner : edge).RGBA[4 * p] = std::numeric_limits<float>::quiet_NaN();
+      split.EdgePixels += isEdge;
+    }
+  }
+  split.Inner = airtest::Compare(image, inner, air);
+  split.Edge = airtest::Compare(image, edge, air);
+  return split;
 }
 }
 

@@ -1,0 +1,141 @@
+// Numeric test (no baseline) of vtkPlumeAirlightPass's shadows for point
+// lights (a cube shadow map: six world-axis faces in a 3 x 2 atlas) against
+// the independent vtkPlumeAirlightReference with exact ray-cast shadows:
+// 1. a point light under the ceiling above a plate, in a room with a box and
+//    a sphere: shadows on all sides of the light (several cube faces seen).
+//    Goal: RMS <= 0.5 % and max <= 2 % of the airlight range away from
+//    shadow-edge pixels; edge pixels reported separately, bounded loosely;
+//    the shaft under the plate darkens the same pixels as in the reference.
+// 2. the cube map is rebuilt only when the light or the geometry changes.
+// 3. lit rays: a point light over a bare floor, shadows on equal shadows off.
+// 4. more lights needing shadows than MaximumShadowedLights: the rest are
+//    counted as unshadowed (and a warning names the numbers), no GL error.
+#include "plumeAirlightTestUtil.h"
+
+int TestAirlightPointShadow(int, char*[])
+{
+  int failures = 0;
+  const int W = 80, H = 60, stride = 3;
+
+  // 1. A point light above a plate: shafts of shadow under the plate, the box and the sphere.
+  {
+    airtest::Scene s(W, H);
+    s.AddRoom();
+    vtkActor* plate = s.AddBox(-0.7, 0.5, 2.5, 2.6, -2.1, -0.9, 0.9, 0.9, 0.8);
+    vtkLight* light = s.AddPointLight(-0.1, 3.4, -1.5, 1.0, 0.9, 0.75, 1.0);
+    s.Pass->SetScattering(0.22, 0.2, 0.18);
+    s.Pass->SetAbsorption(0.02, 0.03, 0.05);
+    s.Pass->SetIntensityScale(30.0);
+    s.Camera(2.5, 1.6, 5.5, -0.3, 1.4, -1.5);
+
+    const airtest::FloatImage plain = s.RenderFloat(nullptr);
+    s.Pass->ShadowsOff();
+    const airtest::FloatImage refLit = s.Reference(plain, stride, nullptr, false);
+    const airtest::FloatImage lit = s.RenderFloat(s.Pass);
+    PLUME_CHECK(s.Pass->GetNumberOfShadowedLights() == 0);
+    s.Pass->ShadowsOn();
+    airtest::FloatImage air;
+    const airtest::FloatImage ref = s.Reference(plain, stride, &air, false);
+    const airtest::FloatImage image = s.RenderFloat(s.Pass);
+    PLUME_CHECK(s.Pass->GetNumberOfShadowedLights() == 1);
+    PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
+    PLUME_CHECK(!plume::test::HasNonFinite(image));
+    airtest::Dump(image, "point shadow pass");
+    airtest::Dump(ref, "point shadow reference");
+    airtest::Dump(lit, "point shadow unshadowed pass");
+
+    const airtest::Error all = airtest::Compare(image, ref, air);
+    airtest::Print("shadowed point light, all pixels", all);
+    const airtest::EdgeSplit split = airtest::CompareAwayFromEdges(image, ref, refLit, air, stride);
+    airtest::Print("shadowed point light, away from shadow edges", split.Inner);
+    airtest::Print("shadowed point light, shadow-edge pixels", split.Edge);
+    std::cout << "edge pixels: " << split.EdgePixels << " of " << all.Pixels << "\n";
+    PLUME_CHECK(split.Inner.Range > 0.3);
+    PLUME_CHECK(split.Inner.RMS <= 0.005);
+    PLUME_CHECK(split.Inner.Max <= 0.02);
+    PLUME_CHECK(split.EdgePixels < all.Pixels / 5);
+    PLUME_CHECK(split.Edge.RMS <= 0.05); // aliasing of the map and the march, bounded loosely
+
+    // The shafts: darker in the pass where the reference is darker.
+    size_t darker = 0, refDarker = 0, brighter = 0;
+    double maxDark = 0, maxRefDark = 0;
+    for (size_t p = 0; p < static_cast<size_t>(W) * H; ++p)
+    {
+      if (std::isnan(ref.RGBA[4 * p]))
+      {
+        continue;
+      }
+      const double d = double(lit.RGBA[4 * p]) - image.RGBA[4 * p];
+      const double dr = double(refLit.RGBA[4 * p]) - ref.RGBA[4 * p];
+      darker += d > 0.02 * all.Range;
+      refDarker += dr > 0.02 * all.Range;
+      maxDark = std::max(maxDark, d);
+      maxRefDark = std::max(maxRefDark, dr);
+      brighter += d < -0.002 * all.Range;
+    }
+    std::cout << "shafts: " << darker << " pixels darker by > 2 % (reference " << refDarker << "), "
+              << brighter << " brighter; largest darkening " << maxDark << " (reference " << maxRefDark
+              << ")\n";
+    PLUME_CHECK(refDarker >= 20);
+    PLUME_CHECK(darker + 4 >= refDarker && darker <= refDarker + 4);
+    PLUME_CHECK(std::fabs(maxDark - maxRefDark) <= 0.05 * maxRefDark);
+    PLUME_CHECK(brighter == 0);
+
+    // 2. Rebuilt only on change: not for a new frame, medium or eye; for a moved occluder or light.
+    s.RenderAirlight();
+    const int bakes = s.Pass->GetNumberOfShadowMapBakes();
+    s.RenderAirlight();
+    s.Pass->SetScattering(0.3, 0.3, 0.3);
+    s.Camera(2.0, 1.5, 5.0, -0.3, 1.4, -1.5);
+    s.RenderAirlight();
+    std::cout << "bakes: " << bakes << " then " << s.Pass->GetNumberOfShadowMapBakes() << "\n";
+    PLUME_CHECK(s.Pass->GetNumberOfShadowMapBakes() == bakes);
+    plate->SetPosition(0.1, 0, 0);
+    s.RenderAirlight();
+    PLUME_CHECK(s.Pass->GetNumberOfShadowMapBakes() == bakes + 1);
+    light->SetPosition(0.0, 3.3, -1.5);
+    s.RenderAirlight();
+    PLUME_CHECK(s.Pass->GetNumberOfShadowMapBakes() == bakes + 2);
+    PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
+  }
+
+  // 3. Lit rays: a bare floor under a point light; every point above it is lit.
+  {
+    airtest::Scene s(W, H);
+    s.AddBox(-5, 5, -0.1, 0, -4, 4, 0.6, 0.6, 0.55);
+    s.AddPointLight(0.5, 2.5, -1.0, 1.0, 0.9, 0.8, 1.0);
+    s.Pass->SetScattering(0.2, 0.2, 0.2);
+    s.Pass->SetIntensityScale(20.0);
+    s.Camera(1.5, 1.5, 5.0, 0.0, 1.2, -2.0);
+    const airtest::FloatImage off = s.RenderFloat(s.Pass);
+    s.Pass->ShadowsOn();
+    const airtest::FloatImage on = s.RenderFloat(s.Pass);
+    PLUME_CHECK(s.Pass->GetNumberOfShadowedLights() == 1);
+    const airtest::Error e = airtest::Compare(on, off, off);
+    airtest::Print("point light, fully lit, shadows on vs off", e);
+    PLUME_CHECK(e.Range > 0.3);
+    PLUME_CHECK(e.Max <= 1e-4);
+  }
+
+  // 4. Six lights needing shadows: four are shadowed, two are not (and said so).
+  {
+    airtest::Scene s(48, 36);
+    s.AddRoom();
+    for (int k = 0; k < 6; ++k)
+    {
+      s.AddPointLight(-2.5 + k, 3.0, -1.0, 0.3, 0.3, 0.3, 1.0);
+    }
+    s.Pass->ShadowsOn();
+    s.Pass->SetScattering(0.2, 0.2, 0.2);
+    s.Pass->SetIntensityScale(10.0);
+    s.Camera(1.5, 1.5, 5.0, 0.0, 1.2, -2.0);
+    const airtest::FloatImage image = s.RenderFloat(s.Pass);
+    std::cout << "6 lights: " << s.Pass->GetNumberOfShadowedLights() << " shadowed, "
+              << s.Pass->GetNumberOfUnshadowedLights() << " unshadowed\n";
+    PLUME_CHECK(s.Pass->GetNumberOfShadowedLights() == vtkPlumeAirlightPass::MaximumShadowedLights);
+    PLUME_CHECK(s.Pass->GetNumberOfUnshadowedLights() == 6 - vtkPlumeAirlightPass::MaximumShadowedLights);
+    PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
+    PLUME_CHECK(!plume::test::HasNonFinite(image));
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
