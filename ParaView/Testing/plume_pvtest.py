@@ -1,0 +1,119 @@
+"""Shared by the plugin's pvbatch tests (run by scripts/test-paraview.sh).
+
+Environment: PLUME_PLUGIN (the built PlumeParaView.so), PLUME_DATA_DIR,
+PLUME_TEST_OUT (rendered images go there), PLUME_BASELINES.
+"""
+import os
+import sys
+import time
+
+import numpy as np
+from PIL import Image
+
+from paraview import simple
+from paraview.modules.vtkRemotingCore import vtkProcessModule
+
+SIZE = [400, 300]
+OUT = os.environ.get("PLUME_TEST_OUT", ".")
+BASELINES = os.environ.get("PLUME_BASELINES", os.path.join(os.path.dirname(__file__), "Baseline"))
+DATA = os.environ.get("PLUME_DATA_DIR", "/work/shared/data")
+
+
+def rank():
+    return vtkProcessModule.GetProcessModule().GetPartitionId()
+
+
+def ranks():
+    return vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+
+
+def log(*args):
+    if rank() == 0:
+        print(*args, flush=True)
+
+
+def load_plugin():
+    simple.LoadPlugin(os.environ["PLUME_PLUGIN"], remote=False, ns=globals())
+
+
+def carotid():
+    """Image data 76x49x45: point arrays 'scalars' (0-580) and 'vectors' (|v| 0-22.7)."""
+    return simple.LegacyVTKReader(FileNames=[os.path.join(DATA, "classic", "carotid.vtk")])
+
+
+def view(camera=None):
+    v = simple.CreateView("RenderView")
+    v.ViewSize = SIZE
+    v.OrientationAxesVisibility = 0
+    v.Background = [0.32, 0.34, 0.43]
+    try:
+        v.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    v.CameraPosition = [60, 40, 110]
+    v.CameraFocalPoint = [137.5, 104, 23]
+    v.CameraViewUp = [0, 0, 1]
+    v.CameraParallelProjection = 0
+    v.CameraViewAngle = 30
+    return v
+
+
+def render_image(v):
+    """The view's image as an HxWx3 uint8 array (every rank renders; rank 0's is the composite)."""
+    simple.Render(v)
+    image = v.CaptureImage(1) if hasattr(v, "CaptureImage") else None
+    if image is None:
+        path = os.path.join(OUT, "_capture_%d.png" % rank())
+        simple.SaveScreenshot(path, v, ImageResolution=SIZE)
+        return np.asarray(Image.open(path).convert("RGB"))
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    dims = image.GetDimensions()
+    arr = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(dims[1], dims[0], -1)[::-1, :, :3]
+    return np.ascontiguousarray(arr)
+
+
+def screenshot(v, name):
+    path = os.path.join(OUT, name + ".png")
+    simple.SaveScreenshot(path, v, ImageResolution=SIZE)
+    return np.asarray(Image.open(path).convert("RGB")), path
+
+
+def compare(a, b, levels=1, fraction=0.995):
+    """(ok, share of pixels within `levels` 8-bit levels in every channel, max difference)."""
+    diff = np.abs(a.astype(np.int32) - b.astype(np.int32)).max(axis=2)
+    share = float((diff <= levels).mean())
+    return share >= fraction, share, int(diff.max())
+
+
+def check_baseline(image, name, levels=2, fraction=0.995):
+    """Compares with Baseline/<name>.png; writes the rendered image next to the test output."""
+    rendered = os.path.join(OUT, name + ".png")
+    Image.fromarray(image).save(rendered)
+    baseline = os.path.join(BASELINES, name + ".png")
+    if not os.path.exists(baseline):
+        print("no baseline %s (rendered: %s)" % (baseline, rendered))
+        return False
+    ref = np.asarray(Image.open(baseline).convert("RGB"))
+    if ref.shape != image.shape:
+        print("baseline %s is %s, rendered %s" % (baseline, ref.shape, image.shape))
+        return False
+    ok, share, worst = compare(image, ref, levels, fraction)
+    print("%s: %.3f %% of pixels within %d levels of the baseline (max difference %d)" %
+          (name, 100 * share, levels, worst))
+    return ok
+
+
+def not_blank(image, background, minimum=0.02):
+    """Share of pixels that differ from the background (the representation drew something)."""
+    bg = np.array([round(255 * c) for c in background])
+    drawn = np.abs(image.astype(np.int32) - bg).max(axis=2) > 8
+    return float(drawn.mean())
+
+
+def finish(ok):
+    sys.stdout.flush()
+    if not ok:
+        print("FAILED")
+        sys.exit(1)
+    print("OK")

@@ -1,0 +1,70 @@
+"""The scene of each representation test, shared by the serial tests and the
+2-rank MPI test (which renders the same scenes with the data distributed).
+
+Each function builds its pipeline from `source` (a reader of carotid.vtk's
+image data; in the MPI test a parallel reader that gives each rank a slab),
+shows it in `v` and returns the representation.
+"""
+from paraview import simple
+
+
+def volume(source, v):
+    rep = simple.Show(source, v)
+    rep.Representation = "Plume Volume"
+    simple.ColorBy(rep, ("POINTS", "scalars"))
+    lut = simple.GetColorTransferFunction("scalars")
+    lut.ApplyPreset("Cool to Warm", True)
+    lut.RescaleTransferFunction(0.0, 580.0)
+    pwf = simple.GetOpacityTransferFunction("scalars")
+    pwf.Points = [0.0, 0.0, 0.5, 0.0, 100.0, 0.0, 0.5, 0.0, 580.0, 0.6, 0.5, 0.0]
+    pwf.RescaleTransferFunction(0.0, 580.0)
+    rep.ScalarOpacityUnitDistance = 2.0
+    return rep
+
+
+def sheet(source, v, redistribute=False):
+    contour = simple.Contour(Input=source, ContourBy=["POINTS", "scalars"], Isosurfaces=[120.0])
+    src = contour
+    if redistribute:
+        red = simple.RedistributeDataSet(Input=contour)
+        src = simple.ExtractSurface(Input=red)
+    rep = simple.Show(src, v)
+    rep.Representation = "Plume Smoke Sheet"
+    simple.ColorBy(rep, None)
+    rep.PlumeSheetDensity = 0.08
+    rep.PlumeSheetBlurRadius = 0.5
+    rep.PlumeSheetThickness = 0.5
+    return rep
+
+
+def lines(source, v):
+    rep = simple.Show(source, v)
+    rep.Representation = "Plume Velocity Lines"
+    simple.ColorBy(rep, ("POINTS", "vectors", "Magnitude"))
+    lut = simple.GetColorTransferFunction("vectors")
+    lut.ApplyPreset("Viridis (matplotlib)", True)
+    lut.RescaleTransferFunction(0.0, 20.0)
+    # A lattice (every 3rd node) is the same set of roots however the grid is split.
+    rep.PlumeLinesRootMode = "lattice"
+    rep.PlumeLinesLatticeStride = 3
+    rep.PlumeLinesScale = 0.25
+    return rep
+
+
+def splat(source, v):
+    seeds = simple.PointSource(Center=[137.5, 104.0, 23.0], Radius=12.0, NumberOfPoints=60)
+    tracer = simple.StreamTracerWithCustomSource(Input=source, SeedSource=seeds)
+    tracer.Vectors = ["POINTS", "vectors"]
+    tracer.MaximumStreamlineLength = 100.0
+    splatter = simple.PlumeGaussianSplat(Input=tracer, Lines=tracer)
+    splatter.Mode = "density"  #: the lines' lengths and the points
+    splatter.Radius = 1.0
+    splatter.Dimensions = [72, 48, 44]
+    rep = simple.Show(splatter, v)
+    rep.Representation = "Plume Volume"
+    simple.ColorBy(rep, ("POINTS", "density"))
+    lut = simple.GetColorTransferFunction("density")
+    lut.ApplyPreset("Inferno (matplotlib)", True)
+    simple.GetOpacityTransferFunction("density")
+    rep.RescaleTransferFunctionToDataRange(True, False)
+    return rep
