@@ -31,7 +31,9 @@ exec unshare --mount --propagation private -- bash -c '
     mount --rbind "$1" "$pvroot$1"
     shift
   done
-  mkdir -p "$pvroot/tmp"; chmod 1777 "$pvroot/tmp"
+  # The host /tmp: X servers listen on abstract sockets shared with the
+  # host, so xvfb-run -a must see the host display locks to pick a free one.
+  mount --rbind /tmp "$pvroot/tmp"
   exec chroot "$pvroot" /usr/bin/env -i HOME=/root PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin \
     LANG=C.UTF-8 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "$@"
 ' _ "$pvroot" "${#binds[@]}" "${binds[@]}" "$@"

@@ -23,6 +23,12 @@ packages=(
   libglm-dev nlohmann-json3-dev libcli11-dev libopenexr-dev libhypre-dev libeigen3-dev
   xvfb xauth libgl1-mesa-dri                   # headless rendering (llvmpipe)
   openmpi-bin python3-numpy python3-pil        # mpirun, image comparison in the tests
+  # What ParaView's CMake package finds whenever it is loaded (paraview-dev
+  # does not depend on them): X11, image/compression/IO libraries, GL, MPI's
+  # Python, double-conversion.
+  libx11-dev libxt-dev libpng-dev libtiff-dev libjpeg-dev libfreetype-dev libexpat1-dev liblz4-dev
+  liblzma-dev zlib1g-dev libxml2-dev libhdf5-dev libnetcdf-dev libtheora-dev libgl2ps-dev libglew-dev
+  libgl-dev libutfcpp-dev python3-dev python3-mpi4py libdouble-conversion-dev libboost-dev
 )
 stamp="$pvroot/.plume-packages"
 want="$(printf '%s\n' "${packages[@]}" | sort)"
@@ -47,7 +53,6 @@ if [ ! -x "$pvroot/usr/bin/apt-get" ]; then
   log "debootstrap bookworm into $pvroot"
   rm -rf "$pvroot.tmp"
   mkdir -p "$(dirname "$pvroot")"
-  # The host's downloaded .debs seed the root's cache (saves downloads).
   debootstrap --variant=minbase bookworm "$pvroot.tmp" "$mirror" >&2
   mv "$pvroot.tmp" "$pvroot"
 fi

@@ -178,7 +178,8 @@ void WriteProperty(std::ostream& os, const Table::Parameter& p)
       }
       os << "/>\n" << doc << "      </DoubleVectorProperty>\n";
       os << "      <DoubleVectorProperty name=\"" << name << "Info\" command=\"Get" << name
-         << "\" information_only=\"1\" number_of_elements=\"3\"><SimpleDoubleInformationHelper/>"
+         << "\" information_only=\"1\" number_of_elements=\"3\" default_values=\"0 0 0\">"
+            "<SimpleDoubleInformationHelper/>"
             "</DoubleVectorProperty>\n";
       break;
     }
@@ -286,9 +287,6 @@ const char* ColorArrayProperty = R"(      <StringVectorProperty name="ColorArray
         <ArrayListDomain name="array_list" attribute_type="Scalars" input_domain_name="input_array">
           <RequiredProperties><Property name="Input" function="Input"/></RequiredProperties>
         </ArrayListDomain>
-        <FieldDataDomain name="field_list" disable_update_domain_entries="1" force_point_cell_data="1">
-          <RequiredProperties><Property name="Input" function="Input"/></RequiredProperties>
-        </FieldDataDomain>
         <Documentation>The array coloured (and, for the volume, rendered).</Documentation>
       </StringVectorProperty>
       <ProxyProperty name="LookupTable" command="SetLookupTable">

@@ -122,10 +122,22 @@ cases = [
 for source, text, subproxy, prefix in cases:
     rep = simple.Show(source, v)
     rep.Representation = text
-    mapper = rep.SMProxy.GetSubProxy(subproxy).GetSubProxy("Mapper")
-    if mapper is None:
-        fail("%s: no Mapper subproxy" % text)
+    # The exposed properties are the mapper proxy's own objects: their parent
+    # is the mapper's proxy (GetSubProxy is not public in Python).
+    anchor = None
+    it = rep.SMProxy.NewPropertyIterator()
+    it.Begin()
+    while not it.IsAtEnd():
+        if it.GetKey().startswith(prefix) and it.GetProperty().GetParent() is not None:
+            parent = it.GetProperty().GetParent()
+            if parent.GetXMLGroup() == "plume_mappers":
+                anchor = parent
+                break
+        it.Next()
+    if anchor is None:
+        fail("%s: no property of a plume_mappers proxy exposed with prefix %s" % (text, prefix))
         continue
+    mapper = anchor
 
     def set_on_rep(name, value, rep=rep, prefix=prefix):
         exposed = prefix + name
@@ -139,7 +151,7 @@ for source, text, subproxy, prefix in cases:
     simple.Render(v)
     simple.Hide(source, v)
 
-splat = simple.PlumeGaussianSplat(Input=src)
+splat = simple.PlumeGaussianSplat(Input=contour)
 
 
 def set_on_filter(name, value):

@@ -33,7 +33,7 @@ def log(*args):
 
 
 def load_plugin():
-    simple.LoadPlugin(os.environ["PLUME_PLUGIN"], remote=False, ns=globals())
+    simple.LoadPlugin(os.environ["PLUME_PLUGIN"], remote=False)
 
 
 def carotid():
@@ -112,8 +112,14 @@ def not_blank(image, background, minimum=0.02):
 
 
 def finish(ok):
-    sys.stdout.flush()
     if not ok:
-        print("FAILED")
-        sys.exit(1)
-    print("OK")
+        print("FAILED", flush=True)
+        # sys.exit inside pvbatch crashes its finalization (SIGSEGV, measured):
+        # leave with the status directly.
+        sys.stdout.flush()
+        sys.stderr.flush()
+        import ctypes
+
+        ctypes.CDLL(None).fflush(None)  # pvbatch prints through C stdio
+        os._exit(1)
+    print("OK", flush=True)

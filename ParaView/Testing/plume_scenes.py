@@ -23,7 +23,7 @@ def volume(source, v):
 
 
 def sheet(source, v, redistribute=False):
-    contour = simple.Contour(Input=source, ContourBy=["POINTS", "scalars"], Isosurfaces=[120.0])
+    contour = simple.Contour(Input=source, ContourBy=["POINTS", "scalars"], Isosurfaces=[190.0])
     src = contour
     if redistribute:
         red = simple.RedistributeDataSet(Input=contour)
@@ -31,9 +31,10 @@ def sheet(source, v, redistribute=False):
     rep = simple.Show(src, v)
     rep.Representation = "Plume Smoke Sheet"
     simple.ColorBy(rep, None)
-    rep.PlumeSheetDensity = 0.08
-    rep.PlumeSheetBlurRadius = 0.5
-    rep.PlumeSheetThickness = 0.5
+    rep.PlumeSheetDensity = 0.15
+    rep.PlumeSheetBlurRadius = 0.6
+    rep.PlumeSheetThickness = 0.6
+    rep.PlumeSheetSmokeColor = [0.95, 0.92, 0.85]
     return rep
 
 
@@ -43,16 +44,18 @@ def lines(source, v):
     simple.ColorBy(rep, ("POINTS", "vectors", "Magnitude"))
     lut = simple.GetColorTransferFunction("vectors")
     lut.ApplyPreset("Viridis (matplotlib)", True)
-    lut.RescaleTransferFunction(0.0, 20.0)
-    # A lattice (every 3rd node) is the same set of roots however the grid is split.
+    lut.RescaleTransferFunction(0.0, 12.0)
+    # Every node of the lattice: the same roots however the grid is split.
     rep.PlumeLinesRootMode = "lattice"
-    rep.PlumeLinesLatticeStride = 3
-    rep.PlumeLinesScale = 0.25
+    rep.PlumeLinesLatticeStride = 1
+    rep.PlumeLinesScale = 0.3
+    rep.PlumeLinesRootAlpha = 0.5
     return rep
 
 
 def splat(source, v):
-    seeds = simple.PointSource(Center=[137.5, 104.0, 23.0], Radius=12.0, NumberOfPoints=60)
+    # Seeds at the common carotid's inflow (z = 1, where |v| > 8).
+    seeds = simple.PointSource(Center=[113.0, 104.0, 2.0], Radius=3.0, NumberOfPoints=80)
     tracer = simple.StreamTracerWithCustomSource(Input=source, SeedSource=seeds)
     tracer.Vectors = ["POINTS", "vectors"]
     tracer.MaximumStreamlineLength = 100.0
