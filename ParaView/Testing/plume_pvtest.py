@@ -50,27 +50,36 @@ def view(camera=None):
         v.UseColorPaletteForBackground = 0
     except AttributeError:
         pass
-    v.CameraPosition = [60, 40, 110]
-    v.CameraFocalPoint = [137.5, 104, 23]
-    v.CameraViewUp = [0, 0, 1]
-    v.CameraParallelProjection = 0
-    v.CameraViewAngle = 30
     return v
 
 
-def render_image(v):
-    """The view's image as an HxWx3 uint8 array (every rank renders; rank 0's is the composite)."""
-    simple.Render(v)
-    image = v.CaptureImage(1) if hasattr(v, "CaptureImage") else None
-    if image is None:
-        path = os.path.join(OUT, "_capture_%d.png" % rank())
-        simple.SaveScreenshot(path, v, ImageResolution=SIZE)
-        return np.asarray(Image.open(path).convert("RGB"))
-    from vtkmodules.util.numpy_support import vtk_to_numpy
+# carotid.vtk's bounds: every scene is framed on them, the same way on every
+# rank and in serial (no reset on the first render, which would use the
+# bounds of what each test shows).
+BOUNDS = [100.0, 175.0, 80.0, 128.0, 1.0, 45.0]
+simple._DisableFirstRenderCameraReset()
 
-    dims = image.GetDimensions()
-    arr = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(dims[1], dims[0], -1)[::-1, :, :3]
-    return np.ascontiguousarray(arr)
+
+def frame(v):
+    center = [(BOUNDS[2 * i] + BOUNDS[2 * i + 1]) / 2 for i in range(3)]
+    v.CameraFocalPoint = center
+    v.CameraPosition = [center[0] - 77.5, center[1] - 64.0, center[2] + 87.0]
+    v.CameraViewUp = [0, 0, 1]
+    v.CameraParallelProjection = 0
+    v.CameraViewAngle = 30
+    v.SMProxy.ResetCamera(BOUNDS)
+
+
+def render_image(v):
+    """The view's image as an HxWx3 uint8 array on rank 0 (the composite of
+    all ranks); None on the other ranks (which take part in the render)."""
+    frame(v)
+    simple.Render(v)
+    path = os.path.join(OUT, "_capture.png")
+    simple.SaveScreenshot(path, v, ImageResolution=SIZE)
+    if rank() != 0:
+        return None
+    return np.asarray(Image.open(path).convert("RGB"))
 
 
 def screenshot(v, name):

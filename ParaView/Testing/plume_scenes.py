@@ -30,7 +30,7 @@ def sheet(source, v, redistribute=False):
         src = simple.ExtractSurface(Input=red)
     rep = simple.Show(src, v)
     rep.Representation = "Plume Smoke Sheet"
-    simple.ColorBy(rep, None)
+    simple.ColorBy(rep, ("POINTS", None))
     rep.PlumeSheetDensity = 0.15
     rep.PlumeSheetBlurRadius = 0.6
     rep.PlumeSheetThickness = 0.6
@@ -49,7 +49,10 @@ def lines(source, v):
     rep.PlumeLinesRootMode = "lattice"
     rep.PlumeLinesLatticeStride = 1
     rep.PlumeLinesScale = 0.3
-    rep.PlumeLinesRootAlpha = 0.5
+    # Opaque lines: ranks are composited by depth, which cannot blend a
+    # translucent root over another rank's lines behind it.
+    rep.PlumeLinesRootAlpha = 1.0
+    rep.PlumeLinesMinimumSpeed = 1.5  # no specks from the still air around the vessels
     return rep
 
 
