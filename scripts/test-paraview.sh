@@ -51,11 +51,12 @@ run_test() {
   local ok=0 attempt
   # A display taken between xvfb-run -a's check and the server's start (other
   # jobs on the machine start X servers too) shows as "bad X server
-  # connection" before the test does anything: that alone is retried.
+  # connection": that alone is retried. Displays from 500 up, away from the
+  # ones other jobs' xvfb-run -a start at (99).
   for attempt in 1 2 3; do
     if in_root env PLUME_PLUGIN="$plugin" PLUME_DATA_DIR="$data" PLUME_TEST_OUT="$out" \
       PLUME_BASELINES="$root/ParaView/Testing/Baseline" \
-      xvfb-run -a -s "-screen 0 1024x768x24" "$@" >"$out/$name.log" 2>&1; then
+      xvfb-run -a -n $((500 + RANDOM % 400)) -s "-screen 0 1024x768x24" "$@" >"$out/$name.log" 2>&1; then
       ok=1
       break
     fi

@@ -7,10 +7,10 @@ rank, through the same reader (PLUME_TEST_OUT/<name>-serial.png).
 
 Distribution: carotid.vtk is written as .vti and read back with the XML
 image reader, which gives each rank a slab of the grid (image data stays
-image data; the volume and the lines need images). The smoke sheet's
-contour is in addition redistributed by RedistributeDataSet (and turned back
-into polygons by ExtractSurface). Each rank must really hold part of the
-data: checked.
+image data; the volume and the lines need images); the smoke sheet is the
+contour of each rank's slab. RedistributeDataSet is not used: in this
+ParaView root its transfers (VTK XML with appended data) fail to parse.
+Each rank must really hold part of the data: checked.
 """
 import os
 import sys
