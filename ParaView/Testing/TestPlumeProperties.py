@@ -3,12 +3,17 @@
 For each Plume representation (through ParaView's composite representation,
 as a user sets it: rep.PlumeVolumeSampleDistance = ...) and for the Gaussian
 Splat filter, for every property generated from the class's parameter table:
- 1. before anything is set, the C++ getter (read back through the
-    property's information-only twin "<Name>Info") equals the XML default:
-    the XML's defaults are the class's;
+ 1. after creation the C++ getter (read back through the property's
+    information-only twin "<Name>Info") equals the XML default. ParaView
+    pushes the XML defaults into the new object, so this checks the push and
+    the read-back, not that the XML defaults are the class's (measured: with
+    halved XML defaults it still passes). That is guaranteed elsewhere: the
+    XML is generated from the table, and Plume.ParameterTables.MatchClasses
+    checks each class (the splatter too) against its table;
  2. after setting a value different from the default (within the range,
     another enumeration entry, the other boolean, a new string), the C++
-    getter returns exactly that value.
+    getter returns exactly that value (fails when the XML's command does not
+    reach the setter: checked by generating Modified as the reals' command).
 Also checks that each representation exposes every property of its mapper
 proxy (nothing of the table is missing from the panel).
 """
