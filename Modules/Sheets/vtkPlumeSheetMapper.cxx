@@ -727,7 +727,7 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
       composite->SetUniform2f("ViewportOrigin", origin);
       if (pass == 0)
       {
-        state->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
+        state->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
       }
       else
       {

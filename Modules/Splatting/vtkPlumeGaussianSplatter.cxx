@@ -1,6 +1,7 @@
 #include "vtkPlumeGaussianSplatter.h"
 
 #include "vtkPlumeInputValidation.h"
+#include "vtkPlumeParameterTable.h"
 
 #include "plumeSplatCPU.h"
 #include "plumeSplatGPU.h"
@@ -87,6 +88,69 @@ vtkPlumeGaussianSplatter::vtkPlumeGaussianSplatter()
   // backend wins at every size measured, so AUTO only picks the GPU above a
   // job no benchmark reached.
   this->AutoGPUThreshold = 1e30;
+  GetParameterTable().ApplyDefaults(this);
+}
+
+const vtkPlumeParameterTable& vtkPlumeGaussianSplatter::GetParameterTable()
+{
+  static const vtkPlumeParameterTable table = [] {
+    using T = vtkPlumeGaussianSplatter;
+    vtkPlumeParameterTable t("vtkPlumeGaussianSplatter", "");
+    t.Choice("mode", "Mode", "velocity")
+      .Choice("velocity", VECTOR_SUM, "sum of the points' vectors (line segments: their velocity) times the Gaussian; output 'velocity'")
+      .Choice("density", SCALAR_SUM, "sum of the points' scalars (line segments: their length) times the Gaussian; output 'density'")
+      .Choice("distance", DISTANCE_MAX, "maximum over splats of the scalar times a linear falloff over the radius; output 'distance'")
+      .Panel("Splat")
+      .Doc("What is splatted.")
+      .Bind(&T::SetMode, &T::GetMode);
+    t.Real("radius", "Radius", 0.1)
+      .Between(0.0, 1e30)
+      .Units("world units")
+      .Panel("Splat")
+      .Doc("Splat radius sigma (distance mode: the falloff radius).")
+      .Bind(&T::SetRadius, &T::GetRadius);
+    t.Text("radius_array", "RadiusArrayName", "")
+      .Panel("Splat")
+      .Advanced()
+      .Doc("Point array with a per-point radius; empty or absent: the constant radius.")
+      .Bind(&T::SetRadiusArrayName, &T::GetRadiusArrayName);
+    t.Text("vectors", "VectorArrayName", "")
+      .Panel("Splat")
+      .Doc("Vector array of the points (velocity mode); empty: the active vectors.")
+      .Bind(&T::SetVectorArrayName, &T::GetVectorArrayName);
+    t.Text("scalars", "ScalarArrayName", "")
+      .Panel("Splat")
+      .Doc("Scalar array of the points (density, distance); empty: the active scalars, else 1.")
+      .Bind(&T::SetScalarArrayName, &T::GetScalarArrayName);
+    t.Real("line_scale", "LineScaleFactor", 1.0)
+      .Between(-1e30, 1e30)
+      .Panel("Splat")
+      .Advanced()
+      .Doc("Factor on the line velocities p[i+1] - p[i].")
+      .Bind(&T::SetLineScaleFactor, &T::GetLineScaleFactor);
+    t.Real("cutoff", "CutoffFactor", 4.0)
+      .Between(0.5, 40.0)
+      .Units("standard deviations")
+      .Panel("Accuracy")
+      .Advanced()
+      .Doc("Splats touch voxels within cutoff x sigma per axis (error about exp(-cutoff^2/2) of the peak).")
+      .Bind(&T::SetCutoffFactor, &T::GetCutoffFactor);
+    t.Boolean("integrate_over_voxel", "IntegrateOverVoxel", true)
+      .Panel("Accuracy")
+      .Advanced()
+      .Doc("Average each splat over the voxel (erf) instead of sampling it at the voxel's centre.")
+      .Bind(&T::SetIntegrateOverVoxel, &T::GetIntegrateOverVoxel);
+    t.Choice("backend", "Backend", "auto")
+      .Choice("auto", BACKEND_AUTO, "the backend measured to be faster for the job")
+      .Choice("cpu", BACKEND_CPU, "threads over z-slabs")
+      .Choice("gpu", BACKEND_GPU, "layered instanced rendering into a float 3D texture")
+      .Panel("Accuracy")
+      .Advanced()
+      .Doc("Where the splats are summed (same result within float rounding).")
+      .Bind(&T::SetBackend, &T::GetBackend);
+    return t;
+  }();
+  return table;
 }
 
 vtkPlumeGaussianSplatter::~vtkPlumeGaussianSplatter()

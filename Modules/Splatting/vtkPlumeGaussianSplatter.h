@@ -78,6 +78,7 @@
 #include <string> // For std::string
 
 class vtkImageData;
+class vtkPlumeParameterTable;
 class vtkPolyData;
 class vtkRenderWindow;
 
@@ -87,6 +88,15 @@ public:
   static vtkPlumeGaussianSplatter* New();
   vtkTypeMacro(vtkPlumeGaussianSplatter, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+#ifndef __VTK_WRAP__
+  /**
+   * The one declaration of the splatter's user parameters (the ParaView
+   * filter's properties are made from it); the constructor applies its
+   * defaults. Dimensions, ModelBounds and the inputs are not in it.
+   */
+  static const vtkPlumeParameterTable& GetParameterTable();
+#endif
 
   enum Modes
   {

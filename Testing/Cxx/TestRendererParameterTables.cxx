@@ -6,6 +6,7 @@
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeAirlightPass.h"
 #include "vtkPlumePressureSolver.h"
+#include "vtkPlumeGaussianSplatter.h"
 #include "vtkPlumeSheetMapper.h"
 #include "vtkPlumeSmokeSolver.h"
 #include "vtkPlumeVelocityGlyphMapper.h"
@@ -116,6 +117,10 @@ int main()
   {
     vtkNew<vtkPlumeVelocityGlyphMapper> a, b;
     failures += CheckTable(vtkPlumeVelocityGlyphMapper::GetParameterTable(), a, b);
+  }
+  {
+    vtkNew<vtkPlumeGaussianSplatter> a, b; // its table makes the ParaView filter's properties
+    failures += CheckTable(vtkPlumeGaussianSplatter::GetParameterTable(), a, b);
   }
   {
     vtkNew<vtkPlumeAirlightPass> a, b;

@@ -24,7 +24,11 @@ void main()
   vec3 T = exp(-max(tau, vec3(0.0)));
   float Tmean = (T.r + T.g + T.b) / 3.0;
 //PLUME::IF MULTIPLY
-  gl_FragData[0] = vec4(T, Tmean);
+  // Alpha 1 - T (blended as ONE, ONE_MINUS_SRC_ALPHA): the frame's alpha
+  // becomes its coverage, a_dst T + (1 - T), so a frame drawn over a
+  // transparent background (ParaView's ranks before compositing) composites
+  // "over" what lies behind it exactly for grey smoke. Opaque frames keep 1.
+  gl_FragData[0] = vec4(T, 1.0 - Tmean);
 //PLUME::ENDIF
 //PLUME::IF ADD
   gl_FragData[0] = vec4(SmokeColor * (1.0 - T), 1.0 - Tmean);

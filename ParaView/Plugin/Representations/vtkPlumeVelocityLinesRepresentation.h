@@ -1,0 +1,77 @@
+/**
+ * @class   vtkPlumeVelocityLinesRepresentation
+ * @brief   ParaView representation "Plume Velocity Lines": vtkPlumeVelocityGlyphMapper
+ *
+ * Velocity glyph lines and streamlets from a vector field on image data.
+ * Other datasets are first resampled onto a ResampleDimensions image over
+ * their bounds (vtkResampleToImage, as the plume command line does; nodes
+ * outside the data get vtkValidPointMask = 0 and draw nothing).
+ * The mapper is the proxy's "Mapper" subproxy (its properties are generated
+ * from vtkPlumeVelocityGlyphMapper's parameter table).
+ *
+ * Colour: |v| through ParaView's colour map (LookupTable) over the colour
+ * map's own range, so every rank colours alike. Without a colour map the
+ * mapper's default (the data's speed range) is used.
+ *
+ * In parallel each rank draws the glyphs rooted in its piece; the lines are
+ * opaque, so the ranks' images are composited by depth.
+ */
+#ifndef vtkPlumeVelocityLinesRepresentation_h
+#define vtkPlumeVelocityLinesRepresentation_h
+
+#include "PlumeParaViewRepresentationsModule.h" // For export macro
+#include "vtkPVDataRepresentation.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+class vtkActor;
+class vtkImageData;
+class vtkPlumeVelocityGlyphMapper;
+class vtkScalarsToColors;
+
+class PLUMEPARAVIEWREPRESENTATIONS_EXPORT vtkPlumeVelocityLinesRepresentation
+  : public vtkPVDataRepresentation
+{
+public:
+  static vtkPlumeVelocityLinesRepresentation* New();
+  vtkTypeMacro(vtkPlumeVelocityLinesRepresentation, vtkPVDataRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The mapper (the proxy's "Mapper" subproxy sets it). Default: one of its own. */
+  void SetMapper(vtkPlumeVelocityGlyphMapper* mapper);
+  vtkPlumeVelocityGlyphMapper* GetMapper();
+
+  /** ParaView's colour map; nullptr: the mapper's own over the data's speed range. */
+  void SetLookupTable(vtkScalarsToColors* lut);
+
+  ///@{
+  /** Grid for non-image input (resampled onto it). Default 64, 64, 64. */
+  vtkSetVector3Macro(ResampleDimensions, int);
+  vtkGetVector3Macro(ResampleDimensions, int);
+  ///@}
+
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+  void SetVisibility(bool visible) override;
+
+protected:
+  vtkPlumeVelocityLinesRepresentation();
+  ~vtkPlumeVelocityLinesRepresentation() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
+
+  vtkSmartPointer<vtkPlumeVelocityGlyphMapper> Mapper;
+  vtkSmartPointer<vtkActor> Actor;
+  vtkSmartPointer<vtkScalarsToColors> LookupTable;
+  vtkSmartPointer<vtkImageData> Cache;
+  int ResampleDimensions[3] = { 64, 64, 64 };
+  double DataBounds[6];
+
+private:
+  vtkPlumeVelocityLinesRepresentation(const vtkPlumeVelocityLinesRepresentation&) = delete;
+  void operator=(const vtkPlumeVelocityLinesRepresentation&) = delete;
+};
+
+#endif

@@ -1,0 +1,85 @@
+/**
+ * @class   vtkPlumeVolumeRepresentation
+ * @brief   ParaView representation "Plume Volume": vtkPlumeVolumeMapper on image data
+ *
+ * Behaves like ParaView's own "Volume" representation: the colour map
+ * (LookupTable, a vtkColorTransferFunction), the opacity editor's function
+ * (ScalarOpacityFunction) and ScalarOpacityUnitDistance go into the
+ * vtkVolumeProperty the mapper reads, ColorArrayName picks the rendered point
+ * array. The mapper itself is the proxy's "Mapper" subproxy (its properties
+ * are generated from vtkPlumeVolumeMapper's parameter table).
+ *
+ * Input: vtkImageData, or a composite dataset whose leaves are images (each
+ * rank renders its leaf; a rank with several leaves renders the first and
+ * warns). Cells marked as ghosts are cropped away.
+ *
+ * In parallel each rank ray-casts its own piece and ParaView composites the
+ * ranks' images in visibility order (ordered compositing): the
+ * representation asks for it and reports its local bounds, which the render
+ * view sorts front to back. The mapper writes premultiplied colour with
+ * (ONE, ONE_MINUS_SRC_ALPHA), which is what the ordered "over" compositing
+ * expects.
+ */
+#ifndef vtkPlumeVolumeRepresentation_h
+#define vtkPlumeVolumeRepresentation_h
+
+#include "PlumeParaViewRepresentationsModule.h" // For export macro
+#include "vtkPVDataRepresentation.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+class vtkImageData;
+class vtkPiecewiseFunction;
+class vtkPlumeVolumeMapper;
+class vtkScalarsToColors;
+class vtkVolume;
+class vtkVolumeProperty;
+
+class PLUMEPARAVIEWREPRESENTATIONS_EXPORT vtkPlumeVolumeRepresentation : public vtkPVDataRepresentation
+{
+public:
+  static vtkPlumeVolumeRepresentation* New();
+  vtkTypeMacro(vtkPlumeVolumeRepresentation, vtkPVDataRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The mapper (the proxy's "Mapper" subproxy sets it). Default: one of its own. */
+  void SetMapper(vtkPlumeVolumeMapper* mapper);
+  vtkPlumeVolumeMapper* GetMapper();
+
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+  void SetVisibility(bool visible) override;
+
+  /** ParaView's colour map (a vtkColorTransferFunction). */
+  void SetLookupTable(vtkScalarsToColors* lut);
+  /** ParaView's opacity function. */
+  void SetScalarOpacity(vtkPiecewiseFunction* pwf);
+  /** World length over which the opacity function's opacity is reached. Default 1. */
+  void SetScalarOpacityUnitDistance(double distance);
+  /** ColorArrayName: the point array rendered (other associations are ignored). */
+  void SetInputArrayToProcess(int idx, int port, int connection, int fieldAssociation, const char* name) override;
+  using Superclass::SetInputArrayToProcess;
+
+  /** The vtkVolume drawn (tests). */
+  vtkVolume* GetVolume();
+
+protected:
+  vtkPlumeVolumeRepresentation();
+  ~vtkPlumeVolumeRepresentation() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
+
+  vtkSmartPointer<vtkPlumeVolumeMapper> Mapper;
+  vtkSmartPointer<vtkVolume> Volume;
+  vtkSmartPointer<vtkVolumeProperty> Property;
+  vtkSmartPointer<vtkImageData> Cache;
+  double DataBounds[6];
+
+private:
+  vtkPlumeVolumeRepresentation(const vtkPlumeVolumeRepresentation&) = delete;
+  void operator=(const vtkPlumeVolumeRepresentation&) = delete;
+};
+
+#endif

@@ -1,0 +1,76 @@
+"""The scene of each representation test, shared by the serial tests and the
+2-rank MPI test (which renders the same scenes with the data distributed).
+
+Each function builds its pipeline from `source` (a reader of carotid.vtk's
+image data; in the MPI test a parallel reader that gives each rank a slab),
+shows it in `v` and returns the representation.
+"""
+from paraview import simple
+
+
+def volume(source, v):
+    rep = simple.Show(source, v)
+    rep.Representation = "Plume Volume"
+    simple.ColorBy(rep, ("POINTS", "scalars"))
+    lut = simple.GetColorTransferFunction("scalars")
+    lut.ApplyPreset("Cool to Warm", True)
+    lut.RescaleTransferFunction(0.0, 580.0)
+    pwf = simple.GetOpacityTransferFunction("scalars")
+    pwf.Points = [0.0, 0.0, 0.5, 0.0, 100.0, 0.0, 0.5, 0.0, 580.0, 0.6, 0.5, 0.0]
+    pwf.RescaleTransferFunction(0.0, 580.0)
+    rep.ScalarOpacityUnitDistance = 2.0
+    return rep
+
+
+def sheet(source, v, redistribute=False):
+    contour = simple.Contour(Input=source, ContourBy=["POINTS", "scalars"], Isosurfaces=[190.0])
+    src = contour
+    if redistribute:
+        red = simple.RedistributeDataSet(Input=contour)
+        src = simple.ExtractSurface(Input=red)
+    rep = simple.Show(src, v)
+    rep.Representation = "Plume Smoke Sheet"
+    simple.ColorBy(rep, ("POINTS", None))
+    rep.PlumeSheetDensity = 0.15
+    rep.PlumeSheetBlurRadius = 0.6
+    rep.PlumeSheetThickness = 0.6
+    rep.PlumeSheetSmokeColor = [0.95, 0.92, 0.85]
+    return rep
+
+
+def lines(source, v):
+    rep = simple.Show(source, v)
+    rep.Representation = "Plume Velocity Lines"
+    simple.ColorBy(rep, ("POINTS", "vectors", "Magnitude"))
+    lut = simple.GetColorTransferFunction("vectors")
+    lut.ApplyPreset("Viridis (matplotlib)", True)
+    lut.RescaleTransferFunction(0.0, 12.0)
+    # Every node of the lattice: the same roots however the grid is split.
+    rep.PlumeLinesRootMode = "lattice"
+    rep.PlumeLinesLatticeStride = 1
+    rep.PlumeLinesScale = 0.3
+    # Opaque lines: ranks are composited by depth, which cannot blend a
+    # translucent root over another rank's lines behind it.
+    rep.PlumeLinesRootAlpha = 1.0
+    rep.PlumeLinesMinimumSpeed = 1.5  # no specks from the still air around the vessels
+    return rep
+
+
+def splat(source, v):
+    # Seeds at the common carotid's inflow (z = 1, where |v| > 8).
+    seeds = simple.PointSource(Center=[113.0, 104.0, 2.0], Radius=3.0, NumberOfPoints=80)
+    tracer = simple.StreamTracerWithCustomSource(Input=source, SeedSource=seeds)
+    tracer.Vectors = ["POINTS", "vectors"]
+    tracer.MaximumStreamlineLength = 100.0
+    splatter = simple.PlumeGaussianSplat(Input=tracer, Lines=tracer)
+    splatter.Mode = "density"  #: the lines' lengths and the points
+    splatter.Radius = 1.0
+    splatter.Dimensions = [72, 48, 44]
+    rep = simple.Show(splatter, v)
+    rep.Representation = "Plume Volume"
+    simple.ColorBy(rep, ("POINTS", "density"))
+    lut = simple.GetColorTransferFunction("density")
+    lut.ApplyPreset("Inferno (matplotlib)", True)
+    simple.GetOpacityTransferFunction("density")
+    rep.RescaleTransferFunctionToDataRange(True, False)
+    return rep
