@@ -1,13 +1,23 @@
 # Install Plume into a fresh prefix, build Examples/FindPlume against it with
 # find_package(Plume), and run the example.
-#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -P InstallTest.cmake
+#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... [-DWITH_PYTHON=ON]
+#         [-DCONSUMER_ARGS=...] -P InstallTest.cmake
+# CONSUMER_ARGS (a |-separated list) configures the consumer like the libraries: in a
+# sanitizer build, the same compiler and the sanitizer runtime linked first
+# (an unsanitized executable loading ASan-instrumented libraries dies in the
+# runtime's start-up, before any report).
+string(REPLACE "|" ";" CONSUMER_ARGS "${CONSUMER_ARGS}")
 file(REMOVE_RECURSE "${WORK_DIR}")
-foreach (step IN ITEMS install configure build run plume python)
+set(steps install configure build run plume)
+if (WITH_PYTHON)
+  list(APPEND steps python)
+endif ()
+foreach (step IN LISTS steps)
   if (step STREQUAL "install")
     set(cmd "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${WORK_DIR}/prefix")
   elseif (step STREQUAL "configure")
     set(cmd "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/Examples/FindPlume" -B "${WORK_DIR}/build" -G Ninja
-      "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release)
+      "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release ${CONSUMER_ARGS})
   elseif (step STREQUAL "build")
     set(cmd "${CMAKE_COMMAND}" --build "${WORK_DIR}/build")
   elseif (step STREQUAL "run")
