@@ -247,7 +247,8 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
     t.Integer("grid_b", "GridB", 5)
       .Between(1, 32)
       .Panel("Quality")
-      .Doc("Grid cells across the footprint (grid quadrature only).")
+      .Doc("Grid cells across the footprint (grid), or Gauss-Legendre nodes across it per piece where "
+           "sigma varies over a triangle (analytic).")
       .Bind(&T::SetGridB, &T::GetGridB);
     t.Boolean("adaptive_sampling", "AdaptiveSampling", true)
       .Panel("Quality")
@@ -591,17 +592,24 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     .Define("PLUME_SMALL_TRIANGLE", "0.5");
   if (this->Quadrature == QUADRATURE_ANALYTIC)
   {
-    std::vector<double> x, w;
-    GaussLegendre(this->GridA, x, w);
-    std::ostringstream nodes, weights;
-    nodes.precision(9);
-    weights.precision(9);
-    for (int i = 0; i < this->GridA; ++i)
+    // along the footprint (GridA) and across it where the sigmas vary (GridB)
+    const int counts[2] = { this->GridA, this->GridB };
+    const char* names[2][2] = { { "PLUME_GL_NODES", "PLUME_GL_WEIGHTS" },
+      { "PLUME_GLB_NODES", "PLUME_GLB_WEIGHTS" } };
+    for (int q = 0; q < 2; ++q)
     {
-      nodes << (i ? ", " : "") << std::fixed << x[i];
-      weights << (i ? ", " : "") << std::fixed << w[i];
+      std::vector<double> x, w;
+      GaussLegendre(counts[q], x, w);
+      std::ostringstream nodes, weights;
+      nodes.precision(9);
+      weights.precision(9);
+      for (int i = 0; i < counts[q]; ++i)
+      {
+        nodes << (i ? ", " : "") << std::fixed << x[i];
+        weights << (i ? ", " : "") << std::fixed << w[i];
+      }
+      features.Define(names[q][0], nodes.str()).Define(names[q][1], weights.str());
     }
-    features.Define("PLUME_GL_NODES", nodes.str()).Define("PLUME_GL_WEIGHTS", weights.str());
   }
   vtkShaderProgram* program =
     impl.Programs->Ready(renWin, vtkPlumeSheetVS, vtkPlumeSheetGS, vtkPlumeSheetFS, features);
