@@ -166,7 +166,7 @@ bool vtkPlumeSheetDensityGrid::Compute()
   }
   this->SigmaFloor = k * h;
 
-  // ---- quadrature points: sub-triangles no wider than SubTriangleSize x the smallest sigma_b,
+  // ---- quadrature points: pieces no wider than SubTriangleSize x the smallest sigma_b,
   // each contributing its edge midpoints (degree 2)
   const double cutoff2 = this->Cutoff * this->Cutoff;
   std::vector<Source> sources;
@@ -182,18 +182,15 @@ bool vtkPlumeSheetDensityGrid::Compute()
     const glm::dvec3 cr = glm::cross(e1, e2);
     const double area = 0.5 * glm::length(cr);
     const glm::dvec3 n = cr / (2.0 * area);
-    const double edge = std::max({ glm::length(e1), glm::length(e2), glm::length(c[2].P - c[1].P) });
     const double sbMin = std::min({ c[0].SB, c[1].SB, c[2].SB });
-    const int m = static_cast<int>(std::min(512.0, std::max(1.0, std::ceil(edge / (this->SubTriangleSize * sbMin)))));
-    const double w = area / (3.0 * m * m);
-    auto emit = [&](double u, double v) { // barycentric (1 - u - v, u, v)
-      const double l0 = 1.0 - u - v;
+    const double target = this->SubTriangleSize * sbMin;
+    auto emit = [&](const glm::dvec3& l, double w) { // barycentric l, weight w (area)
       Source s;
-      s.P = l0 * c[0].P + u * c[1].P + v * c[2].P;
+      s.P = l.x * c[0].P + l.y * c[1].P + l.z * c[2].P;
       s.N = n;
-      s.M = w * (l0 * c[0].D + u * c[1].D + v * c[2].D);
-      s.SB = l0 * c[0].SB + u * c[1].SB + v * c[2].SB;
-      s.ST = l0 * c[0].ST + u * c[1].ST + v * c[2].ST;
+      s.M = w * (l.x * c[0].D + l.y * c[1].D + l.z * c[2].D);
+      s.SB = l.x * c[0].SB + l.y * c[1].SB + l.z * c[2].SB;
+      s.ST = l.x * c[0].ST + l.y * c[1].ST + l.z * c[2].ST;
       if (!(s.M > 0.0))
       {
         return;
@@ -206,23 +203,40 @@ bool vtkPlumeSheetDensityGrid::Compute()
       }
       sources.push_back(s);
     };
-    const double inv = 1.0 / m;
-    for (int i = 0; i < m; ++i)
+    // longest-edge bisection down to pieces no wider than `target` (a sliver
+    // is cut along its length only: the number of pieces follows its area
+    // over sigma^2, not its length^2), then each piece's edge midpoints
+    struct Piece
     {
-      for (int j = 0; i + j < m; ++j)
+      glm::dvec3 L[3];
+      int Level;
+    };
+    std::vector<Piece> stack = { { { glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1) }, 0 } };
+    while (!stack.empty())
+    {
+      const Piece piece = stack.back();
+      stack.pop_back();
+      glm::dvec3 q[3];
+      for (int k = 0; k < 3; ++k)
       {
-        // upward sub-triangle (i, j), (i+1, j), (i, j+1): its edge midpoints
-        emit((i + 0.5) * inv, j * inv);
-        emit((i + 0.5) * inv, (j + 0.5) * inv);
-        emit(i * inv, (j + 0.5) * inv);
-        if (i + j + 2 <= m)
-        {
-          // downward sub-triangle (i+1, j), (i+1, j+1), (i, j+1)
-          emit((i + 1) * inv, (j + 0.5) * inv);
-          emit((i + 0.5) * inv, (j + 1) * inv);
-          emit((i + 0.5) * inv, (j + 0.5) * inv);
-        }
+        q[k] = piece.L[k].x * c[0].P + piece.L[k].y * c[1].P + piece.L[k].z * c[2].P;
       }
+      const double len[3] = { glm::length(q[1] - q[0]), glm::length(q[2] - q[1]), glm::length(q[0] - q[2]) };
+      const int e = len[0] >= len[1] && len[0] >= len[2] ? 0 : (len[1] >= len[2] ? 1 : 2);
+      if (len[e] <= target || piece.Level >= 24)
+      {
+        const double w = area / double(1 << piece.Level) / 3.0;
+        emit(0.5 * (piece.L[0] + piece.L[1]), w);
+        emit(0.5 * (piece.L[1] + piece.L[2]), w);
+        emit(0.5 * (piece.L[2] + piece.L[0]), w);
+        continue;
+      }
+      const glm::dvec3& u = piece.L[e];
+      const glm::dvec3& v = piece.L[(e + 1) % 3];
+      const glm::dvec3& o = piece.L[(e + 2) % 3];
+      const glm::dvec3 m = 0.5 * (u + v);
+      stack.push_back({ { u, m, o }, piece.Level + 1 });
+      stack.push_back({ { m, v, o }, piece.Level + 1 });
     }
   }
   this->PointCount = static_cast<vtkIdType>(sources.size());

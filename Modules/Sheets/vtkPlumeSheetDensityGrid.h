@@ -11,8 +11,9 @@
  * parameter change and raycast every frame.
  *
  * The triangle integral is a quadrature, not a vertex splat: each triangle is
- * split uniformly into sub-triangles no wider than SubTriangleSize x its
- * smallest sigma_b, and each sub-triangle contributes its three edge midpoints
+ * cut by longest-edge bisection into pieces no wider than SubTriangleSize x
+ * its smallest sigma_b (slivers are cut along their length only), and each
+ * piece contributes its three edge midpoints
  * (degree-2 rule) as Gaussians with the interpolated d and sigmas, evaluated
  * exactly at every node within Cutoff standard deviations (Mahalanobis).
  *
