@@ -466,7 +466,7 @@ std::vector<std::string> OursJobs(bool quick, int size)
   const std::string p = "ours:" + std::to_string(size) + ":";
   if (quick)
   {
-    return { p + "A:8", p + "G:2x1", p + "G:16x10", p + "V:2" };
+    return { p + "A:8", p + "G:2x1", p + "G:16x10", p + "V:0.5" };
   }
   if (size == 512)
   {
