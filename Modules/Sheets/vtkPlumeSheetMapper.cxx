@@ -16,6 +16,14 @@
 #include "vtkPlumeSheetGS.h"
 #include "vtkPlumeSheetVS.h"
 
+#include "vtkPlumeSheetDensityGrid.h"
+#include "vtkPlumeVolumeMapper.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkImageData.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
 #include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -134,6 +142,20 @@ public:
   vtkNew<vtkPlumeShaderProgramCache> Programs;
   bool WarnedCells = false;
 
+  // grid mode: what the grid was computed from, the grid, and its raycaster
+  using GridSignature = std::tuple<vtkPolyData*, vtkMTimeType, std::string, std::string, std::string,
+    std::array<double, 8>>;
+  GridSignature GridFrom;
+  bool HaveGrid = false;
+  bool WarnedAbsorption = false;
+  double GridMaxDensity = 0;
+  vtkNew<vtkPlumeSheetDensityGrid> Grid;
+  vtkNew<vtkPlumeVolumeMapper> GridMapper;
+  vtkNew<vtkVolume> GridVolume;
+  vtkNew<vtkVolumeProperty> GridProperty;
+  vtkNew<vtkPiecewiseFunction> GridOpacity;
+  vtkNew<vtkColorTransferFunction> GridColor;
+
   void ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Buffer->ReleaseGraphicsResources();
@@ -143,6 +165,7 @@ public:
     this->AccumTexture->ReleaseGraphicsResources(window);
     this->FBO->ReleaseGraphicsResources(window);
     this->Programs->ReleaseGraphicsResources(window);
+    this->GridMapper->ReleaseGraphicsResources(window);
     this->VAOProgram = nullptr;
     this->HaveUpload = false;
     this->TargetSize[0] = this->TargetSize[1] = 0;
@@ -247,7 +270,8 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
     t.Integer("grid_b", "GridB", 5)
       .Between(1, 32)
       .Panel("Quality")
-      .Doc("Grid cells across the footprint (grid quadrature only).")
+      .Doc("Grid cells across the footprint (grid), or Gauss-Legendre nodes across it per piece where "
+           "sigma varies over a triangle (analytic).")
       .Bind(&T::SetGridB, &T::GetGridB);
     t.Boolean("adaptive_sampling", "AdaptiveSampling", true)
       .Panel("Quality")
@@ -261,6 +285,30 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
       .Doc("Largest draw call; more triangles are drawn two draws in flight at a time, which bounds "
            "the driver's memory (0: one draw).")
       .Bind(&T::SetMaximumTrianglesPerDraw, &T::GetMaximumTrianglesPerDraw);
+    t.Choice("mode", "RenderMode", "exact")
+      .Choice("exact", RENDER_EXACT, "every triangle integrated along every pixel's ray (reference quality).")
+      .Choice("grid", RENDER_GRID,
+        "the smoke computed once on a grid following sigma, raycast every frame (interactive).")
+      .Panel("Quality")
+      .Doc("How the sheet is rendered.")
+      .Bind(&T::SetRenderMode, &T::GetRenderMode);
+    t.Real("grid_samples_per_sigma", "GridSamplesPerSigma", 2.0)
+      .Between(0.25, 16.0)
+      .Panel("Quality")
+      .Doc("Grid mode: grid nodes per smallest sigma (spacing = sigma / this).")
+      .Bind(&T::SetGridSamplesPerSigma, &T::GetGridSamplesPerSigma);
+    t.Real("grid_sample_distance", "GridSampleDistance", 1.0)
+      .Between(0.05, 16.0)
+      .Units("grid spacings")
+      .Panel("Quality")
+      .Doc("Grid mode: raycast step.")
+      .Bind(&T::SetGridSampleDistance, &T::GetGridSampleDistance);
+    t.Real("grid_maximum_nodes", "GridMaximumNodes", 33554432.0)
+      .Between(8.0, 1e12)
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Grid mode: most grid nodes (4 bytes each); the spacing grows to fit.")
+      .Bind(&T::SetGridMaximumNodes, &T::GetGridMaximumNodes);
     return t;
   }();
   return table;
@@ -370,6 +418,11 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     impl.ReleaseGraphicsResources(impl.Window);
   }
   impl.Window = renWin;
+  if (this->RenderMode == RENDER_GRID)
+  {
+    this->RenderGrid(ren, actor, poly);
+    return;
+  }
 
   // ---- triangles: rebuilt only when the mesh or the arrays it takes change.
   // A corner carries its array values, or 1 where a constant applies; the
@@ -591,17 +644,24 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     .Define("PLUME_SMALL_TRIANGLE", "0.5");
   if (this->Quadrature == QUADRATURE_ANALYTIC)
   {
-    std::vector<double> x, w;
-    GaussLegendre(this->GridA, x, w);
-    std::ostringstream nodes, weights;
-    nodes.precision(9);
-    weights.precision(9);
-    for (int i = 0; i < this->GridA; ++i)
+    // along the footprint (GridA) and across it where the sigmas vary (GridB)
+    const int counts[2] = { this->GridA, this->GridB };
+    const char* names[2][2] = { { "PLUME_GL_NODES", "PLUME_GL_WEIGHTS" },
+      { "PLUME_GLB_NODES", "PLUME_GLB_WEIGHTS" } };
+    for (int q = 0; q < 2; ++q)
     {
-      nodes << (i ? ", " : "") << std::fixed << x[i];
-      weights << (i ? ", " : "") << std::fixed << w[i];
+      std::vector<double> x, w;
+      GaussLegendre(counts[q], x, w);
+      std::ostringstream nodes, weights;
+      nodes.precision(9);
+      weights.precision(9);
+      for (int i = 0; i < counts[q]; ++i)
+      {
+        nodes << (i ? ", " : "") << std::fixed << x[i];
+        weights << (i ? ", " : "") << std::fixed << w[i];
+      }
+      features.Define(names[q][0], nodes.str()).Define(names[q][1], weights.str());
     }
-    features.Define("PLUME_GL_NODES", nodes.str()).Define("PLUME_GL_WEIGHTS", weights.str());
   }
   vtkShaderProgram* program =
     impl.Programs->Ready(renWin, vtkPlumeSheetVS, vtkPlumeSheetGS, vtkPlumeSheetFS, features);
@@ -745,6 +805,110 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
 }
 
 //------------------------------------------------------------------------------
+void vtkPlumeSheetMapper::RenderGrid(vtkRenderer* ren, vtkActor* actor, vtkPolyData* poly)
+{
+  Internals& impl = *this->Impl;
+  const Internals::GridSignature sig{ poly, poly->GetMTime(), this->DensityArrayName, this->BlurArrayName,
+    this->ThicknessArrayName,
+    { this->Density, this->DensityScale, this->BlurRadius, this->Thickness, this->ThinSheet ? 1.0 : 0.0,
+      this->Cutoff, this->GridSamplesPerSigma, this->GridMaximumNodes } };
+  if (!impl.HaveGrid || sig != impl.GridFrom)
+  {
+    impl.HaveGrid = false;
+    std::string invalid = vtkPlumeInputValidation::CheckCells(poly);
+    if (invalid.empty())
+    {
+      invalid = vtkPlumeInputValidation::CheckArrays(poly);
+    }
+    if (!invalid.empty())
+    {
+      vtkErrorMacro(<< "invalid input mesh, not drawn: " << invalid);
+      return;
+    }
+    if (!this->AbsorptionArrayName.empty() && !impl.WarnedAbsorption)
+    {
+      vtkWarningMacro(<< "the grid mode draws grey smoke: absorption array '" << this->AbsorptionArrayName
+                      << "' ignored (use the exact mode for coloured absorption)");
+      impl.WarnedAbsorption = true;
+    }
+    vtkPlumeSheetDensityGrid* grid = impl.Grid;
+    grid->SetInputData(poly);
+    grid->SetDensityArrayName(this->DensityArrayName.c_str());
+    grid->SetDensity(this->Density);
+    grid->SetDensityScale(this->DensityScale);
+    grid->SetBlurArrayName(this->BlurArrayName.c_str());
+    grid->SetBlurRadius(this->BlurRadius);
+    grid->SetThicknessArrayName(this->ThicknessArrayName.c_str());
+    grid->SetThickness(this->Thickness);
+    grid->SetThinSheet(this->ThinSheet);
+    grid->SetCutoff(this->Cutoff);
+    grid->SetSamplesPerSigma(this->GridSamplesPerSigma);
+    grid->SetMaximumNodes(this->GridMaximumNodes);
+    if (!grid->Compute())
+    {
+      return;
+    }
+    ++this->GridComputeCount;
+    this->GridSpacing = grid->GetOutput()->GetSpacing()[0];
+    this->GridComputeSeconds = grid->GetComputeSeconds();
+    double range[2];
+    grid->GetOutput()->GetPointData()->GetScalars()->GetRange(range);
+    impl.GridMaxDensity = std::isfinite(range[1]) ? range[1] : 0.0;
+    impl.GridMapper->SetInputData(grid->GetOutput());
+    impl.GridFrom = sig;
+    impl.HaveGrid = true;
+  }
+  if (!(impl.GridMaxDensity > 0.0))
+  {
+    return; // no smoke anywhere
+  }
+  // extinction per world unit = density / the actor's length scale (the grid
+  // is in model units; the density stays per unit of world area, as in the
+  // exact mode): alpha(s) = 1 - exp(-s c u) tabulated with u chosen so the
+  // largest alpha is 1 - 1/e (the volume mapper takes -ln(1 - alpha) / u back)
+  double modelScale = 1.0;
+  if (!actor->GetIsIdentity())
+  {
+    double m3[3][3];
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        m3[r][c] = actor->GetMatrix()->GetElement(r, c);
+      }
+    }
+    modelScale = std::cbrt(std::fabs(vtkMath::Determinant3x3(m3)));
+  }
+  const double c = 1.0 / std::max(modelScale, 1e-300);
+  const double top = impl.GridMaxDensity;
+  const double unit = 1.0 / (top * c);
+  impl.GridOpacity->RemoveAllPoints();
+  const int points = 256;
+  for (int i = 0; i <= points; ++i)
+  {
+    const double s = top * i / points;
+    impl.GridOpacity->AddPoint(s, 1.0 - std::exp(-s * c * unit));
+  }
+  impl.GridColor->RemoveAllPoints();
+  impl.GridColor->AddRGBPoint(0.0, this->SmokeColor[0], this->SmokeColor[1], this->SmokeColor[2]);
+  impl.GridColor->AddRGBPoint(top, this->SmokeColor[0], this->SmokeColor[1], this->SmokeColor[2]);
+  impl.GridProperty->SetScalarOpacity(impl.GridOpacity);
+  impl.GridProperty->SetColor(impl.GridColor);
+  impl.GridProperty->SetScalarOpacityUnitDistance(unit);
+  impl.GridProperty->SetInterpolationTypeToLinear();
+  impl.GridProperty->ShadeOff();
+  impl.GridVolume->SetProperty(impl.GridProperty);
+  impl.GridVolume->SetMapper(impl.GridMapper);
+  impl.GridVolume->SetUserMatrix(actor->GetIsIdentity() ? nullptr : actor->GetMatrix());
+  impl.GridMapper->SetSampleDistance(this->GridSampleDistance);
+  impl.GridMapper->SetUseOpaqueDepth(this->BoundedByDepth);
+  impl.GridMapper->SetOpacityThreshold(0.999);
+  impl.GridMapper->SetEmptySpaceSkipping(true);
+  impl.GridMapper->SetJitter(true);
+  impl.GridMapper->Render(ren, impl.GridVolume);
+}
+
+//------------------------------------------------------------------------------
 void vtkPlumeSheetMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Impl->ReleaseGraphicsResources(window);
@@ -773,6 +937,10 @@ void vtkPlumeSheetMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Quadrature: " << this->Quadrature << "\n";
   os << indent << "AdaptiveSampling: " << this->AdaptiveSampling << "\n";
   os << indent << "MaximumTrianglesPerDraw: " << this->MaximumTrianglesPerDraw << "\n";
+  os << indent << "RenderMode: " << this->RenderMode << "\n";
+  os << indent << "GridSamplesPerSigma: " << this->GridSamplesPerSigma << "\n";
+  os << indent << "GridSampleDistance: " << this->GridSampleDistance << "\n";
+  os << indent << "GridMaximumNodes: " << this->GridMaximumNodes << "\n";
   os << indent << "UploadCount: " << this->UploadCount << "\n";
   os << indent << "TriangleCount: " << this->TriangleCount << "\n";
 }
