@@ -217,7 +217,15 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
     ~Pop() { this->Stack.pop_back(); }
   } pop{ this->Building };
   Parameters p(entry.Spec, "datasets." + name);
-  const std::string source = p.Choice("source", "file", { "file", "vortex", "splat", "smoke" });
+  const nlohmann::json* sourceKey = p.Raw("source");
+  if (sourceKey && sourceKey->is_string() && IsDerivedSource(sourceKey->get<std::string>()))
+  {
+    entry.Data = BuildDerivedDataset(p, *this, name);
+    return entry.Data;
+  }
+  const std::string source = p.Choice("source", "file",
+    { "file", "vortex", "splat", "smoke", "contour", "slice", "streamlines", "stream_surface", "ribbon", "threshold",
+      "clip" });
   if (source == "splat")
   {
     entry.Data = BuildSplatDataset(p, *this, name);

@@ -53,6 +53,8 @@ public:
   bool GravityUp(double up[3], std::string& from) const;
   /** Resolve a path against the scene's folder, then the shared data folder. */
   std::string Resolve(const std::string& path) const;
+  /** Whether progress bars are drawn (plume render on a terminal). */
+  bool ProgressEnabled() const { return this->Progress; }
 
 private:
   struct Entry
@@ -79,6 +81,10 @@ void RegisterSheetRepresentations(std::map<std::string, RepresentationBuilder>& 
 
 /** The dataset `"source": "splat"` (plumeSplatSource.cxx). */
 vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
+/** Whether `source` names a derived dataset (contour, slice, streamlines, ...; plumeDerivedSource.cxx). */
+bool IsDerivedSource(const std::string& source);
+/** A dataset derived from another with VTK's filters (vtkPlumeDerivedGeometry; plumeDerivedSource.cxx). */
+vtkSmartPointer<vtkDataObject> BuildDerivedDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
 /** The dataset `"source": "smoke"` (plumeSmokeSource.cxx). */
 vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
 

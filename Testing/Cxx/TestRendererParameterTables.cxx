@@ -5,6 +5,7 @@
 // defaults lie in their own ranges; keys and properties are unique.
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeAirlightPass.h"
+#include "vtkPlumeDerivedGeometry.h"
 #include "vtkPlumePressureSolver.h"
 #include "vtkPlumeSheetMapper.h"
 #include "vtkPlumeSmokeSolver.h"
@@ -116,6 +117,10 @@ int main()
   {
     vtkNew<vtkPlumeVelocityGlyphMapper> a, b;
     failures += CheckTable(vtkPlumeVelocityGlyphMapper::GetParameterTable(), a, b);
+  }
+  {
+    vtkNew<vtkPlumeDerivedGeometry> a, b;
+    failures += CheckTable(vtkPlumeDerivedGeometry::GetParameterTable(), a, b);
   }
   {
     vtkNew<vtkPlumeAirlightPass> a, b;
