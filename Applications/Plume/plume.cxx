@@ -14,6 +14,12 @@
 #include "vtkPlumeInputValidation.h"
 
 #include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkPolyData.h"
+#include "vtkCellData.h"
+#include "vtkPointData.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
@@ -103,8 +109,118 @@ std::string FramePath(const std::string& output, int step)
   return output.substr(0, output.size() - ext.size()) + number + ext;
 }
 
+/**
+ * Quick look (`plume render FILE`): a scene chosen from what the dataset holds.
+ * Vectors -> glyph lines coloured by speed; an image with a scalar array and no
+ * vectors -> a composite volume; polygons only -> the surface (coloured by its
+ * first scalar array); anything else -> the outer surface. Always the outline.
+ */
+nlohmann::json QuickLookScene(const std::string& file)
+{
+  std::string path = file;
+  if (!vtksys::SystemTools::FileIsFullPath(path) && !vtksys::SystemTools::FileExists(path) &&
+    vtksys::SystemTools::FileExists(plume::DataFolder() + "/" + path))
+  {
+    path = plume::DataFolder() + "/" + path;
+  }
+  path = vtksys::SystemTools::CollapseFullPath(path);
+  vtkNew<vtkPlumeDatasetReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  if (reader->GetNumberOfTimeValues() > 1)
+  {
+    reader->SetTimeStep(reader->GetNumberOfTimeValues() - 1); // as scenes: the last step
+  }
+  reader->Update();
+  if (!reader->GetLastError().empty())
+  {
+    throw plume::SceneError(reader->GetLastError());
+  }
+  auto* data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!data)
+  {
+    throw plume::SceneError("quick look: '" + file + "' holds no single dataset (try plume info)");
+  }
+  auto firstArray = [&](int components) -> std::string {
+    for (vtkDataSetAttributes* a : { static_cast<vtkDataSetAttributes*>(data->GetPointData()),
+           static_cast<vtkDataSetAttributes*>(data->GetCellData()) })
+    {
+      vtkDataArray* active = components == 3 ? a->GetVectors() : a->GetScalars();
+      if (active && active->GetName() && active->GetNumberOfComponents() == components)
+      {
+        return active->GetName();
+      }
+      for (int i = 0; i < a->GetNumberOfArrays(); ++i)
+      {
+        vtkDataArray* array = a->GetArray(i);
+        const std::string name = array && array->GetName() ? array->GetName() : "";
+        if (!name.empty() && name != "vtkValidPointMask" && name != "vtkGhostType" &&
+          array->GetNumberOfComponents() == components)
+        {
+          return name;
+        }
+      }
+    }
+    return "";
+  };
+  const std::string vectors = firstArray(3);
+  const std::string scalars = firstArray(1);
+  auto* poly = vtkPolyData::SafeDownCast(data);
+  nlohmann::json scene;
+  scene["datasets"]["data"]["path"] = path;
+  nlohmann::json reps = nlohmann::json::array();
+  reps.push_back({ { "type", "outline" }, { "dataset", "data" }, { "color", { 0.6, 0.6, 0.65 } } });
+  if (poly && poly->GetNumberOfPolys() + poly->GetNumberOfStrips() > 0)
+  {
+    nlohmann::json surface = { { "type", "surface" }, { "dataset", "data" } };
+    if (!scalars.empty())
+    {
+      surface["color_array"] = scalars;
+    }
+    reps.push_back(surface);
+  }
+  else if (!vectors.empty())
+  {
+    // a lattice of about 24 roots along the longest axis (images; others are resampled to 64 points)
+    int stride = 3;
+    if (auto* image = vtkImageData::SafeDownCast(data))
+    {
+      int dims[3];
+      image->GetDimensions(dims);
+      stride = std::max(1, std::max(dims[0], std::max(dims[1], dims[2])) / 24);
+    }
+    reps.push_back({ { "type", "glyphs" }, { "dataset", "data" }, { "vectors", vectors }, { "roots", "lattice" },
+      { "stride", stride } });
+  }
+  else if (!scalars.empty() && vtkImageData::SafeDownCast(data))
+  {
+    reps.push_back({ { "type", "volume" }, { "dataset", "data" }, { "array", scalars } });
+  }
+  else
+  {
+    reps.push_back({ { "type", "surface" }, { "dataset", "data" } });
+  }
+  scene["representations"] = reps;
+  scene["camera"] = { { "view_up", "auto" }, { "azimuth", 30 }, { "elevation", 20 } };
+  return scene;
+}
+
+std::string QuickLookSummary(const nlohmann::json& scene)
+{
+  const auto& rep = scene["representations"].back();
+  std::string what = rep["type"].get<std::string>();
+  for (const char* key : { "vectors", "array", "color_array" })
+  {
+    if (rep.contains(key))
+    {
+      what += " of '" + rep[key].get<std::string>() + "'";
+    }
+  }
+  return what + " and the outline";
+}
+
 int Render(const std::string& scenePath, const std::string& output, const std::string& size, plume::Backend backend,
-  const std::string& timeSteps, const std::string& video)
+  const std::string& timeSteps, const std::string& video, bool printScene)
 {
   plume::SceneOptions options;
   if (!size.empty() && !ParseSize(size, options.Width, options.Height))
@@ -155,7 +271,23 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   {
     steps = ParseTimeSteps(timeSteps, 0);
   }
-  const nlohmann::json scene = plume::Scene::ReadFile(scenePath);
+  const bool quickLook =
+    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(scenePath)) != ".json";
+  const nlohmann::json scene = quickLook ? QuickLookScene(scenePath) : plume::Scene::ReadFile(scenePath);
+  if (quickLook)
+  {
+    // the scene chosen, for the user to edit (stderr keeps stdout for --print-scene)
+    if (printScene)
+    {
+      std::cout << scene.dump(2) << "\n";
+    }
+    plume::Note("quick look at " + scenePath + ": " + QuickLookSummary(scene) +
+      " (--print-scene prints the scene to edit)");
+  }
+  else if (printScene)
+  {
+    std::cout << scene.dump(2) << "\n";
+  }
   std::string directory = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(scenePath));
   vtkSmartPointer<vtkRenderWindow> window;
   // One frame per step: the scene is built again for each (every series read at that step).
@@ -349,7 +481,11 @@ int main(int argc, char* argv[])
 
   auto* render = app.add_subcommand("render", "render a JSON scene to an image");
   std::string scene, output, size;
-  render->add_option("scene", scene, "scene file (JSON; see Documentation/SceneFormat.md)")->required();
+  render->add_option("scene", scene,
+    "scene file (JSON; see Documentation/SceneFormat.md), or a dataset for a quick look (a scene chosen from its arrays)")
+    ->required();
+  bool printScene = false;
+  render->add_flag("--print-scene", printScene, "print the scene rendered (JSON) on stdout, e.g. a quick look's to edit");
   render->add_option("-o,--output", output, "output image: .png (8-bit) or .exr (float RGBA + Z)")->required();
   render->add_option("--size", size, "image size WxH (default: the scene's size, else 800x600)");
   std::string timeSteps, video;
@@ -403,7 +539,7 @@ int main(int argc, char* argv[])
   {
     if (*render)
     {
-      status = Render(scene, output, size, backend, timeSteps, video);
+      status = Render(scene, output, size, backend, timeSteps, video, printScene);
     }
     else if (*info)
     {
