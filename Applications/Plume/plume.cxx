@@ -271,7 +271,8 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   {
     steps = ParseTimeSteps(timeSteps, 0);
   }
-  const bool quickLook =
+  // a folder is not a quick look: the scene reader says it is a directory
+  const bool quickLook = !vtksys::SystemTools::FileIsDirectory(scenePath) &&
     vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(scenePath)) != ".json";
   const nlohmann::json scene = quickLook ? QuickLookScene(scenePath) : plume::Scene::ReadFile(scenePath);
   if (quickLook)
