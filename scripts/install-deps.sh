@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   libhypre-dev                      # structured multigrid-preconditioned CG (smoke solver pressure)
   libeigen3-dev                     # Eigen's IC-preconditioned CG: the pressure benchmark's peer
+  ffmpeg                            # plume render --time-steps ... --video: frames assembled into a video
   clang-14 libclang-rt-14-dev libfuzzer-14-dev # fuzz targets (scripts/fuzz.sh): -fsanitize=fuzzer,address,undefined
 )
 

@@ -15,6 +15,12 @@
 #include "vtkPlumeInputValidation.h"
 
 #include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkPolyData.h"
+#include "vtkCellData.h"
+#include "vtkPointData.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
@@ -28,6 +34,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -41,7 +48,180 @@ bool ParseSize(const std::string& text, int& w, int& h)
 }
 
 
-int Render(const std::string& scenePath, const std::string& output, const std::string& size, plume::Backend backend)
+/**
+ * --time-steps: "all", "A:B" (inclusive) or "A,B,C". `count` is the number of
+ * steps ("all" and checks; 0 while unknown). Throws SceneError naming the text.
+ */
+std::vector<int> ParseTimeSteps(const std::string& text, int count)
+{
+  const std::string usage = "--time-steps must be 'all', 'A:B' (first and last step) or a list 'A,B,C' of step "
+                            "indices 0 or more, got '" + text + "'";
+  std::vector<int> steps;
+  if (text == "all")
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      steps.push_back(k);
+    }
+    return steps;
+  }
+  auto number = [&](const std::string& part) {
+    if (part.empty() || part.size() > 9 || part.find_first_not_of("0123456789") != std::string::npos)
+    {
+      throw plume::SceneError(usage);
+    }
+    return std::stoi(part);
+  };
+  const size_t colon = text.find(':');
+  if (colon != std::string::npos)
+  {
+    const int first = number(text.substr(0, colon));
+    const int last = number(text.substr(colon + 1));
+    if (last < first)
+    {
+      throw plume::SceneError("--time-steps '" + text + "': the last step is before the first");
+    }
+    for (int k = first; k <= last; ++k)
+    {
+      steps.push_back(k);
+    }
+    return steps;
+  }
+  size_t at = 0;
+  while (at <= text.size())
+  {
+    const size_t comma = text.find(',', at);
+    steps.push_back(number(text.substr(at, comma == std::string::npos ? std::string::npos : comma - at)));
+    if (comma == std::string::npos)
+    {
+      break;
+    }
+    at = comma + 1;
+  }
+  return steps;
+}
+
+/** OUT.png -> OUT_0003.png: frame files of a series, in step order for video tools. */
+std::string FramePath(const std::string& output, int step)
+{
+  const std::string ext = vtksys::SystemTools::GetFilenameLastExtension(output);
+  char number[16];
+  std::snprintf(number, sizeof(number), "_%04d", step);
+  return output.substr(0, output.size() - ext.size()) + number + ext;
+}
+
+/**
+ * Quick look (`plume render FILE`): a scene chosen from what the dataset holds.
+ * Vectors -> glyph lines coloured by speed; an image with a scalar array and no
+ * vectors -> a composite volume; polygons only -> the surface (coloured by its
+ * first scalar array); anything else -> the outer surface. Always the outline.
+ */
+nlohmann::json QuickLookScene(const std::string& file)
+{
+  std::string path = file;
+  if (!vtksys::SystemTools::FileIsFullPath(path) && !vtksys::SystemTools::FileExists(path) &&
+    vtksys::SystemTools::FileExists(plume::DataFolder() + "/" + path))
+  {
+    path = plume::DataFolder() + "/" + path;
+  }
+  path = vtksys::SystemTools::CollapseFullPath(path);
+  vtkNew<vtkPlumeDatasetReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  if (reader->GetNumberOfTimeValues() > 1)
+  {
+    reader->SetTimeStep(reader->GetNumberOfTimeValues() - 1); // as scenes: the last step
+  }
+  reader->Update();
+  if (!reader->GetLastError().empty())
+  {
+    throw plume::SceneError(reader->GetLastError());
+  }
+  auto* data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!data)
+  {
+    throw plume::SceneError("quick look: '" + file + "' holds no single dataset (try plume info)");
+  }
+  auto firstArray = [&](int components) -> std::string {
+    for (vtkDataSetAttributes* a : { static_cast<vtkDataSetAttributes*>(data->GetPointData()),
+           static_cast<vtkDataSetAttributes*>(data->GetCellData()) })
+    {
+      vtkDataArray* active = components == 3 ? a->GetVectors() : a->GetScalars();
+      if (active && active->GetName() && active->GetNumberOfComponents() == components)
+      {
+        return active->GetName();
+      }
+      for (int i = 0; i < a->GetNumberOfArrays(); ++i)
+      {
+        vtkDataArray* array = a->GetArray(i);
+        const std::string name = array && array->GetName() ? array->GetName() : "";
+        if (!name.empty() && name != "vtkValidPointMask" && name != "vtkGhostType" &&
+          array->GetNumberOfComponents() == components)
+        {
+          return name;
+        }
+      }
+    }
+    return "";
+  };
+  const std::string vectors = firstArray(3);
+  const std::string scalars = firstArray(1);
+  auto* poly = vtkPolyData::SafeDownCast(data);
+  nlohmann::json scene;
+  scene["datasets"]["data"]["path"] = path;
+  nlohmann::json reps = nlohmann::json::array();
+  reps.push_back({ { "type", "outline" }, { "dataset", "data" }, { "color", { 0.6, 0.6, 0.65 } } });
+  if (poly && poly->GetNumberOfPolys() + poly->GetNumberOfStrips() > 0)
+  {
+    nlohmann::json surface = { { "type", "surface" }, { "dataset", "data" } };
+    if (!scalars.empty())
+    {
+      surface["color_array"] = scalars;
+    }
+    reps.push_back(surface);
+  }
+  else if (!vectors.empty())
+  {
+    // a lattice of about 24 roots along the longest axis (images; others are resampled to 64 points)
+    int stride = 3;
+    if (auto* image = vtkImageData::SafeDownCast(data))
+    {
+      int dims[3];
+      image->GetDimensions(dims);
+      stride = std::max(1, std::max(dims[0], std::max(dims[1], dims[2])) / 24);
+    }
+    reps.push_back({ { "type", "glyphs" }, { "dataset", "data" }, { "vectors", vectors }, { "roots", "lattice" },
+      { "stride", stride } });
+  }
+  else if (!scalars.empty() && vtkImageData::SafeDownCast(data))
+  {
+    reps.push_back({ { "type", "volume" }, { "dataset", "data" }, { "array", scalars } });
+  }
+  else
+  {
+    reps.push_back({ { "type", "surface" }, { "dataset", "data" } });
+  }
+  scene["representations"] = reps;
+  scene["camera"] = { { "view_up", "auto" }, { "azimuth", 30 }, { "elevation", 20 } };
+  return scene;
+}
+
+std::string QuickLookSummary(const nlohmann::json& scene)
+{
+  const auto& rep = scene["representations"].back();
+  std::string what = rep["type"].get<std::string>();
+  for (const char* key : { "vectors", "array", "color_array" })
+  {
+    if (rep.contains(key))
+    {
+      what += " of '" + rep[key].get<std::string>() + "'";
+    }
+  }
+  return what + " and the outline";
+}
+
+int Render(const std::string& scenePath, const std::string& output, const std::string& size, plume::Backend backend,
+  const std::string& timeSteps, const std::string& video, bool printScene)
 {
   plume::SceneOptions options;
   if (!size.empty() && !ParseSize(size, options.Width, options.Height))
@@ -55,43 +235,160 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   {
     throw plume::SceneError("output '" + output + "': unknown image format '" + ext + "' (use .png or .exr)");
   }
+  for (const std::string& file : { output, video })
   {
+    if (file.empty())
+    {
+      continue;
+    }
     // checked before any (possibly long) rendering
-    std::string folder = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(output));
+    std::string folder = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(file));
     if (!vtksys::SystemTools::FileIsDirectory(folder) || access(folder.c_str(), W_OK) != 0)
     {
-      throw plume::SceneError("output '" + output + "': folder '" + folder + "' does not exist or is not writable");
+      throw plume::SceneError("output '" + file + "': folder '" + folder + "' does not exist or is not writable");
     }
   }
-  const nlohmann::json scene = plume::Scene::ReadFile(scenePath);
+  std::string ffmpeg;
+  if (!video.empty())
+  {
+    if (timeSteps.empty())
+    {
+      throw plume::SceneError("--video needs --time-steps (the frames of the video)");
+    }
+    if (ext != ".png")
+    {
+      throw plume::SceneError("--video assembles PNG frames: give -o FRAME.png, got '" + output + "'");
+    }
+    ffmpeg = vtksys::SystemTools::FindProgram("ffmpeg");
+    if (ffmpeg.empty())
+    {
+      throw plume::SceneError("--video needs ffmpeg, which is not on PATH (Debian: apt-get install ffmpeg; "
+                              "scripts/install-deps.sh installs it)");
+    }
+  }
+  std::vector<int> steps;
+  const bool all = timeSteps == "all";
+  if (!timeSteps.empty() && !all)
+  {
+    steps = ParseTimeSteps(timeSteps, 0);
+  }
+  // a folder is not a quick look: the scene reader says it is a directory
+  const bool quickLook = !vtksys::SystemTools::FileIsDirectory(scenePath) &&
+    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(scenePath)) != ".json";
+  const nlohmann::json scene = quickLook ? QuickLookScene(scenePath) : plume::Scene::ReadFile(scenePath);
+  if (quickLook)
+  {
+    // the scene chosen, for the user to edit (stderr keeps stdout for --print-scene)
+    if (printScene)
+    {
+      std::cout << scene.dump(2) << "\n";
+    }
+    plume::Note("quick look at " + scenePath + ": " + QuickLookSummary(scene) +
+      " (--print-scene prints the scene to edit)");
+  }
+  else if (printScene)
+  {
+    std::cout << scene.dump(2) << "\n";
+  }
   std::string directory = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(scenePath));
-  vtkNew<vtkRenderer> renderer;
-  plume::Scene::Build(scene, directory, renderer, options);
-
-  auto window = plume::RequireRenderWindow(backend, options.Width, options.Height);
-  window->AddRenderer(renderer);
-  renderer->ResetCameraClippingRange();
+  vtkSmartPointer<vtkRenderWindow> window;
+  // One frame per step: the scene is built again for each (every series read at that step).
+  auto renderFrame = [&](int step, const std::string& file) {
+    plume::SceneOptions frame = options;
+    frame.TimeStep = step;
+    vtkNew<vtkRenderer> renderer;
+    plume::Scene::Build(scene, directory, renderer, frame);
+    options.Width = frame.Width;
+    options.Height = frame.Height;
+    options.NumberOfTimeSteps = frame.NumberOfTimeSteps;
+    if (!window)
+    {
+      window = plume::RequireRenderWindow(backend, frame.Width, frame.Height);
+    }
+    window->AddRenderer(renderer);
+    renderer->ResetCameraClippingRange();
+    // EXR: the frame from a float framebuffer (the window's is 8 bits per channel)
+    const plume::FloatImage image =
+      ext == ".exr" ? plume::RenderFloat(window, renderer) : plume::ReadBack(window);
+    const std::string glErrors = plume::GLErrors(window);
+    if (!glErrors.empty())
+    {
+      throw plume::SceneError("OpenGL reported errors while rendering: " + glErrors);
+    }
+    plume::WriteImage(file, image, renderer->GetActiveCamera());
+    window->RemoveRenderer(renderer);
+  };
+  if (timeSteps.empty())
+  {
+    if (options.Progress)
+    {
+      plume::DrawProgress("rendering", 0);
+    }
+    renderFrame(-1, output);
+    if (options.Progress)
+    {
+      plume::DrawProgress("rendering", 1);
+    }
+    std::cout << "wrote " << output << " (" << options.Width << "x" << options.Height << ")\n";
+    return 0;
+  }
+  // the first frame tells how many steps the series has ("all", and range checks)
+  const int first = all ? 0 : steps.front();
+  renderFrame(first, FramePath(output, first));
+  if (options.NumberOfTimeSteps < 2)
+  {
+    throw plume::SceneError("--time-steps: no dataset of the scene is a time series (each holds one step)");
+  }
+  if (all)
+  {
+    steps = ParseTimeSteps("all", options.NumberOfTimeSteps);
+  }
+  for (int step : steps)
+  {
+    if (step >= options.NumberOfTimeSteps)
+    {
+      throw plume::SceneError("--time-steps: step " + std::to_string(step) + " is past the last step " +
+        std::to_string(options.NumberOfTimeSteps - 1));
+    }
+  }
+  for (size_t i = 1; i < steps.size(); ++i)
+  {
+    if (options.Progress)
+    {
+      plume::DrawProgress("rendering frames", double(i) / double(steps.size()));
+    }
+    renderFrame(steps[i], FramePath(output, steps[i]));
+  }
   if (options.Progress)
   {
-    plume::DrawProgress("rendering", 0);
+    plume::DrawProgress("rendering frames", 1);
   }
-  // EXR: the frame from a float framebuffer (the window's is 8 bits per channel)
-  const plume::FloatImage image =
-    ext == ".exr" ? plume::RenderFloat(window, renderer) : plume::ReadBack(window);
-  if (options.Progress)
+  std::cout << "wrote " << steps.size() << " frames " << FramePath(output, steps.front()) << " .. "
+            << FramePath(output, steps.back()) << " (" << options.Width << "x" << options.Height << ")\n";
+  if (!video.empty())
   {
-    plume::DrawProgress("rendering", 1);
+    // ffmpeg reads numbered frames from a list (the steps need not be consecutive)
+    const std::string list = video + ".frames.txt";
+    {
+      std::ofstream out(list);
+      for (int step : steps)
+      {
+        out << "file '" << vtksys::SystemTools::CollapseFullPath(FramePath(output, step)) << "'\nduration 0.2\n";
+      }
+    }
+    const std::string command = "'" + ffmpeg + "' -loglevel error -y -f concat -safe 0 -i '" + list +
+      "' -vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2,format=yuv420p' -r 5 '" + video + "' < /dev/null";
+    const int rc = std::system(command.c_str());
+    std::remove(list.c_str());
+    if (rc != 0)
+    {
+      throw plume::SceneError("--video: ffmpeg failed (exit " + std::to_string(WEXITSTATUS(rc)) + ") making '" +
+        video + "'");
+    }
+    std::cout << "wrote " << video << " (" << steps.size() << " frames, 5 per second)\n";
   }
-  const std::string glErrors = plume::GLErrors(window);
-  if (!glErrors.empty())
-  {
-    throw plume::SceneError("OpenGL reported errors while rendering: " + glErrors);
-  }
-  plume::WriteImage(output, image, renderer->GetActiveCamera());
-  std::cout << "wrote " << output << " (" << options.Width << "x" << options.Height << ")\n";
   return 0;
 }
-
 }
 
 // `plume params [TYPE]`: the Markdown tables of Documentation/SceneFormat.md,
@@ -186,9 +483,17 @@ int main(int argc, char* argv[])
 
   auto* render = app.add_subcommand("render", "render a JSON scene to an image");
   std::string scene, output, size;
-  render->add_option("scene", scene, "scene file (JSON; see Documentation/SceneFormat.md)")->required();
+  render->add_option("scene", scene,
+    "scene file (JSON; see Documentation/SceneFormat.md), or a dataset for a quick look (a scene chosen from its arrays)")
+    ->required();
+  bool printScene = false;
+  render->add_flag("--print-scene", printScene, "print the scene rendered (JSON) on stdout, e.g. a quick look's to edit");
   render->add_option("-o,--output", output, "output image: .png (8-bit) or .exr (float RGBA + Z)")->required();
   render->add_option("--size", size, "image size WxH (default: the scene's size, else 800x600)");
+  std::string timeSteps, video;
+  render->add_option("--time-steps", timeSteps,
+    "render these time steps to numbered images OUT_0000.png ...: all, A:B or A,B,C");
+  render->add_option("--video", video, "with --time-steps: also assemble the frames into this video (ffmpeg)");
 
   auto* info = app.add_subcommand("info", "describe what a dataset holds");
   std::string file, readerName, qFile;
@@ -249,7 +554,7 @@ int main(int argc, char* argv[])
   {
     if (*render)
     {
-      status = Render(scene, output, size, backend);
+      status = Render(scene, output, size, backend, timeSteps, video, printScene);
     }
     else if (*info)
     {

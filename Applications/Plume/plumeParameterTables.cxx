@@ -1,5 +1,6 @@
 #include "plumeParameterTables.h"
 
+#include "vtkPlumeDerivedGeometry.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeSheetMapper.h"
 #include "vtkPlumeVelocityGlyphMapper.h"
@@ -13,6 +14,7 @@ const std::vector<const vtkPlumeParameterTable*>& ParameterTables()
     &vtkPlumeVelocityGlyphMapper::GetParameterTable(),
     &vtkPlumeVolumeMapper::GetParameterTable(),
     &vtkPlumeSheetMapper::GetParameterTable(),
+    &vtkPlumeDerivedGeometry::GetParameterTable(),
   };
   return tables;
 }

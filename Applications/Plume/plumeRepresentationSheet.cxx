@@ -44,7 +44,10 @@ void BuildSheet(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   }
   if (mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() < 1)
   {
-    throw SceneError(p.Where() + ": dataset '" + dataset + "' has no polygons or triangle strips");
+    throw SceneError(p.Where() + ": dataset '" + dataset + "' has no polygons or triangle strips" +
+      (mesh->GetNumberOfLines() > 0 ? " (it holds " + std::to_string(mesh->GetNumberOfLines()) +
+            " lines; a sheet needs a surface: derive a 'stream_surface' or 'ribbon')"
+                                    : std::string()));
   }
   const std::pair<std::string, int> arrays[4] = { { mapper->GetDensityArrayName(), 1 },
     { mapper->GetBlurArrayName(), 1 }, { mapper->GetThicknessArrayName(), 1 }, { mapper->GetAbsorptionArrayName(), 3 } };

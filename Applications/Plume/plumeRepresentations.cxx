@@ -10,6 +10,7 @@
 #include "vtkPlumeVelocityGlyphMapper.h"
 
 #include "vtkActor.h"
+#include "vtkCellData.h"
 #include "vtkContourFilter.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
@@ -166,10 +167,53 @@ void BuildSurface(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   const std::string colorArray = p.String("color_array", "");
   const double opacity = p.Number("opacity", 1.0, 0.0, 1.0);
   const bool wireframe = p.Boolean("wireframe", false);
+  // "cell": colour each cell by its own value (finite-volume data), no interpolation
+  const std::string association = p.Choice("association", "point", { "point", "cell" });
   Coloring coloring;
   coloring.Read(p, { 0.8, 0.8, 0.8 });
   coloring.ReadLegend(p);
   p.RejectUnknown();
+  if (association == "cell")
+  {
+    vtkDataSet* cells = RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset);
+    if (colorArray.empty())
+    {
+      throw SceneError(p.Where() + ": 'association' \"cell\" needs a 'color_array' (a cell array)");
+    }
+    vtkDataArray* array = cells->GetCellData()->GetArray(colorArray.c_str());
+    if (!array)
+    {
+      std::string names;
+      for (int i = 0; i < cells->GetCellData()->GetNumberOfArrays(); ++i)
+      {
+        const char* n = cells->GetCellData()->GetArrayName(i);
+        names += (names.empty() ? "" : ", ") + std::string(n ? n : "");
+      }
+      throw SceneError(p.Where() + ": dataset '" + dataset + "' has no cell array '" + colorArray +
+        "' (cell arrays: " + (names.empty() ? "none" : names) + ")");
+    }
+    vtkNew<vtkDataSetSurfaceFilter> surface;
+    surface->SetInputData(cells);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(surface->GetOutputPort());
+    const int component = array->GetNumberOfComponents() == 1 ? 0 : -1;
+    auto table = coloring.Table(array, component);
+    mapper->SetLookupTable(table);
+    mapper->SetScalarModeToUseCellFieldData();
+    mapper->SelectColorArray(colorArray.c_str());
+    mapper->SetScalarRange(table->GetRange());
+    mapper->ScalarVisibilityOn();
+    coloring.AddLegend(renderer, table, component < 0 ? "|" + colorArray + "|" : colorArray);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetOpacity(opacity);
+    if (wireframe)
+    {
+      actor->GetProperty()->SetRepresentationToWireframe();
+    }
+    renderer->AddActor(actor);
+    return;
+  }
   vtkSmartPointer<vtkDataSet> data =
     WithPointArrays(RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset), { colorArray });
   vtkNew<vtkDataSetSurfaceFilter> surface;

@@ -140,9 +140,10 @@ bool SolutionIsUniform(vtkDataObject* data)
 }
 }
 
-SceneDatasets::SceneDatasets(const nlohmann::json* datasets, std::string sceneDirectory, bool progress)
+SceneDatasets::SceneDatasets(const nlohmann::json* datasets, std::string sceneDirectory, bool progress, int timeStep)
   : SceneDirectory(std::move(sceneDirectory))
   , Progress(progress)
+  , TimeStepOverride(timeStep)
 {
   if (!datasets)
   {
@@ -217,7 +218,15 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
     ~Pop() { this->Stack.pop_back(); }
   } pop{ this->Building };
   Parameters p(entry.Spec, "datasets." + name);
-  const std::string source = p.Choice("source", "file", { "file", "vortex", "splat", "smoke" });
+  const nlohmann::json* sourceKey = p.Raw("source");
+  if (sourceKey && sourceKey->is_string() && IsDerivedSource(sourceKey->get<std::string>()))
+  {
+    entry.Data = BuildDerivedDataset(p, *this, name);
+    return entry.Data;
+  }
+  const std::string source = p.Choice("source", "file",
+    { "file", "vortex", "splat", "smoke", "contour", "slice", "streamlines", "stream_surface", "ribbon", "threshold",
+      "clip" });
   if (source == "splat")
   {
     entry.Data = BuildSplatDataset(p, *this, name);
@@ -315,7 +324,7 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
         timeStep->dump());
     }
   }
-  if (hasTime)
+  if (hasTime && this->TimeStepOverride < 0)
   {
     reader->SetTimeValue(time);
   }
@@ -331,7 +340,22 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   {
     AttachProgress(reader, "reading " + name);
   }
-  if (lastStep)
+  if (this->TimeStepOverride >= 0)
+  {
+    // --time-steps: the frame's step of every series (datasets without steps stay as they are)
+    reader->UpdateInformation();
+    const int count = reader->GetNumberOfTimeValues();
+    if (count > 1)
+    {
+      if (this->TimeStepOverride >= count)
+      {
+        throw SceneError("--time-steps: step " + std::to_string(this->TimeStepOverride) + " is past the last step " +
+          std::to_string(count - 1) + " of datasets." + name);
+      }
+      reader->SetTimeStep(this->TimeStepOverride);
+    }
+  }
+  else if (lastStep)
   {
     reader->UpdateInformation();
     if (reader->GetNumberOfTimeValues() > 1)
@@ -358,6 +382,13 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
          << " (t = " << reader->GetTimeValueAt(step) << "; times " << reader->GetTimeValueAt(0) << " to "
          << reader->GetTimeValueAt(steps - 1) << ")";
     Note(line.str());
+    this->TimeSteps = std::max(this->TimeSteps, steps);
+    if (this->TimeLabel.empty())
+    {
+      std::ostringstream label;
+      label << "t = " << reader->GetTimeValueAt(step);
+      this->TimeLabel = label.str();
+    }
     if (SolutionIsUniform(entry.Data))
     {
       std::ostringstream warning;
@@ -683,7 +714,7 @@ void Scene::Build(
   const nlohmann::json& scene, const std::string& sceneDirectory, vtkRenderer* renderer, SceneOptions& options)
 {
   Parameters top(scene, "scene");
-  SceneDatasets datasets(top.Object("datasets"), sceneDirectory, options.Progress);
+  SceneDatasets datasets(top.Object("datasets"), sceneDirectory, options.Progress, options.TimeStep);
 
   const auto size = top.Vector<2>("size", { 800, 600 });
   for (double s : size)
@@ -727,6 +758,7 @@ void Scene::Build(
   }
 
   const std::string title = top.String("title", "");
+  const bool timeLabel = top.Boolean("time_label", true);
   const nlohmann::json* camera = top.Object("camera");
   const nlohmann::json* lights = top.Raw("lights");
   const nlohmann::json* medium = top.Raw("medium");
@@ -774,6 +806,20 @@ void Scene::Build(
     text->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
     text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     text->GetPositionCoordinate()->SetValue(0.5, 0.97);
+    renderer->AddActor2D(text);
+  }
+  options.NumberOfTimeSteps = datasets.GetNumberOfTimeSteps();
+  if (timeLabel && !datasets.GetTimeLabel().empty())
+  {
+    // the time of the step shown, bottom left, in the overlay like the title
+    vtkNew<vtkTextActor> text;
+    text->SetInput(datasets.GetTimeLabel().c_str());
+    text->GetTextProperty()->SetJustificationToLeft();
+    text->GetTextProperty()->SetVerticalJustificationToBottom();
+    text->GetTextProperty()->SetFontSize(std::max(12, std::min(options.Width, options.Height) / 26));
+    text->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+    text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    text->GetPositionCoordinate()->SetValue(0.02, 0.02);
     renderer->AddActor2D(text);
   }
   BuildCamera(camera, renderer, options.Width, options.Height, datasets);

@@ -41,7 +41,7 @@ std::string DataFolder();
 class SceneDatasets
 {
 public:
-  SceneDatasets(const nlohmann::json* datasets, std::string sceneDirectory, bool progress);
+  SceneDatasets(const nlohmann::json* datasets, std::string sceneDirectory, bool progress, int timeStep = -1);
   /** The dataset as read (composites merged unless the scene says otherwise). */
   vtkDataObject* Get(const std::string& name, const std::string& where);
   /** The dataset on an image grid (resampled if it is not one already). */
@@ -54,6 +54,12 @@ public:
   bool GravityUp(double up[3], std::string& from) const;
   /** Resolve a path against the scene's folder, then the shared data folder. */
   std::string Resolve(const std::string& path) const;
+  /** The most time steps of a dataset read so far (0 if none is a series). */
+  int GetNumberOfTimeSteps() const { return this->TimeSteps; }
+  /** "t = 2.5" for the first time series read (its step shown), "" if none is a series. */
+  const std::string& GetTimeLabel() const { return this->TimeLabel; }
+  /** Whether progress bars are drawn (plume render on a terminal). */
+  bool ProgressEnabled() const { return this->Progress; }
 
 private:
   struct Entry
@@ -66,6 +72,9 @@ private:
   std::vector<std::string> Building; // datasets being built, outermost first (cycle detection)
   std::string SceneDirectory;
   bool Progress;
+  int TimeStepOverride = -1; // --time-steps: this step of every time series, whatever the scene says
+  int TimeSteps = 0;
+  std::string TimeLabel;
 };
 
 /** Builds one representation (`"type": ...`) into props added to the renderer. */
@@ -80,6 +89,10 @@ void RegisterSheetRepresentations(std::map<std::string, RepresentationBuilder>& 
 
 /** The dataset `"source": "splat"` (plumeSplatSource.cxx). */
 vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
+/** Whether `source` names a derived dataset (contour, slice, streamlines, ...; plumeDerivedSource.cxx). */
+bool IsDerivedSource(const std::string& source);
+/** A dataset derived from another with VTK's filters (vtkPlumeDerivedGeometry; plumeDerivedSource.cxx). */
+vtkSmartPointer<vtkDataObject> BuildDerivedDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
 /** The dataset `"source": "smoke"` (plumeSmokeSource.cxx). */
 vtkSmartPointer<vtkDataObject> BuildSmokeDataset(Parameters& p, SceneDatasets& datasets, const std::string& name);
 /**
@@ -95,6 +108,10 @@ struct SceneOptions
   int Width = 0;  // 0: from the scene's "size", else 800
   int Height = 0;
   bool Progress = false;
+  /** >= 0: read this time step of every time series (plume render --time-steps). */
+  int TimeStep = -1;
+  /** Out: the most time steps of a dataset the scene read (0: no series). */
+  int NumberOfTimeSteps = 0;
 };
 
 class Scene

@@ -5,6 +5,7 @@
 // defaults lie in their own ranges; keys and properties are unique.
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeAirlightPass.h"
+#include "vtkPlumeDerivedGeometry.h"
 #include "vtkPlumePressureSolver.h"
 #include "vtkPlumeGaussianSplatter.h"
 #include "vtkPlumeSheetMapper.h"
@@ -121,6 +122,10 @@ int main()
   {
     vtkNew<vtkPlumeGaussianSplatter> a, b; // its table makes the ParaView filter's properties
     failures += CheckTable(vtkPlumeGaussianSplatter::GetParameterTable(), a, b);
+  }
+  {
+    vtkNew<vtkPlumeDerivedGeometry> a, b;
+    failures += CheckTable(vtkPlumeDerivedGeometry::GetParameterTable(), a, b);
   }
   {
     vtkNew<vtkPlumeAirlightPass> a, b;

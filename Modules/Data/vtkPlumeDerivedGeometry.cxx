@@ -1,0 +1,715 @@
+#include "vtkPlumeDerivedGeometry.h"
+
+#include "vtkPlumeParameterTable.h"
+
+#include "vtkAppendPolyData.h"
+#include "vtkCellData.h"
+#include "vtkCellDataToPointData.h"
+#include "vtkContourFilter.h"
+#include "vtkCutter.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLineSource.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPlane.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRibbonFilter.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamSurface.h"
+#include "vtkStreamTracer.h"
+#include "vtkTableBasedClipDataSet.h"
+#include "vtkThreshold.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkPlumeDerivedGeometry);
+
+namespace
+{
+const char* const OperationKeys[] = { "contour", "slice", "streamlines", "stream_surface", "ribbon",
+  "threshold", "clip" };
+
+std::string Num(double x)
+{
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+std::string Vec(const double v[3])
+{
+  return "[" + Num(v[0]) + ", " + Num(v[1]) + ", " + Num(v[2]) + "]";
+}
+
+bool Internal(const char* name)
+{
+  const std::string n = name ? name : "";
+  return n.empty() || n == "vtkValidPointMask" || n == "vtkGhostType";
+}
+
+std::string ListArrays(vtkDataSet* data)
+{
+  std::string out;
+  for (vtkDataSetAttributes* a : { static_cast<vtkDataSetAttributes*>(data->GetPointData()),
+         static_cast<vtkDataSetAttributes*>(data->GetCellData()) })
+  {
+    std::string names;
+    for (int i = 0; i < a->GetNumberOfArrays(); ++i)
+    {
+      vtkDataArray* array = a->GetArray(i);
+      if (array && !Internal(array->GetName()))
+      {
+        names += (names.empty() ? "" : ", ") + std::string(array->GetName());
+      }
+    }
+    out += (out.empty() ? "point arrays: " : "; cell arrays: ") + (names.empty() ? "none" : names);
+  }
+  return out;
+}
+
+/**
+ * The named array, first as point data, then as cell data (cell data first when
+ * `preferCells`: a finite-volume reader's point copy is interpolated); `cell` says which.
+ */
+vtkDataArray* FindArray(vtkDataSet* data, const std::string& name, bool& cell, bool preferCells)
+{
+  if (preferCells)
+  {
+    if (vtkDataArray* a = data->GetCellData()->GetArray(name.c_str()))
+    {
+      cell = true;
+      return a;
+    }
+  }
+  cell = false;
+  if (vtkDataArray* a = data->GetPointData()->GetArray(name.c_str()))
+  {
+    return a;
+  }
+  cell = true;
+  return data->GetCellData()->GetArray(name.c_str());
+}
+
+/** A default array: the active attribute, else the first point (then cell) array with `components`. */
+vtkDataArray* DefaultArray(vtkDataSet* data, bool vectors, bool& cell)
+{
+  const int components = vectors ? 3 : 1;
+  cell = false;
+  vtkDataArray* active = vectors ? data->GetPointData()->GetVectors() : data->GetPointData()->GetScalars();
+  if (active && !Internal(active->GetName()))
+  {
+    return active;
+  }
+  int pass = 0;
+  for (vtkDataSetAttributes* a : { static_cast<vtkDataSetAttributes*>(data->GetPointData()),
+         static_cast<vtkDataSetAttributes*>(data->GetCellData()) })
+  {
+    cell = pass++ == 1;
+    for (int i = 0; i < a->GetNumberOfArrays(); ++i)
+    {
+      vtkDataArray* array = a->GetArray(i);
+      if (array && !Internal(array->GetName()) && array->GetNumberOfComponents() == components)
+      {
+        return array;
+      }
+    }
+  }
+  return nullptr;
+}
+
+/** |array| as a new one-component array named "|name|" (contours of a vector's magnitude). */
+vtkSmartPointer<vtkDataArray> Magnitude(vtkDataArray* array)
+{
+  vtkNew<vtkDoubleArray> out;
+  out->SetName(("|" + std::string(array->GetName()) + "|").c_str());
+  out->SetNumberOfTuples(array->GetNumberOfTuples());
+  const int nc = array->GetNumberOfComponents();
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    double sum = 0;
+    for (int c = 0; c < nc; ++c)
+    {
+      const double x = array->GetComponent(i, c);
+      sum += x * x;
+    }
+    out->SetValue(i, std::sqrt(sum));
+  }
+  return out;
+}
+}
+
+const vtkPlumeParameterTable& vtkPlumeDerivedGeometry::GetParameterTable()
+{
+  static const vtkPlumeParameterTable table = [] {
+    using T = vtkPlumeDerivedGeometry;
+    vtkPlumeParameterTable t("vtkPlumeDerivedGeometry", "derived");
+    t.Choice("source", "Operation", "contour")
+      .Doc("What is derived from the `input` dataset.")
+      .Choice("contour", CONTOUR, "isosurfaces of `array` at `values` (vtkContourFilter)")
+      .Choice("slice", SLICE, "the cut by the plane `origin`/`normal` (vtkCutter)")
+      .Choice("streamlines", STREAMLINES, "streamlines (vtkStreamTracer, RK4) from the seed line or `seeds`")
+      .Choice("stream_surface", STREAM_SURFACE, "a stream surface from the seed line (vtkStreamSurface)")
+      .Choice("ribbon", RIBBON, "streamlines widened into ribbons of `ribbon_width` (vtkRibbonFilter)")
+      .Choice("threshold", THRESHOLD, "the cells whose `array` lies in `values` [lower, upper] (vtkThreshold)")
+      .Choice("clip", CLIP, "the half on the `normal`'s side of the plane `origin`/`normal` (vtkTableBasedClipDataSet)")
+      .Bind(&T::SetOperation, &T::GetOperation);
+    t.Text("array", "ArrayName", "")
+      .Doc("Scalar array (point or cell) of contour and threshold; a vector is taken by magnitude; empty: the "
+           "active scalars, else the first one-component array.")
+      .Bind(&T::SetArrayName, &T::GetArrayName);
+    t.Text("vectors", "VectorArrayName", "")
+      .Doc("Vector array of streamlines, stream_surface and ribbon; empty: the active vectors, else the first "
+           "3-component array.")
+      .Bind(&T::SetVectorArrayName, &T::GetVectorArrayName);
+    t.Choice("coordinates", "Coordinates", "relative")
+      .Doc("How `origin` and the seed points are given.")
+      .Choice("relative", RELATIVE, "fractions of the input's bounds (0 = minimum, 1 = maximum on each axis)")
+      .Choice("world", WORLD, "model coordinates")
+      .Bind(&T::SetCoordinates, &T::GetCoordinates);
+    t.Vector3("origin", "Origin", { 0.5, 0.5, 0.5 })
+      .Doc("A point of the slice or clip plane (default: the centre).")
+      .Bind(&T::SetOrigin, &T::GetOrigin);
+    t.Vector3("normal", "Normal", { 1, 0, 0 })
+      .Doc("Normal of the slice or clip plane (not zero).")
+      .Bind(&T::SetNormal, &T::GetNormal);
+    t.Vector3("seed_point1", "SeedPoint1", { 0.5, 0.1, 0.5 })
+      .Doc("First end of the seed line (default: across the centre along y).")
+      .Bind(&T::SetSeedPoint1, &T::GetSeedPoint1);
+    t.Vector3("seed_point2", "SeedPoint2", { 0.5, 0.9, 0.5 })
+      .Doc("Second end of the seed line.")
+      .Bind(&T::SetSeedPoint2, &T::GetSeedPoint2);
+    t.Integer("seed_resolution", "SeedResolution", 20)
+      .Between(1, 100000)
+      .Doc("Segments of the seed line (seeds: one more).")
+      .Bind(&T::SetSeedResolution, &T::GetSeedResolution);
+    t.Choice("direction", "IntegrationDirection", "both")
+      .Doc("Direction streamlines and stream surfaces are traced in.")
+      .Choice("forward", FORWARD, "along the flow")
+      .Choice("backward", BACKWARD, "against the flow")
+      .Choice("both", BOTH, "both ways from each seed")
+      .Bind(&T::SetIntegrationDirection, &T::GetIntegrationDirection);
+    t.Real("maximum_length", "MaximumLength", 0.0)
+      .Between(0.0, 1e30)
+      .Units("model units")
+      .Doc("Longest streamline; 0: the diagonal of the input's bounds.")
+      .Bind(&T::SetMaximumLength, &T::GetMaximumLength);
+    t.Real("step", "StepLength", 0.25)
+      .Between(0.001, 100.0)
+      .Units("cell lengths")
+      .Doc("Integration step of streamlines and stream surfaces.")
+      .Bind(&T::SetStepLength, &T::GetStepLength);
+    t.Real("terminal_speed", "TerminalSpeed", 1e-12)
+      .Between(0.0, 1e30)
+      .Doc("Streamlines stop below this speed.")
+      .Bind(&T::SetTerminalSpeed, &T::GetTerminalSpeed);
+    t.Real("ribbon_width", "RibbonWidth", 0.0)
+      .Between(0.0, 1e30)
+      .Units("model units")
+      .Doc("Full width of ribbons; 0: 1 % of the diagonal of the input's bounds.")
+      .Bind(&T::SetRibbonWidth, &T::GetRibbonWidth);
+    t.Boolean("iterative_seeding", "IterativeSeeding", false)
+      .Doc("vtkStreamSurface's iterative version: adds seeds where the surface spreads (better surface, slower).")
+      .Bind(&T::SetIterativeSeeding, &T::GetIterativeSeeding);
+    t.Boolean("inside_out", "InsideOut", false)
+      .Doc("Clip: keep the half against the normal instead.")
+      .Bind(&T::SetInsideOut, &T::GetInsideOut);
+    return t;
+  }();
+  return table;
+}
+
+vtkPlumeDerivedGeometry::vtkPlumeDerivedGeometry()
+{
+  this->SetNumberOfInputPorts(2);
+  GetParameterTable().ApplyDefaults(this);
+}
+
+vtkPlumeDerivedGeometry::~vtkPlumeDerivedGeometry()
+{
+  this->SetArrayName(nullptr);
+  this->SetVectorArrayName(nullptr);
+}
+
+void vtkPlumeDerivedGeometry::SetValues(const std::vector<double>& values)
+{
+  if (values != this->Values)
+  {
+    this->Values = values;
+    this->Modified();
+  }
+}
+
+int vtkPlumeDerivedGeometry::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int vtkPlumeDerivedGeometry::RequestDataObject(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  const bool grid = this->Operation == THRESHOLD || this->Operation == CLIP;
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  vtkDataObject* output = info->Get(vtkDataObject::DATA_OBJECT());
+  if (!output || (grid ? !vtkUnstructuredGrid::SafeDownCast(output) : !vtkPolyData::SafeDownCast(output)))
+  {
+    vtkSmartPointer<vtkDataObject> made;
+    if (grid)
+    {
+      made = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    }
+    else
+    {
+      made = vtkSmartPointer<vtkPolyData>::New();
+    }
+    info->Set(vtkDataObject::DATA_OBJECT(), made);
+  }
+  return 1;
+}
+
+double vtkPlumeDerivedGeometry::Median(vtkDataArray* array, vtkDataArray* mask)
+{
+  std::vector<double> values;
+  values.reserve(static_cast<size_t>(array->GetNumberOfTuples()));
+  const int nc = array->GetNumberOfComponents();
+  const bool useMask = mask && mask->GetNumberOfTuples() == array->GetNumberOfTuples();
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    if (useMask && mask->GetComponent(i, 0) == 0)
+    {
+      continue;
+    }
+    double x = 0;
+    if (nc == 1)
+    {
+      x = array->GetComponent(i, 0);
+    }
+    else
+    {
+      for (int c = 0; c < nc; ++c)
+      {
+        x += array->GetComponent(i, c) * array->GetComponent(i, c);
+      }
+      x = std::sqrt(x);
+    }
+    if (std::isfinite(x))
+    {
+      values.push_back(x);
+    }
+  }
+  if (values.empty())
+  {
+    return std::nan("");
+  }
+  const size_t mid = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
+  return values[mid];
+}
+
+int vtkPlumeDerivedGeometry::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->LastError.clear();
+  this->UsedValues.clear();
+  this->UsedArrayName.clear();
+  this->UsedCellData = false;
+  vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
+  vtkDataSet* seeds = inputVector[1]->GetNumberOfInformationObjects() > 0 ? vtkDataSet::GetData(inputVector[1], 0) : nullptr;
+  vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    this->LastError = "no input dataset";
+    return 0;
+  }
+  if (!this->Derive(input, seeds, output))
+  {
+    output->Initialize();
+    return 0;
+  }
+  return 1;
+}
+
+bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDataObject* output)
+{
+  const std::string operation = OperationKeys[this->Operation];
+  auto fail = [this, &operation](const std::string& why) {
+    this->LastError = operation + ": " + why;
+    return false;
+  };
+  if (input->GetNumberOfPoints() < 1 || input->GetNumberOfCells() < 1)
+  {
+    return fail("the input has no cells");
+  }
+  double bounds[6];
+  input->GetBounds(bounds);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  // relative coordinates are fractions of the bounds
+  auto place = [this, &bounds](const double in[3], double out[3]) {
+    for (int a = 0; a < 3; ++a)
+    {
+      out[a] = this->Coordinates == RELATIVE ? bounds[2 * a] + in[a] * (bounds[2 * a + 1] - bounds[2 * a]) : in[a];
+    }
+  };
+  const std::string coordinatesNote =
+    this->Coordinates == RELATIVE ? " (relative: fractions of the bounds; 'coordinates': \"world\" for model coordinates)" : "";
+  auto inside = [&bounds, diagonal](const double p[3]) {
+    const double tolerance = 1e-6 * diagonal;
+    for (int a = 0; a < 3; ++a)
+    {
+      if (!(p[a] >= bounds[2 * a] - tolerance && p[a] <= bounds[2 * a + 1] + tolerance))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::ostringstream boundsText;
+  boundsText << "[" << bounds[0] << ", " << bounds[1] << ", " << bounds[2] << ", " << bounds[3] << ", " << bounds[4]
+             << ", " << bounds[5] << "]";
+
+  const bool scalarOperation = this->Operation == CONTOUR || this->Operation == THRESHOLD;
+  const bool flowOperation =
+    this->Operation == STREAMLINES || this->Operation == STREAM_SURFACE || this->Operation == RIBBON;
+
+  // the array the operation works on
+  vtkSmartPointer<vtkDataSet> data = input;
+  bool cell = false;
+  vtkDataArray* array = nullptr;
+  if (scalarOperation || flowOperation)
+  {
+    const std::string key = scalarOperation ? "array" : "vectors";
+    const char* given = scalarOperation ? this->ArrayName : this->VectorArrayName;
+    if (given && *given)
+    {
+      array = FindArray(input, given, cell, this->Operation == THRESHOLD);
+      if (!array)
+      {
+        return fail("parameter '" + key + "': no array '" + given + "' in the input (" + ListArrays(input) + ")");
+      }
+    }
+    else
+    {
+      array = DefaultArray(input, flowOperation, cell);
+      if (!array)
+      {
+        return fail(std::string("the input has no ") + (flowOperation ? "3-component (vector)" : "scalar") +
+          " array to use (" + ListArrays(input) + ")");
+      }
+    }
+    if (flowOperation && array->GetNumberOfComponents() != 3)
+    {
+      return fail("parameter 'vectors': array '" + std::string(array->GetName()) + "' has " +
+        std::to_string(array->GetNumberOfComponents()) + " components, not 3");
+    }
+    this->UsedArrayName = array->GetName();
+  }
+  // Cell arrays: threshold uses them as they are (no boundary values interpolated
+  // in); the others need point values, so every cell array is interpolated.
+  if (this->Operation != THRESHOLD && input->GetCellData()->GetNumberOfArrays() > 0 &&
+    (cell || (!scalarOperation && !flowOperation)))
+  {
+    vtkNew<vtkCellDataToPointData> toPoints;
+    toPoints->SetInputData(input);
+    toPoints->PassCellDataOn();
+    toPoints->ProcessAllArraysOn();
+    toPoints->Update();
+    data = toPoints->GetOutput();
+    if (array)
+    {
+      array = data->GetPointData()->GetArray(array->GetName());
+      cell = false;
+    }
+  }
+  std::string arrayName = array ? array->GetName() : "";
+  if (scalarOperation && array->GetNumberOfComponents() != 1)
+  {
+    // the magnitude of a vector, as a new array of the same association
+    vtkSmartPointer<vtkDataSet> copy;
+    copy.TakeReference(data->NewInstance());
+    copy->ShallowCopy(data);
+    vtkSmartPointer<vtkDataArray> magnitude = Magnitude(array);
+    (cell ? static_cast<vtkDataSetAttributes*>(copy->GetCellData())
+          : static_cast<vtkDataSetAttributes*>(copy->GetPointData()))
+      ->AddArray(magnitude);
+    data = copy;
+    array = magnitude;
+    arrayName = magnitude->GetName();
+  }
+  this->UsedArrayName = arrayName;
+  this->UsedCellData = cell;
+  const int association = cell ? vtkDataObject::FIELD_ASSOCIATION_CELLS : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+
+  if (scalarOperation)
+  {
+    vtkDataArray* mask = cell ? nullptr : data->GetPointData()->GetArray("vtkValidPointMask");
+    double range[2];
+    array->GetRange(range, -1);
+    this->UsedValues = this->Values;
+    if (this->UsedValues.empty())
+    {
+      const double median = Median(array, mask);
+      if (!std::isfinite(median))
+      {
+        return fail("parameter 'array': '" + arrayName + "' has no finite values");
+      }
+      this->UsedValues.push_back(median);
+    }
+    for (double v : this->UsedValues)
+    {
+      if (!std::isfinite(v))
+      {
+        return fail("parameter 'values': " + Num(v) + " is not a finite number");
+      }
+    }
+    if (this->Operation == THRESHOLD && this->UsedValues.size() > 2)
+    {
+      return fail("parameter 'values': give [lower] or [lower, upper], got " +
+        std::to_string(this->UsedValues.size()) + " values");
+    }
+    if (this->Operation == THRESHOLD && this->UsedValues.size() == 2 && this->UsedValues[0] > this->UsedValues[1])
+    {
+      return fail("parameter 'values': lower " + Num(this->UsedValues[0]) + " is above upper " +
+        Num(this->UsedValues[1]));
+    }
+    if (this->Operation == CONTOUR)
+    {
+      vtkNew<vtkContourFilter> contour;
+      contour->SetInputData(data);
+      contour->SetInputArrayToProcess(0, 0, 0, association, arrayName.c_str());
+      for (size_t i = 0; i < this->UsedValues.size(); ++i)
+      {
+        contour->SetValue(static_cast<int>(i), this->UsedValues[i]);
+      }
+      contour->ComputeScalarsOn();
+      contour->ComputeNormalsOn();
+      contour->Update();
+      if (contour->GetOutput()->GetNumberOfCells() == 0)
+      {
+        std::string values;
+        for (double v : this->UsedValues)
+        {
+          values += (values.empty() ? "" : ", ") + Num(v);
+        }
+        return fail("parameter 'values': the contour of '" + arrayName + "' at [" + values +
+          "] is empty (its values range over [" + Num(range[0]) + ", " + Num(range[1]) + "])");
+      }
+      output->ShallowCopy(contour->GetOutput());
+      return true;
+    }
+    vtkNew<vtkThreshold> threshold;
+    threshold->SetInputData(data);
+    threshold->SetInputArrayToProcess(0, 0, 0, association, arrayName.c_str());
+    threshold->SetLowerThreshold(this->UsedValues[0]);
+    threshold->SetUpperThreshold(this->UsedValues.size() > 1 ? this->UsedValues[1] : VTK_DOUBLE_MAX);
+    threshold->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
+    threshold->Update();
+    if (threshold->GetOutput()->GetNumberOfCells() == 0)
+    {
+      return fail("parameter 'values': no cell of '" + arrayName + "' lies in [" + Num(this->UsedValues[0]) + ", " +
+        (this->UsedValues.size() > 1 ? Num(this->UsedValues[1]) : std::string("inf")) + "] (its values range over [" +
+        Num(range[0]) + ", " + Num(range[1]) + "])");
+    }
+    output->ShallowCopy(threshold->GetOutput());
+    return true;
+  }
+
+  if (this->Operation == SLICE || this->Operation == CLIP)
+  {
+    if (!(vtkMath::Norm(this->Normal) > 0))
+    {
+      return fail("parameter 'normal' " + Vec(this->Normal) + " is zero: a plane needs a direction");
+    }
+    double origin[3];
+    place(this->Origin, origin);
+    if (!inside(origin))
+    {
+      return fail("parameter 'origin' " + Vec(this->Origin) + " lies outside the input's bounds " +
+        boundsText.str() + coordinatesNote);
+    }
+    vtkNew<vtkPlane> plane;
+    plane->SetOrigin(origin);
+    plane->SetNormal(this->Normal);
+    if (this->Operation == SLICE)
+    {
+      vtkNew<vtkCutter> cutter;
+      cutter->SetInputData(data);
+      cutter->SetCutFunction(plane);
+      cutter->Update();
+      if (cutter->GetOutput()->GetNumberOfCells() == 0)
+      {
+        return fail("the plane through " + Vec(origin) + " with normal " + Vec(this->Normal) + " cuts no cell");
+      }
+      output->ShallowCopy(cutter->GetOutput());
+      return true;
+    }
+    vtkNew<vtkTableBasedClipDataSet> clip;
+    clip->SetInputData(data);
+    clip->SetClipFunction(plane);
+    clip->SetInsideOut(this->InsideOut);
+    clip->Update();
+    if (clip->GetOutput()->GetNumberOfCells() == 0)
+    {
+      return fail("the plane through " + Vec(origin) + " with normal " + Vec(this->Normal) +
+        " leaves no cell on the kept side (inside_out " + (this->InsideOut ? "true" : "false") + ")");
+    }
+    output->ShallowCopy(clip->GetOutput());
+    return true;
+  }
+
+  // streamlines, stream surface, ribbon
+  vtkSmartPointer<vtkDataSet> seedData = seeds;
+  double p1[3], p2[3];
+  place(this->SeedPoint1, p1);
+  place(this->SeedPoint2, p2);
+  if (!seedData)
+  {
+    if (!inside(p1))
+    {
+      return fail("parameter 'seed_point1' " + Vec(this->SeedPoint1) + " lies outside the input's bounds " +
+        boundsText.str() + coordinatesNote);
+    }
+    if (!inside(p2))
+    {
+      return fail("parameter 'seed_point2' " + Vec(this->SeedPoint2) + " lies outside the input's bounds " +
+        boundsText.str() + coordinatesNote);
+    }
+    if (this->Operation == STREAM_SURFACE && !(std::sqrt(vtkMath::Distance2BetweenPoints(p1, p2)) > 0))
+    {
+      return fail("parameters 'seed_point1' and 'seed_point2' are the same point " + Vec(p1) +
+        ": a stream surface needs a seed line");
+    }
+    vtkNew<vtkLineSource> line;
+    line->SetPoint1(p1);
+    line->SetPoint2(p2);
+    line->SetResolution(this->SeedResolution);
+    line->Update();
+    seedData = line->GetOutput();
+  }
+  else if (seedData->GetNumberOfPoints() < (this->Operation == STREAM_SURFACE ? 2 : 1))
+  {
+    return fail("the seeds dataset has " + std::to_string(seedData->GetNumberOfPoints()) + " points");
+  }
+  const double length = this->MaximumLength > 0 ? this->MaximumLength : diagonal;
+  auto makeTracer = [&](int direction) {
+    vtkSmartPointer<vtkStreamTracer> tracer;
+    if (this->Operation == STREAM_SURFACE)
+    {
+      auto surface = vtkSmartPointer<vtkStreamSurface>::New();
+      surface->SetUseIterativeSeeding(this->IterativeSeeding);
+      tracer = surface;
+    }
+    else
+    {
+      tracer = vtkSmartPointer<vtkStreamTracer>::New();
+    }
+    tracer->SetInputData(data);
+    tracer->SetSourceData(seedData);
+    tracer->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, arrayName.c_str());
+    tracer->SetIntegratorTypeToRungeKutta4();
+    tracer->SetIntegrationStepUnit(vtkStreamTracer::CELL_LENGTH_UNIT);
+    tracer->SetInitialIntegrationStep(this->StepLength);
+    tracer->SetMaximumPropagation(length);
+    // Steps to reach the length with cells of the mean size. vtkStreamSurface also
+    // resamples every streamline to this many points (its ruled surface), so the
+    // default 2000 made 1.6 M points on the office.
+    const double cell = std::cbrt(std::max(1e-300, (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) *
+                                    std::max(bounds[5] - bounds[4], 1e-6 * diagonal) /
+                                    std::max<vtkIdType>(1, data->GetNumberOfCells())));
+    const double steps = std::ceil(length / (this->StepLength * cell));
+    tracer->SetMaximumNumberOfSteps(static_cast<int>(std::min(std::max(steps, 10.0), 20000.0)));
+    tracer->SetTerminalSpeed(this->TerminalSpeed);
+    tracer->SetIntegrationDirection(direction);
+    tracer->SetComputeVorticity(this->Operation == RIBBON);
+    tracer->Update();
+    return tracer;
+  };
+  vtkSmartPointer<vtkPolyData> tracedData;
+  if (this->Operation == STREAM_SURFACE && this->IntegrationDirection == BOTH)
+  {
+    // the ruled surface joins consecutive lines: trace each way on its own
+    vtkNew<vtkAppendPolyData> append;
+    for (int direction : { vtkStreamTracer::FORWARD, vtkStreamTracer::BACKWARD })
+    {
+      auto tracer = makeTracer(direction);
+      auto* part = vtkPolyData::SafeDownCast(tracer->GetOutputDataObject(0));
+      if (part && part->GetNumberOfCells() > 0)
+      {
+        vtkNew<vtkPolyData> copy;
+        copy->ShallowCopy(part);
+        append->AddInputData(copy);
+      }
+    }
+    if (append->GetNumberOfInputConnections(0) > 0)
+    {
+      append->Update();
+      tracedData = append->GetOutput();
+    }
+  }
+  else
+  {
+    auto tracer = makeTracer(this->IntegrationDirection == FORWARD ? vtkStreamTracer::FORWARD
+        : this->IntegrationDirection == BACKWARD                   ? vtkStreamTracer::BACKWARD
+                                                                   : vtkStreamTracer::BOTH);
+    tracedData = vtkPolyData::SafeDownCast(tracer->GetOutputDataObject(0));
+  }
+  vtkPolyData* traced = tracedData;
+  const std::string seedText = seeds ? "the seeds dataset (" + std::to_string(seeds->GetNumberOfPoints()) + " points)"
+                                     : "the seed line " + Vec(p1) + " - " + Vec(p2);
+  if (!traced || traced->GetNumberOfCells() == 0 ||
+    (this->Operation == STREAM_SURFACE && traced->GetNumberOfPolys() + traced->GetNumberOfStrips() == 0))
+  {
+    return fail("nothing traced from " + seedText + " through '" + arrayName +
+      "': the seeds lie outside the data or where the flow is slower than terminal_speed " + Num(this->TerminalSpeed));
+  }
+  if (this->Operation == RIBBON)
+  {
+    vtkNew<vtkRibbonFilter> ribbon;
+    ribbon->SetInputData(traced);
+    ribbon->SetWidth(0.5 * (this->RibbonWidth > 0 ? this->RibbonWidth : 0.01 * diagonal)); // half width
+    ribbon->Update();
+    if (ribbon->GetOutput()->GetNumberOfCells() == 0)
+    {
+      return fail("the streamlines from " + seedText + " are too short to make ribbons");
+    }
+    output->ShallowCopy(ribbon->GetOutput());
+    return true;
+  }
+  output->ShallowCopy(traced);
+  return true;
+}
+
+void vtkPlumeDerivedGeometry::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Operation: " << OperationKeys[this->Operation] << "\n";
+  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "") << "\n";
+  os << indent << "VectorArrayName: " << (this->VectorArrayName ? this->VectorArrayName : "") << "\n";
+  os << indent << "Coordinates: " << (this->Coordinates == RELATIVE ? "relative" : "world") << "\n";
+  os << indent << "Origin: " << Vec(this->Origin) << "\n";
+  os << indent << "Normal: " << Vec(this->Normal) << "\n";
+  os << indent << "SeedPoint1: " << Vec(this->SeedPoint1) << "\n";
+  os << indent << "SeedPoint2: " << Vec(this->SeedPoint2) << "\n";
+  os << indent << "SeedResolution: " << this->SeedResolution << "\n";
+  os << indent << "IntegrationDirection: " << this->IntegrationDirection << "\n";
+  os << indent << "MaximumLength: " << this->MaximumLength << "\n";
+  os << indent << "StepLength: " << this->StepLength << "\n";
+  os << indent << "TerminalSpeed: " << this->TerminalSpeed << "\n";
+  os << indent << "RibbonWidth: " << this->RibbonWidth << "\n";
+  os << indent << "IterativeSeeding: " << this->IterativeSeeding << "\n";
+  os << indent << "InsideOut: " << this->InsideOut << "\n";
+  os << indent << "Values: " << this->Values.size() << "\n";
+}
