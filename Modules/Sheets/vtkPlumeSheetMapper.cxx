@@ -902,7 +902,7 @@ void vtkPlumeSheetMapper::RenderGrid(vtkRenderer* ren, vtkActor* actor, vtkPolyD
   impl.GridVolume->SetUserMatrix(actor->GetIsIdentity() ? nullptr : actor->GetMatrix());
   impl.GridMapper->SetSampleDistance(this->GridSampleDistance);
   impl.GridMapper->SetUseOpaqueDepth(this->BoundedByDepth);
-  impl.GridMapper->SetOpacityThreshold(0.999);
+  impl.GridMapper->SetTerminationError(0.001); // unlit: rays stop at opacity 0.999
   impl.GridMapper->SetEmptySpaceSkipping(true);
   impl.GridMapper->SetJitter(true);
   impl.GridMapper->Render(ren, impl.GridVolume);
