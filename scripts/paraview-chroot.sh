@@ -7,11 +7,11 @@
 #
 # Usage: bash scripts/paraview-chroot.sh COMMAND [ARGS...]
 #   PLUME_PVROOT   the root (default: /var/cache/plume/pvroot)
-#   PLUME_DATA_DIR a data folder to make visible too (default: /work/shared/data if present)
+#   PLUME_DATA_DIR a data folder to make visible too (default: ../shared/data beside the checkout, if present)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 pvroot="${PLUME_PVROOT:-/var/cache/plume/pvroot}"
-data="${PLUME_DATA_DIR:-/work/shared/data}"
+data="${PLUME_DATA_DIR:-$root/../shared/data}"
 if [ ! -d "$pvroot/usr" ]; then
   echo "paraview-chroot: no root at $pvroot (run scripts/paraview-root.sh)" >&2
   exit 2

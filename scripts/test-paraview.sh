@@ -37,7 +37,11 @@ if [ -z "$plugin" ]; then
   echo "test-paraview: PlumeParaView.so not found under $build" >&2
   exit 1
 fi
-data="${PLUME_DATA_DIR:-/work/shared/data}"
+# the shared data beside the checkout, as the main build's default; resolved,
+# since the root binds the real folder
+data="${PLUME_DATA_DIR:-$root/../shared/data}"
+data="$(cd "$data" && pwd -P)"
+export PLUME_DATA_DIR="$data"
 out="$build/Testing"
 mkdir -p "$out"
 failed=()

@@ -20,7 +20,9 @@ vtkPlumeSheetRepresentation::vtkPlumeSheetRepresentation()
   , Actor(vtkSmartPointer<vtkActor>::New())
 {
   this->Actor->SetMapper(this->Mapper);
-  vtkMath::UninitializeBounds(this->DataBounds);
+  this->Prop = this->Actor;
+  // the smoke blends over what is behind it: ranks composite back to front
+  this->OrderedCompositing = true;
 }
 
 vtkPlumeSheetRepresentation::~vtkPlumeSheetRepresentation() = default;
@@ -52,13 +54,14 @@ int vtkPlumeSheetRepresentation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkMath::UninitializeBounds(this->DataBounds);
-  this->Cache = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPolyData> cache;
+  this->Cache = cache;
   if (inputVector[0]->GetNumberOfInformationObjects() == 1)
   {
     vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
     if (auto* poly = vtkPolyData::SafeDownCast(input))
     {
-      this->Cache->ShallowCopy(poly);
+      cache->ShallowCopy(poly);
     }
     else if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
     {
@@ -76,75 +79,22 @@ int vtkPlumeSheetRepresentation::RequestData(
       if (append->GetNumberOfInputConnections(0) > 0)
       {
         append->Update();
-        this->Cache->ShallowCopy(append->GetOutput());
+        cache->ShallowCopy(append->GetOutput());
       }
     }
-    if (this->Cache->GetNumberOfPoints() > 0)
+    if (cache->GetNumberOfPoints() > 0)
     {
-      this->Cache->GetBounds(this->DataBounds);
+      cache->GetBounds(this->DataBounds);
     }
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
-int vtkPlumeSheetRepresentation::ProcessViewRequest(
-  vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
+bool vtkPlumeSheetRepresentation::PrepareRender(vtkDataObject* piece)
 {
-  if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
-  {
-    return 0;
-  }
-  if (request_type == vtkPVView::REQUEST_UPDATE())
-  {
-    vtkPVView::SetPiece(inInfo, this, this->Cache);
-    vtkPVRenderView::SetGeometryBounds(inInfo, this, this->DataBounds);
-    // The smoke blends over what is behind it: the ranks' images need
-    // blending, not a depth test (ordered compositing does that).
-    outInfo->Set(vtkPVRenderView::NEED_ORDERED_COMPOSITING(), 1);
-    vtkPVRenderView::SetOrderedCompositingConfiguration(
-      inInfo, this, vtkPVRenderView::USE_BOUNDS_FOR_REDISTRIBUTION, this->DataBounds);
-    vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
-  }
-  else if (request_type == vtkPVView::REQUEST_UPDATE_LOD())
-  {
-    vtkPVRenderView::SetRequiresDistributedRenderingLOD(inInfo, this, true);
-  }
-  else if (request_type == vtkPVView::REQUEST_RENDER())
-  {
-    vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
-    this->Mapper->SetInputDataObject(piece);
-    auto* poly = vtkPolyData::SafeDownCast(piece);
-    this->Actor->SetVisibility(this->GetVisibility() && poly && poly->GetNumberOfCells() > 0);
-  }
-  return 1;
-}
-
-bool vtkPlumeSheetRepresentation::AddToView(vtkView* view)
-{
-  vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
-  if (rview)
-  {
-    rview->GetRenderer()->AddActor(this->Actor);
-    return this->Superclass::AddToView(view);
-  }
-  return false;
-}
-
-bool vtkPlumeSheetRepresentation::RemoveFromView(vtkView* view)
-{
-  vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
-  if (rview)
-  {
-    rview->GetRenderer()->RemoveActor(this->Actor);
-    return this->Superclass::RemoveFromView(view);
-  }
-  return false;
-}
-
-void vtkPlumeSheetRepresentation::SetVisibility(bool visible)
-{
-  this->Superclass::SetVisibility(visible);
-  this->Actor->SetVisibility(visible);
+  this->Mapper->SetInputDataObject(piece);
+  auto* poly = vtkPolyData::SafeDownCast(piece);
+  return poly && poly->GetNumberOfCells() > 0;
 }
 
 void vtkPlumeSheetRepresentation::PrintSelf(ostream& os, vtkIndent indent)

@@ -18,27 +18,23 @@
 #define vtkPlumeSheetRepresentation_h
 
 #include "PlumeParaViewRepresentationsModule.h" // For export macro
-#include "vtkPVDataRepresentation.h"
+#include "vtkPlumeRepresentation.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
 class vtkActor;
 class vtkPlumeSheetMapper;
 class vtkPolyData;
 
-class PLUMEPARAVIEWREPRESENTATIONS_EXPORT vtkPlumeSheetRepresentation : public vtkPVDataRepresentation
+class PLUMEPARAVIEWREPRESENTATIONS_EXPORT vtkPlumeSheetRepresentation : public vtkPlumeRepresentation
 {
 public:
   static vtkPlumeSheetRepresentation* New();
-  vtkTypeMacro(vtkPlumeSheetRepresentation, vtkPVDataRepresentation);
+  vtkTypeMacro(vtkPlumeSheetRepresentation, vtkPlumeRepresentation);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** The mapper (the proxy's "Mapper" subproxy sets it). Default: one of its own. */
   void SetMapper(vtkPlumeSheetMapper* mapper);
   vtkPlumeSheetMapper* GetMapper();
-
-  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
-    vtkInformation* outInfo) override;
-  void SetVisibility(bool visible) override;
 
 protected:
   vtkPlumeSheetRepresentation();
@@ -46,13 +42,10 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  bool AddToView(vtkView* view) override;
-  bool RemoveFromView(vtkView* view) override;
+  bool PrepareRender(vtkDataObject* piece) override;
 
   vtkSmartPointer<vtkPlumeSheetMapper> Mapper;
   vtkSmartPointer<vtkActor> Actor;
-  vtkSmartPointer<vtkPolyData> Cache;
-  double DataBounds[6];
 
 private:
   vtkPlumeSheetRepresentation(const vtkPlumeSheetRepresentation&) = delete;

@@ -21,7 +21,7 @@ vtkPlumeVelocityLinesRepresentation::vtkPlumeVelocityLinesRepresentation()
   , Actor(vtkSmartPointer<vtkActor>::New())
 {
   this->Actor->SetMapper(this->Mapper);
-  vtkMath::UninitializeBounds(this->DataBounds);
+  this->Prop = this->Actor; // opaque lines: ranks composite by depth
 }
 
 vtkPlumeVelocityLinesRepresentation::~vtkPlumeVelocityLinesRepresentation() = default;
@@ -63,9 +63,9 @@ int vtkPlumeVelocityLinesRepresentation::RequestData(
   if (inputVector[0]->GetNumberOfInformationObjects() == 1)
   {
     vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
-    this->Cache = vtkPlumeImageInput::Extract(input, this);
+    vtkSmartPointer<vtkImageData> image = vtkPlumeImageInput::Extract(input, this);
     auto* dataset = vtkDataSet::SafeDownCast(input);
-    if (!this->Cache && (dataset ? dataset->GetNumberOfPoints() > 0 : input != nullptr))
+    if (!image && (dataset ? dataset->GetNumberOfPoints() > 0 : input != nullptr))
     {
       // Not an image: resample onto one over the (local) bounds.
       vtkNew<vtkResampleToImage> resample;
@@ -73,82 +73,34 @@ int vtkPlumeVelocityLinesRepresentation::RequestData(
       resample->SetSamplingDimensions(this->ResampleDimensions);
       resample->SetUseInputBounds(true);
       resample->Update();
-      this->Cache = vtkSmartPointer<vtkImageData>::New();
-      this->Cache->ShallowCopy(resample->GetOutput());
+      image = vtkSmartPointer<vtkImageData>::New();
+      image->ShallowCopy(resample->GetOutput());
     }
-    if (this->Cache && this->Cache->GetNumberOfPoints() > 0)
+    if (image && image->GetNumberOfPoints() > 0)
     {
-      this->Cache->GetBounds(this->DataBounds);
+      image->GetBounds(this->DataBounds);
     }
+    this->Cache = image;
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
-int vtkPlumeVelocityLinesRepresentation::ProcessViewRequest(
-  vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
+bool vtkPlumeVelocityLinesRepresentation::PrepareRender(vtkDataObject* piece)
 {
-  if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
+  this->Mapper->SetInputDataObject(piece);
+  if (this->LookupTable)
   {
-    return 0;
+    // ParaView's colour map and its range, the same on every rank (the
+    // mapper would otherwise set the table's range to its local speeds).
+    this->Mapper->SetLookupTable(this->LookupTable);
+    this->Mapper->SetUseDataRange(false);
+    this->Mapper->SetScalarRange(this->LookupTable->GetRange());
   }
-  if (request_type == vtkPVView::REQUEST_UPDATE())
+  else
   {
-    // Opaque lines: depth compositing across ranks, no ordering needed.
-    vtkPVView::SetPiece(inInfo, this, this->Cache);
-    vtkPVRenderView::SetGeometryBounds(inInfo, this, this->DataBounds);
-    vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
+    this->Mapper->SetUseDataRange(true);
   }
-  else if (request_type == vtkPVView::REQUEST_UPDATE_LOD())
-  {
-    vtkPVRenderView::SetRequiresDistributedRenderingLOD(inInfo, this, true);
-  }
-  else if (request_type == vtkPVView::REQUEST_RENDER())
-  {
-    vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
-    this->Mapper->SetInputDataObject(piece);
-    if (this->LookupTable)
-    {
-      // ParaView's colour map and its range, the same on every rank (the
-      // mapper would otherwise set the table's range to its local speeds).
-      this->Mapper->SetLookupTable(this->LookupTable);
-      this->Mapper->SetUseDataRange(false);
-      this->Mapper->SetScalarRange(this->LookupTable->GetRange());
-    }
-    else
-    {
-      this->Mapper->SetUseDataRange(true);
-    }
-    this->Actor->SetVisibility(this->GetVisibility() && piece != nullptr);
-  }
-  return 1;
-}
-
-bool vtkPlumeVelocityLinesRepresentation::AddToView(vtkView* view)
-{
-  vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
-  if (rview)
-  {
-    rview->GetRenderer()->AddActor(this->Actor);
-    return this->Superclass::AddToView(view);
-  }
-  return false;
-}
-
-bool vtkPlumeVelocityLinesRepresentation::RemoveFromView(vtkView* view)
-{
-  vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
-  if (rview)
-  {
-    rview->GetRenderer()->RemoveActor(this->Actor);
-    return this->Superclass::RemoveFromView(view);
-  }
-  return false;
-}
-
-void vtkPlumeVelocityLinesRepresentation::SetVisibility(bool visible)
-{
-  this->Superclass::SetVisibility(visible);
-  this->Actor->SetVisibility(visible);
+  return piece != nullptr;
 }
 
 void vtkPlumeVelocityLinesRepresentation::PrintSelf(ostream& os, vtkIndent indent)

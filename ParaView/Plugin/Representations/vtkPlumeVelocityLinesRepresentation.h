@@ -20,7 +20,7 @@
 #define vtkPlumeVelocityLinesRepresentation_h
 
 #include "PlumeParaViewRepresentationsModule.h" // For export macro
-#include "vtkPVDataRepresentation.h"
+#include "vtkPlumeRepresentation.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
 class vtkActor;
@@ -29,11 +29,11 @@ class vtkPlumeVelocityGlyphMapper;
 class vtkScalarsToColors;
 
 class PLUMEPARAVIEWREPRESENTATIONS_EXPORT vtkPlumeVelocityLinesRepresentation
-  : public vtkPVDataRepresentation
+  : public vtkPlumeRepresentation
 {
 public:
   static vtkPlumeVelocityLinesRepresentation* New();
-  vtkTypeMacro(vtkPlumeVelocityLinesRepresentation, vtkPVDataRepresentation);
+  vtkTypeMacro(vtkPlumeVelocityLinesRepresentation, vtkPlumeRepresentation);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** The mapper (the proxy's "Mapper" subproxy sets it). Default: one of its own. */
@@ -49,9 +49,6 @@ public:
   vtkGetVector3Macro(ResampleDimensions, int);
   ///@}
 
-  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
-    vtkInformation* outInfo) override;
-  void SetVisibility(bool visible) override;
 
 protected:
   vtkPlumeVelocityLinesRepresentation();
@@ -59,15 +56,12 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  bool AddToView(vtkView* view) override;
-  bool RemoveFromView(vtkView* view) override;
+  bool PrepareRender(vtkDataObject* piece) override;
 
   vtkSmartPointer<vtkPlumeVelocityGlyphMapper> Mapper;
   vtkSmartPointer<vtkActor> Actor;
   vtkSmartPointer<vtkScalarsToColors> LookupTable;
-  vtkSmartPointer<vtkImageData> Cache;
   int ResampleDimensions[3] = { 64, 64, 64 };
-  double DataBounds[6];
 
 private:
   vtkPlumeVelocityLinesRepresentation(const vtkPlumeVelocityLinesRepresentation&) = delete;

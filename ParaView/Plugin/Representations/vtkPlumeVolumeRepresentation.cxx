@@ -26,7 +26,9 @@ vtkPlumeVolumeRepresentation::vtkPlumeVolumeRepresentation()
   this->Volume->SetProperty(this->Property);
   this->Volume->SetMapper(this->Mapper);
   this->Property->SetInterpolationTypeToLinear();
-  vtkMath::UninitializeBounds(this->DataBounds);
+  this->Prop = this->Volume;
+  // ray casting per rank: the ranks' images blend back to front
+  this->OrderedCompositing = true;
 }
 
 vtkPlumeVolumeRepresentation::~vtkPlumeVolumeRepresentation() = default;
@@ -66,86 +68,14 @@ int vtkPlumeVolumeRepresentation::RequestData(
   this->Cache = nullptr;
   if (inputVector[0]->GetNumberOfInformationObjects() == 1)
   {
-    this->Cache = vtkPlumeImageInput::Extract(vtkDataObject::GetData(inputVector[0], 0), this);
-    if (this->Cache)
+    vtkSmartPointer<vtkImageData> image = vtkPlumeImageInput::Extract(vtkDataObject::GetData(inputVector[0], 0), this);
+    if (image)
     {
-      this->Cache->GetBounds(this->DataBounds);
+      image->GetBounds(this->DataBounds);
     }
+    this->Cache = image;
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);
-}
-
-int vtkPlumeVolumeRepresentation::ProcessViewRequest(
-  vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
-{
-  if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
-  {
-    return 0;
-  }
-  if (request_type == vtkPVView::REQUEST_UPDATE())
-  {
-    vtkPVView::SetPiece(inInfo, this, this->Cache);
-    vtkPVRenderView::SetGeometryBounds(inInfo, this, this->DataBounds);
-    // Ray casting per rank needs the ranks' images blended front to back:
-    // the view sorts the ranks by these local bounds.
-    outInfo->Set(vtkPVRenderView::NEED_ORDERED_COMPOSITING(), 1);
-    vtkPVRenderView::SetOrderedCompositingConfiguration(
-      inInfo, this, vtkPVRenderView::USE_BOUNDS_FOR_REDISTRIBUTION, this->DataBounds);
-    vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
-  }
-  else if (request_type == vtkPVView::REQUEST_UPDATE_LOD())
-  {
-    vtkPVRenderView::SetRequiresDistributedRenderingLOD(inInfo, this, true);
-  }
-  else if (request_type == vtkPVView::REQUEST_RENDER())
-  {
-    vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
-    this->Mapper->SetInputDataObject(piece);
-    // ColorArrayName, applied here: the mapper subproxy may be set after it.
-    vtkInformation* array = this->GetInputArrayInformation(0);
-    const char* name = array && array->Has(vtkDataObject::FIELD_NAME())
-      ? array->Get(vtkDataObject::FIELD_NAME())
-      : nullptr;
-    if (name && name[0])
-    {
-      this->Mapper->SetScalarModeToUsePointFieldData();
-      this->Mapper->SelectScalarArray(name);
-    }
-    else
-    {
-      this->Mapper->SetScalarModeToDefault();
-    }
-    this->Volume->SetVisibility(this->GetVisibility() && piece != nullptr);
-  }
-  return 1;
-}
-
-bool vtkPlumeVolumeRepresentation::AddToView(vtkView* view)
-{
-  vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
-  if (rview)
-  {
-    rview->GetRenderer()->AddVolume(this->Volume);
-    return this->Superclass::AddToView(view);
-  }
-  return false;
-}
-
-bool vtkPlumeVolumeRepresentation::RemoveFromView(vtkView* view)
-{
-  vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
-  if (rview)
-  {
-    rview->GetRenderer()->RemoveVolume(this->Volume);
-    return this->Superclass::RemoveFromView(view);
-  }
-  return false;
-}
-
-void vtkPlumeVolumeRepresentation::SetVisibility(bool visible)
-{
-  this->Superclass::SetVisibility(visible);
-  this->Volume->SetVisibility(visible);
 }
 
 void vtkPlumeVolumeRepresentation::SetLookupTable(vtkScalarsToColors* lut)
@@ -168,6 +98,26 @@ void vtkPlumeVolumeRepresentation::SetInputArrayToProcess(
 {
   this->Superclass::SetInputArrayToProcess(idx, port, connection, fieldAssociation, name);
   this->Modified();
+}
+
+bool vtkPlumeVolumeRepresentation::PrepareRender(vtkDataObject* piece)
+{
+  this->Mapper->SetInputDataObject(piece);
+  // ColorArrayName, applied here: the mapper subproxy may be set after it.
+  vtkInformation* array = this->GetInputArrayInformation(0);
+  const char* name = array && array->Has(vtkDataObject::FIELD_NAME())
+    ? array->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  if (name && name[0])
+  {
+    this->Mapper->SetScalarModeToUsePointFieldData();
+    this->Mapper->SelectScalarArray(name);
+  }
+  else
+  {
+    this->Mapper->SetScalarModeToDefault();
+  }
+  return piece != nullptr;
 }
 
 void vtkPlumeVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)

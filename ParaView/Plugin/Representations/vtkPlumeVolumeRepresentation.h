@@ -24,7 +24,7 @@
 #define vtkPlumeVolumeRepresentation_h
 
 #include "PlumeParaViewRepresentationsModule.h" // For export macro
-#include "vtkPVDataRepresentation.h"
+#include "vtkPlumeRepresentation.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
 class vtkImageData;
@@ -34,20 +34,17 @@ class vtkScalarsToColors;
 class vtkVolume;
 class vtkVolumeProperty;
 
-class PLUMEPARAVIEWREPRESENTATIONS_EXPORT vtkPlumeVolumeRepresentation : public vtkPVDataRepresentation
+class PLUMEPARAVIEWREPRESENTATIONS_EXPORT vtkPlumeVolumeRepresentation : public vtkPlumeRepresentation
 {
 public:
   static vtkPlumeVolumeRepresentation* New();
-  vtkTypeMacro(vtkPlumeVolumeRepresentation, vtkPVDataRepresentation);
+  vtkTypeMacro(vtkPlumeVolumeRepresentation, vtkPlumeRepresentation);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** The mapper (the proxy's "Mapper" subproxy sets it). Default: one of its own. */
   void SetMapper(vtkPlumeVolumeMapper* mapper);
   vtkPlumeVolumeMapper* GetMapper();
 
-  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
-    vtkInformation* outInfo) override;
-  void SetVisibility(bool visible) override;
 
   /** ParaView's colour map (a vtkColorTransferFunction). */
   void SetLookupTable(vtkScalarsToColors* lut);
@@ -68,14 +65,11 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  bool AddToView(vtkView* view) override;
-  bool RemoveFromView(vtkView* view) override;
+  bool PrepareRender(vtkDataObject* piece) override;
 
   vtkSmartPointer<vtkPlumeVolumeMapper> Mapper;
   vtkSmartPointer<vtkVolume> Volume;
   vtkSmartPointer<vtkVolumeProperty> Property;
-  vtkSmartPointer<vtkImageData> Cache;
-  double DataBounds[6];
 
 private:
   vtkPlumeVolumeRepresentation(const vtkPlumeVolumeRepresentation&) = delete;
