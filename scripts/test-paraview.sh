@@ -55,16 +55,27 @@ run_test() {
   local ok=0 attempt
   # A display taken between xvfb-run -a's check and the server's start (other
   # jobs on the machine start X servers too) shows as "bad X server
-  # connection": that alone is retried. Displays from 500 up, away from the
-  # ones other jobs' xvfb-run -a start at (99).
+  # connection", or, under MPI, as a rank without a display ("remote
+  # rendering ... is not available"), after which the ranks' compositing
+  # never meets and they spin: every run is bounded (PLUME_PV_TEST_TIMEOUT,
+  # default 240 s; a test takes 10-30 s) and those cases alone are retried.
+  # Displays from 500 up, away from the ones other jobs' xvfb-run -a start at (99).
+  local rc
   for attempt in 1 2 3; do
-    if in_root env PLUME_PLUGIN="$plugin" PLUME_DATA_DIR="$data" PLUME_TEST_OUT="$out" \
+    rc=0
+    in_root env PLUME_PLUGIN="$plugin" PLUME_DATA_DIR="$data" PLUME_TEST_OUT="$out" \
       PLUME_BASELINES="$root/ParaView/Testing/Baseline" \
-      xvfb-run -a -n $((500 + RANDOM % 400)) -s "-screen 0 1024x768x24" "$@" >"$out/$name.log" 2>&1; then
+      xvfb-run -a -n $((500 + RANDOM % 400)) -s "-screen 0 1024x768x24" \
+      timeout -k 10 "${PLUME_PV_TEST_TIMEOUT:-240}" "$@" >"$out/$name.log" 2>&1 || rc=$?
+    if [ $rc = 0 ]; then
       ok=1
       break
     fi
-    grep -q "bad X server connection" "$out/$name.log" || break
+    if [ $rc = 124 ] || [ $rc = 137 ]; then
+      echo "test-paraview: $name did not finish in ${PLUME_PV_TEST_TIMEOUT:-240} s (attempt $attempt)" >>"$out/$name.log"
+    fi
+    grep -q -e "bad X server connection" -e "remote rendering which, however, is not available" \
+      -e "did not finish in" "$out/$name.log" || break
   done
   if [ $ok = 1 ]; then
     passed=$((passed + 1))
