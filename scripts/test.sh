@@ -14,7 +14,9 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${PLUME_BUILD_DIR:-$root/build}"
-bash "$root/scripts/build.sh"
+sanitize=OFF
+if [ "${PLUME_SANITIZE:-0}" = 1 ]; then sanitize=ON; fi
+bash "$root/scripts/build.sh" -DPLUME_SANITIZE_SUITE=$sanitize
 status=0
 if [ $# -gt 0 ]; then
   (cd "$build" && xvfb-run -a -s "-screen 0 1024x768x24 -noreset" \
