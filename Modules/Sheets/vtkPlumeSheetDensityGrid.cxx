@@ -1,4 +1,5 @@
 #include "vtkPlumeSheetDensityGrid.h"
+#include "vtkPlumeSheetTriangles.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -121,24 +122,7 @@ bool vtkPlumeSheetDensityGrid::Compute()
     }
     tris.push_back(t);
   };
-  vtkIdType npts = 0;
-  const vtkIdType* pts = nullptr;
-  vtkCellArray* polys = poly->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(npts, pts);)
-  {
-    for (vtkIdType k = 1; k + 1 < npts; ++k)
-    {
-      add(pts[0], pts[k], pts[k + 1]);
-    }
-  }
-  vtkCellArray* strips = poly->GetStrips();
-  for (strips->InitTraversal(); strips->GetNextCell(npts, pts);)
-  {
-    for (vtkIdType k = 0; k + 2 < npts; ++k)
-    {
-      add(pts[k], pts[k + 1], pts[k + 2]);
-    }
-  }
+  plume::ForEachSheetTriangle(poly, add);
 
   // ---- spacing from the smallest sigma, grown until the grid fits MaximumNodes
   const double k = this->SamplesPerSigma;

@@ -1,4 +1,5 @@
 #include "vtkPlumeSheetMapper.h"
+#include "vtkPlumeSheetTriangles.h"
 
 #include "vtkPlumeInputValidation.h"
 
@@ -525,24 +526,7 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
         data.insert(data.end(), c[k], c[k] + 8);
       }
     };
-    vtkIdType npts = 0;
-    const vtkIdType* pts = nullptr;
-    vtkCellArray* polys = poly->GetPolys();
-    for (polys->InitTraversal(); polys->GetNextCell(npts, pts);)
-    {
-      for (vtkIdType k = 1; k + 1 < npts; ++k)
-      {
-        addTriangle(pts[0], pts[k], pts[k + 1]);
-      }
-    }
-    vtkCellArray* strips = poly->GetStrips();
-    for (strips->InitTraversal(); strips->GetNextCell(npts, pts);)
-    {
-      for (vtkIdType k = 0; k + 2 < npts; ++k)
-      {
-        addTriangle(pts[k], pts[k + 1], pts[k + 2]);
-      }
-    }
+    plume::ForEachSheetTriangle(poly, addTriangle);
     this->SkippedTriangles = skipped;
     if (skipped > 0)
     {
