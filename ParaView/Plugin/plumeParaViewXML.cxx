@@ -377,7 +377,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkPlumeGaussianSplatter> splatter; // Dimensions' default: the class's own
   const int* dims = splatter->GetDimensions();
   os << R"(  <ProxyGroup name="filters">
-    <SourceProxy name="PlumeGaussianSplat" class="vtkPlumeGaussianSplatter" label="Plume Gaussian Splat">
+    <SourceProxy name="PlumeGaussianSplat" class="vtkPlumePGaussianSplatter" label="Plume Gaussian Splat">
       <Documentation short_help="Splat points or polylines into an image (velocity, density or distance).">
         Gaussian splatting of points (first input) and polylines (second input, optional) into
         a 3D image: the velocity of lines or the points' vectors, a density, or a distance-like
