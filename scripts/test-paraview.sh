@@ -75,7 +75,7 @@ run_test() {
       echo "test-paraview: $name did not finish in ${PLUME_PV_TEST_TIMEOUT:-240} s (attempt $attempt)" >>"$out/$name.log"
     fi
     grep -q -e "bad X server connection" -e "remote rendering which, however, is not available" \
-      -e "did not finish in" "$out/$name.log" || break
+      -e "did not finish in" -e "could not connect to pvserver" "$out/$name.log" || break
   done
   if [ $ok = 1 ]; then
     passed=$((passed + 1))
@@ -90,15 +90,20 @@ run_test() {
 tests="$root/ParaView/Testing"
 for script in "$tests"/Test*.py; do
   name="$(basename "$script" .py)"
-  case "$name" in *MPI*) continue ;; esac
+  case "$name" in *MPI* | *ClientServer* | *GUI*) continue ;; esac
   run_test "$name" pvbatch "$script"
 done
+# the Qt client on its own Xvfb, the plugin from PV_PLUGIN_PATH
+run_test TestPlumeGUI bash "$tests/plume_gui.sh"
 if [ "${PLUME_PV_SKIP_MPI:-0}" != 1 ]; then
   for script in "$tests"/Test*MPI*.py; do
     name="$(basename "$script" .py)"
     run_test "$name.serial" pvbatch "$script" # the serial references, same reader
-    run_test "$name" mpirun --allow-run-as-root --oversubscribe -np 2 pvbatch --symmetric "$script"
+    run_test "$name" mpirun --allow-run-as-root --oversubscribe -np 2 pvbatch --symmetric --disable-xdisplay-test "$script"
   done
+  # client/server: a pvpython client and a 2-rank pvserver on localhost,
+  # compared with the serial references written by TestPlumeMPI.serial
+  run_test TestPlumeClientServer bash "$tests/plume_client_server.sh" 2 "$tests/TestPlumeClientServer.py"
 fi
 echo "test-paraview: $passed passed, ${#failed[@]} failed, $(($(date +%s) - start)) s in all"
 [ ${#failed[@]} -eq 0 ]
