@@ -11,8 +11,10 @@ image data; the volume and the lines need images); the smoke sheet is the
 contour of each rank's slab (its output carries a layer of ghost cells at the seam: the
 sheet representation drops those cells, which the other rank draws); the
 splat's input is the centres of the cells inside the vessels (each cell on
-one rank). RedistributeDataSet is not used: in this
-ParaView root its transfers (VTK XML with appended data) fail to parse.
+one rank). A fifth scene moves the sheet's contour between the ranks with
+RedistributeDataSet (its transfers are VTK XML files with appended data:
+they parse only with the expat shim that test-paraview.sh preloads, see
+ParaView/Support/plumeExpatNoDeferral.c) and must equal the serial sheet.
 Each rank must really hold part of the data: checked.
 """
 import os

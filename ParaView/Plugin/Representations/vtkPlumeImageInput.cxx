@@ -5,12 +5,17 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkImageAppend.h"
 #include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStructuredData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace
 {
@@ -79,8 +84,7 @@ vtkSmartPointer<vtkImageData> vtkPlumeImageInput::Extract(vtkDataObject* input, 
   {
     return nullptr;
   }
-  vtkSmartPointer<vtkImageData> first;
-  int count = 0;
+  std::vector<vtkSmartPointer<vtkImageData>> pieces;
   vtkSmartPointer<vtkCompositeDataIterator> it;
   it.TakeReference(composite->NewIterator());
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
@@ -88,17 +92,67 @@ vtkSmartPointer<vtkImageData> vtkPlumeImageInput::Extract(vtkDataObject* input, 
     auto* image = vtkImageData::SafeDownCast(it->GetCurrentDataObject());
     if (image && image->GetNumberOfPoints() > 0)
     {
-      if (!first)
-      {
-        first = Copy(image);
-      }
-      ++count;
+      pieces.push_back(Copy(image));
     }
   }
-  if (count > 1 && owner)
+  if (pieces.empty())
   {
-    vtkWarningWithObjectMacro(owner, << "the input holds " << count
-                                     << " images on this process; Plume draws the first only");
+    return nullptr;
   }
-  return first;
+  if (pieces.size() == 1)
+  {
+    return pieces[0];
+  }
+  // Several pieces on this rank (a reader or partitioner that made more
+  // pieces than ranks): one image when they are pieces of one grid (same
+  // origin, spacing and arrays) that tile a box without overlap, i.e. their
+  // cells add up to the cells of their bounding extent.
+  const vtkSmartPointer<vtkImageData>& first = pieces[0];
+  int box[6];
+  first->GetExtent(box);
+  vtkIdType cells = first->GetNumberOfCells();
+  bool tiles = true;
+  for (size_t i = 1; i < pieces.size() && tiles; ++i)
+  {
+    const vtkSmartPointer<vtkImageData>& p = pieces[i];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double h = first->GetSpacing()[a];
+      tiles = tiles && std::abs(p->GetSpacing()[a] - h) <= 1e-6 * std::abs(h) &&
+        std::abs(p->GetOrigin()[a] - first->GetOrigin()[a]) <= 1e-6 * std::abs(h);
+    }
+    tiles = tiles && p->GetPointData()->GetNumberOfArrays() == first->GetPointData()->GetNumberOfArrays();
+    const int* e = p->GetExtent();
+    for (int a = 0; a < 3; ++a)
+    {
+      box[2 * a] = std::min(box[2 * a], e[2 * a]);
+      box[2 * a + 1] = std::max(box[2 * a + 1], e[2 * a + 1]);
+    }
+    cells += p->GetNumberOfCells();
+  }
+  vtkIdType boxCells = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    boxCells *= std::max(1, box[2 * a + 1] - box[2 * a]);
+  }
+  if (!tiles || cells != boxCells)
+  {
+    if (owner)
+    {
+      vtkWarningWithObjectMacro(owner, << "the input holds " << pieces.size()
+                                       << " images on this process that do not tile one box of one grid; Plume "
+                                          "draws the first only");
+    }
+    return first;
+  }
+  vtkNew<vtkImageAppend> append;
+  append->PreserveExtentsOn(); // each piece at its place in the box
+  for (const auto& p : pieces)
+  {
+    append->AddInputData(p);
+  }
+  append->Update();
+  auto merged = vtkSmartPointer<vtkImageData>::New();
+  merged->ShallowCopy(append->GetOutput());
+  return merged;
 }

@@ -4,10 +4,12 @@
  *
  * ParaView gives representations a vtkImageData or a composite dataset
  * (multiblock, partitioned). Plume's image mappers draw one image: this
- * takes the image itself, or the first non-empty image leaf of a composite
- * (warning through `owner` when a rank holds more than one), shallow-copied
- * with cells marked as ghosts cropped away (pieces of a distributed image
- * then meet without overlap). Other datasets give nullptr.
+ * takes the image itself, or the non-empty image leaves of a composite,
+ * each shallow-copied with cells marked as ghosts cropped away (pieces of a
+ * distributed image then meet without overlap). Several leaves on one rank
+ * are merged into one image (vtkImageAppend, extents preserved) when they
+ * are pieces of one grid that tile a box; otherwise the first is drawn, with
+ * a warning through `owner`. Other datasets give nullptr.
  */
 #ifndef vtkPlumeImageInput_h
 #define vtkPlumeImageInput_h
