@@ -362,9 +362,7 @@ private:
   vtkPlumeSheetMapper(const vtkPlumeSheetMapper&) = delete;
   void operator=(const vtkPlumeSheetMapper&) = delete;
 
-  void RenderGrid(vtkRenderer* ren, vtkActor* actor, vtkPolyData* poly);
-
-  class Internals; // GL state lives here
+  class Internals; // GL state and the render steps live here
   std::unique_ptr<Internals> Impl;
 };
 
