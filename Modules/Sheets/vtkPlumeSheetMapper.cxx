@@ -335,6 +335,26 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
       .Panel("Quality")
       .Doc("Grid mode: raycast step.")
       .Bind(&T::SetGridSampleDistance, &T::GetGridSampleDistance);
+    t.Boolean("auto_adjust_quality", "AutoAdjustQuality", true)
+      .Panel("Quality")
+      .Doc("Grid mode: coarse frames while the camera moves (window DesiredUpdateRate above 1 frame/s), "
+           "refined when it stops.")
+      .Bind(&T::SetAutoAdjustQuality, &T::GetAutoAdjustQuality);
+    t.Real("interactive_grid_sample_distance", "InteractiveGridSampleDistance", 2.0)
+      .Between(0.05, 16.0)
+      .Units("grid spacings")
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Grid mode: raycast step while the camera moves.")
+      .Bind(&T::SetInteractiveGridSampleDistance, &T::GetInteractiveGridSampleDistance);
+    t.Integer("interactive_image_sample_distance", "InteractiveImageSampleDistance", 2)
+      .Between(1, 16)
+      .Units("pixels")
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Grid mode: one ray per this many pixels while the camera moves (interpolated where the "
+           "rays agree).")
+      .Bind(&T::SetInteractiveImageSampleDistance, &T::GetInteractiveImageSampleDistance);
     t.Real("grid_maximum_nodes", "GridMaximumNodes", 33554432.0)
       .Between(8.0, 1e12)
       .Panel("Quality")
@@ -989,12 +1009,33 @@ void vtkPlumeSheetMapper::Internals::DrawGrid(vtkPlumeSheetMapper* self, const F
   this->GridVolume->SetProperty(this->GridProperty);
   this->GridVolume->SetMapper(this->GridMapper);
   this->GridVolume->SetUserMatrix(actor->GetIsIdentity() ? nullptr : actor->GetMatrix());
-  this->GridMapper->SetSampleDistance(self->GridSampleDistance);
+  // coarse while the camera moves, refined when it stops (see AutoAdjustQuality):
+  // the internal volume gets the actor's time budget, so its own lattice
+  // choice follows the same rule
+  const bool interactive = self->AutoAdjustQuality && actor->GetAllocatedRenderTime() < 1.0;
+  this->GridVolume->SetAllocatedRenderTime(actor->GetAllocatedRenderTime(), frame.Renderer);
+  this->GridMapper->SetAutoAdjustSampleDistances(self->AutoAdjustQuality);
+  this->GridMapper->SetImageSampleDistance(1);
+  this->GridMapper->SetInteractiveImageSampleDistance(self->InteractiveImageSampleDistance);
+  self->LastInteractive = interactive;
+  self->LastGridSampleDistance =
+    interactive ? self->InteractiveGridSampleDistance : self->GridSampleDistance;
+  this->GridMapper->SetSampleDistance(self->LastGridSampleDistance);
+  // a still frame yields to input the application reports as waiting (VTK's
+  // AbortCheckEvent, as vtkFixedPointVolumeRayCastMapper does): an aborted
+  // frame is not shown, so the last interactive frame stays and the user
+  // keeps moving the camera without waiting for the refinement
+  if (!interactive && frame.Window->CheckAbortStatus())
+  {
+    ++self->AbortedStillFrames;
+    return;
+  }
   this->GridMapper->SetUseOpaqueDepth(self->BoundedByDepth);
   this->GridMapper->SetTerminationError(0.001); // unlit: rays stop at opacity 0.999
   this->GridMapper->SetEmptySpaceSkipping(true);
   this->GridMapper->SetJitter(true);
   this->GridMapper->Render(frame.Renderer, this->GridVolume);
+  self->LastImageSampleDistance = this->GridMapper->GetLastImageSampleDistance();
 }
 //------------------------------------------------------------------------------
 void vtkPlumeSheetMapper::ReleaseGraphicsResources(vtkWindow* window)
@@ -1029,6 +1070,9 @@ void vtkPlumeSheetMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridSamplesPerSigma: " << this->GridSamplesPerSigma << "\n";
   os << indent << "GridSampleDistance: " << this->GridSampleDistance << "\n";
   os << indent << "GridMaximumNodes: " << this->GridMaximumNodes << "\n";
+  os << indent << "AutoAdjustQuality: " << this->AutoAdjustQuality << "\n";
+  os << indent << "InteractiveGridSampleDistance: " << this->InteractiveGridSampleDistance << "\n";
+  os << indent << "InteractiveImageSampleDistance: " << this->InteractiveImageSampleDistance << "\n";
   os << indent << "UploadCount: " << this->UploadCount << "\n";
   os << indent << "TriangleCount: " << this->TriangleCount << "\n";
 }
