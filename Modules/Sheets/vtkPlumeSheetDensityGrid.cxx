@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <vector>
@@ -45,10 +46,6 @@ struct Corner
   double D, SB, ST;
 };
 
-struct Triangle
-{
-  Corner C[3];
-};
 
 // one quadrature point: a Gaussian of mass M (64 bytes: a million-triangle
 // mesh's points take tens of MB, not hundreds)
@@ -84,44 +81,48 @@ bool vtkPlumeSheetDensityGrid::Compute()
   vtkDataArray* tArr = Named(poly, this->ThicknessArrayName);
   const double scale = this->DensityScale;
 
-  // ---- triangles with the mapper's conventions
-  std::vector<Triangle> tris;
-  double sMin = 1e300, sMax = 0.0;
-  glm::dvec3 lo(1e300), hi(-1e300);
-  auto add = [&](vtkIdType i0, vtkIdType i1, vtkIdType i2) {
-    Triangle t;
-    const vtkIdType ids[3] = { i0, i1, i2 };
+  // ---- triangles with the mapper's conventions; only their point ids are
+  // kept (24 bytes each: a million-triangle mesh's corners are read again by
+  // the threads that make its quadrature points, not stored twice)
+  auto corners = [&](const vtkIdType ids[3], Corner c[3]) { // false: skip the triangle
     bool any = false;
     for (int k = 0; k < 3; ++k)
     {
       double p[3];
-      poly->GetPoint(ids[k], p);
+      poly->GetPoint(ids[k], p); // (the two-argument reads are thread-safe)
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       {
-        return;
+        return false;
       }
-      Corner& c = t.C[k];
-      c.P = glm::dvec3(p[0], p[1], p[2]);
-      c.D = std::min(Clean((dArr ? dArr->GetComponent(ids[k], 0) : this->Density) * scale), 1e30);
-      c.SB = std::min(Clean(bArr ? bArr->GetComponent(ids[k], 0) : this->BlurRadius), MaximumSigma);
-      c.ST = this->ThinSheet
+      c[k].P = glm::dvec3(p[0], p[1], p[2]);
+      c[k].D = std::min(Clean((dArr ? dArr->GetComponent(ids[k], 0) : this->Density) * scale), 1e30);
+      c[k].SB = std::min(Clean(bArr ? bArr->GetComponent(ids[k], 0) : this->BlurRadius), MaximumSigma);
+      c[k].ST = this->ThinSheet
         ? 0.0
         : std::min(Clean(tArr ? tArr->GetComponent(ids[k], 0) : this->Thickness), MaximumSigma);
-      any = any || c.D > 0;
+      any = any || c[k].D > 0;
     }
-    const double area = glm::length(glm::cross(t.C[1].P - t.C[0].P, t.C[2].P - t.C[0].P));
-    if (!any || !(area > 0.0) || !std::isfinite(area))
+    const double area = glm::length(glm::cross(c[1].P - c[0].P, c[2].P - c[0].P));
+    return any && area > 0.0 && std::isfinite(area);
+  };
+  std::vector<std::array<vtkIdType, 3>> tris;
+  double sMin = 1e300, sMax = 0.0;
+  glm::dvec3 lo(1e300), hi(-1e300);
+  auto add = [&](vtkIdType i0, vtkIdType i1, vtkIdType i2) {
+    const std::array<vtkIdType, 3> ids = { i0, i1, i2 };
+    Corner c[3];
+    if (!corners(ids.data(), c))
     {
       return;
     }
-    for (const Corner& c : t.C)
+    for (const Corner& q : c)
     {
-      sMin = std::min(sMin, this->ThinSheet ? c.SB : std::min(c.SB, c.ST));
-      sMax = std::max(sMax, std::max(c.SB, c.ST));
-      lo = glm::min(lo, c.P);
-      hi = glm::max(hi, c.P);
+      sMin = std::min(sMin, this->ThinSheet ? q.SB : std::min(q.SB, q.ST));
+      sMax = std::max(sMax, std::max(q.SB, q.ST));
+      lo = glm::min(lo, q.P);
+      hi = glm::max(hi, q.P);
     }
-    tris.push_back(t);
+    tris.push_back(ids);
   };
   plume::ForEachSheetTriangle(poly, add);
 
@@ -178,8 +179,8 @@ bool vtkPlumeSheetDensityGrid::Compute()
       const size_t t1 = std::min(tris.size(), t0 + static_cast<size_t>(blockSize));
       for (size_t ti = t0; ti < t1; ++ti)
       {
-        const Triangle& t = tris[ti];
-        Corner c[3] = { t.C[0], t.C[1], t.C[2] };
+        Corner c[3];
+        corners(tris[ti].data(), c);
         for (Corner& q : c)
         {
           q.SB = std::max(q.SB, floorSigma);
@@ -273,7 +274,7 @@ bool vtkPlumeSheetDensityGrid::Compute()
       std::vector<Source>().swap(v); // free as we go
     }
   }
-  std::vector<Triangle>().swap(tris);
+  std::vector<std::array<vtkIdType, 3>>().swap(tris);
   // the node box of a source within Cutoff (inclusive)
   auto nodeBox = [&](const Source& s, int lo[3], int hi[3]) {
     const double r = this->Cutoff * std::max(s.SB, s.ST);
