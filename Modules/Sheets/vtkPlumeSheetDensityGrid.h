@@ -16,6 +16,8 @@
  * piece contributes its three edge midpoints
  * (degree-2 rule) as Gaussians with the interpolated d and sigmas, evaluated
  * exactly at every node within Cutoff standard deviations (Mahalanobis).
+ * Triangles no wider than SmallTriangleSize x sigma_b are one Gaussian at
+ * their mass centroid, widened by their own second moment.
  *
  * Spacing: the smallest sigma of the mesh (sigma_b, and sigma_t unless thin)
  * divided by SamplesPerSigma, isotropic; the grid covers the mesh padded by
@@ -26,8 +28,10 @@
  *
  * Bad values: as the mapper (non-finite or negative densities and sigmas count
  * as zero, triangles with a non-finite corner or zero area are skipped).
- * Threads: vtkSMPTools over z-slabs (each thread owns its planes: the result
- * does not depend on the thread count).
+ * Threads: vtkSMPTools over fixed blocks of triangles (quadrature points,
+ * joined in block order) and over z-slabs (each thread owns its planes): the
+ * result does not depend on the thread count. Memory: 64 bytes per
+ * quadrature point plus the grid (4 bytes per node, written in place).
  */
 #ifndef vtkPlumeSheetDensityGrid_h
 #define vtkPlumeSheetDensityGrid_h
@@ -82,6 +86,17 @@ public:
   vtkGetMacro(SubTriangleSize, double);
   ///@}
 
+  ///@{
+  /**
+   * Triangles whose longest edge is at most this times their smallest sigma_b
+   * are one Gaussian at their mass centroid, their own spread added to its
+   * in-plane variance (mass, centroid and isotropic second moment kept).
+   * Default 0.5. 0: every triangle takes the three-point rule. Clamped to 0..2.
+   */
+  vtkSetClampMacro(SmallTriangleSize, double, 0.0, 2.0);
+  vtkGetMacro(SmallTriangleSize, double);
+  ///@}
+
   /** Compute the grid. Returns false (with an error) if the input is unusable. */
   bool Compute();
 
@@ -113,6 +128,7 @@ protected:
   double SamplesPerSigma = 2.0;
   double MaximumNodes = 33554432.0;
   double SubTriangleSize = 1.0;
+  double SmallTriangleSize = 0.5;
   double SigmaFloor = 0.0;
   vtkIdType PointCount = 0;
   double ComputeSeconds = 0.0;

@@ -118,6 +118,37 @@ vtkDataArray* NamedArray(vtkPolyData* poly, const std::string& name, int compone
 class vtkPlumeSheetMapper::Internals
 {
 public:
+  // What one Render() works out and its steps pass on.
+  struct Frame
+  {
+    vtkRenderer* Renderer = nullptr;
+    vtkActor* Actor = nullptr;
+    vtkOpenGLRenderWindow* Window = nullptr;
+    vtkOpenGLCamera* Camera = nullptr;
+    vtkPolyData* Mesh = nullptr;
+    int Viewport[4] = { 0, 0, 0, 0 }; // x, y, width, height
+    // centre-relative model -> eye, eye -> clip and back, composed in double
+    double MCVCRel[16];
+    double VCDC[16];
+    double DCVC[16];
+    double ModelScale = 1.0;    // the actor's length scale cbrt|det| (sigmas scale by it)
+    float Factors[3] = { 0, 0, 0 }; // density, sigma_b, sigma_t multipliers (SheetFactors)
+    bool Bounded = false;           // integrate up to the opaque depth
+    vtkTextureObject* DepthTexture = nullptr;
+  };
+
+  // The render steps, in order (Render() calls them).
+  bool UpdateTriangles(vtkPlumeSheetMapper* self, Frame& frame);
+  bool ComputeFrame(vtkPlumeSheetMapper* self, Frame& frame);
+  void AcquireDepth(vtkPlumeSheetMapper* self, Frame& frame);
+  vtkShaderProgram* ReadyProgram(vtkPlumeSheetMapper* self, Frame& frame);
+  void UpdateTarget(const Frame& frame);
+  void SetUniforms(vtkPlumeSheetMapper* self, const Frame& frame, vtkShaderProgram* program);
+  void Draw(vtkPlumeSheetMapper* self, const Frame& frame, vtkShaderProgram* program);
+  // grid mode
+  bool UpdateGrid(vtkPlumeSheetMapper* self, Frame& frame);
+  void DrawGrid(vtkPlumeSheetMapper* self, const Frame& frame);
+
   // what the triangle buffer was built from: the mesh and which arrays feed
   // it (constant density, blur and thickness are uniforms: changing them
   // uploads nothing)
@@ -304,6 +335,26 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
       .Panel("Quality")
       .Doc("Grid mode: raycast step.")
       .Bind(&T::SetGridSampleDistance, &T::GetGridSampleDistance);
+    t.Boolean("auto_adjust_quality", "AutoAdjustQuality", true)
+      .Panel("Quality")
+      .Doc("Grid mode: coarse frames while the camera moves (window DesiredUpdateRate above 1 frame/s), "
+           "refined when it stops.")
+      .Bind(&T::SetAutoAdjustQuality, &T::GetAutoAdjustQuality);
+    t.Real("interactive_grid_sample_distance", "InteractiveGridSampleDistance", 2.0)
+      .Between(0.05, 16.0)
+      .Units("grid spacings")
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Grid mode: raycast step while the camera moves.")
+      .Bind(&T::SetInteractiveGridSampleDistance, &T::GetInteractiveGridSampleDistance);
+    t.Integer("interactive_image_sample_distance", "InteractiveImageSampleDistance", 2)
+      .Between(1, 16)
+      .Units("pixels")
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Grid mode: one ray per this many pixels while the camera moves (interpolated where the "
+           "rays agree).")
+      .Bind(&T::SetInteractiveImageSampleDistance, &T::GetInteractiveImageSampleDistance);
     t.Real("grid_maximum_nodes", "GridMaximumNodes", 33554432.0)
       .Between(8.0, 1e12)
       .Panel("Quality")
@@ -385,6 +436,9 @@ double* vtkPlumeSheetMapper::GetBounds()
 }
 
 //------------------------------------------------------------------------------
+// Render(): checks, then the steps in order — triangles (resources), frame
+// (viewport, matrices), opaque depth, program, target, uniforms, draw
+// (accumulate + composite). The grid mode has its own two steps.
 void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
 {
   Internals& impl = *this->Impl;
@@ -397,8 +451,11 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
   {
     this->GetInputAlgorithm()->Update();
   }
-  vtkPolyData* poly = this->GetInput();
-  if (!poly)
+  Internals::Frame frame;
+  frame.Renderer = ren;
+  frame.Actor = actor;
+  frame.Mesh = this->GetInput();
+  if (!frame.Mesh)
   {
     vtkErrorMacro(<< "no input mesh");
     return;
@@ -407,30 +464,54 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
   {
     return; // hardware selection is not supported
   }
-  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  auto* camera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
-  if (!renWin || !camera)
+  frame.Window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  frame.Camera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
+  if (!frame.Window || !frame.Camera)
   {
     vtkErrorMacro(<< "an OpenGL render window and camera are required");
     return;
   }
-  if (impl.Window && impl.Window != renWin)
+  if (impl.Window && impl.Window != frame.Window)
   {
-    impl.ReleaseGraphicsResources(impl.Window);
+    impl.ReleaseGraphicsResources(impl.Window); // GL objects belong to one context
   }
-  impl.Window = renWin;
+  impl.Window = frame.Window;
   if (this->RenderMode == RENDER_GRID)
   {
-    this->RenderGrid(ren, actor, poly);
+    if (impl.UpdateGrid(this, frame))
+    {
+      impl.DrawGrid(this, frame);
+    }
     return;
   }
 
-  // ---- triangles: rebuilt only when the mesh or the arrays it takes change.
-  // A corner carries its array values, or 1 where a constant applies; the
-  // constants and the density scale multiply them as uniforms (SheetFactors).
-  Internals::Signature sig{ poly, poly->GetMTime(), this->DensityArrayName, this->BlurArrayName,
-    this->ThicknessArrayName, this->AbsorptionArrayName };
-  if (!impl.HaveUpload || sig != impl.Uploaded || !impl.Buffer->GetHandle())
+  if (!impl.UpdateTriangles(this, frame) || !impl.ComputeFrame(this, frame))
+  {
+    return;
+  }
+  impl.AcquireDepth(this, frame);
+  vtkShaderProgram* program = impl.ReadyProgram(this, frame);
+  if (!program)
+  {
+    return;
+  }
+  impl.UpdateTarget(frame);
+  impl.SetUniforms(this, frame, program);
+  impl.Draw(this, frame, program);
+}
+
+//------------------------------------------------------------------------------
+// Step 1: the triangles, rebuilt only when the mesh or the arrays it takes
+// change. A corner carries its array values, or 1 where a constant applies;
+// the constants and the density scale multiply them as uniforms
+// (SheetFactors, worked out here every frame: a slider move uploads nothing).
+// False when there is nothing to draw.
+bool vtkPlumeSheetMapper::Internals::UpdateTriangles(vtkPlumeSheetMapper* self, Frame& frame)
+{
+  vtkPolyData* poly = frame.Mesh;
+  Signature sig{ poly, poly->GetMTime(), self->DensityArrayName, self->BlurArrayName,
+    self->ThicknessArrayName, self->AbsorptionArrayName };
+  if (!this->HaveUpload || sig != this->Uploaded || !this->Buffer->GetHandle())
   {
     // Readers hand out cells with point ids that do not exist: refuse them before reading any.
     std::string invalid = vtkPlumeInputValidation::CheckCells(poly);
@@ -440,37 +521,37 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     }
     if (!invalid.empty())
     {
-      vtkErrorMacro(<< "invalid input mesh, not drawn: " << invalid);
-      impl.HaveUpload = false;
-      return;
+      vtkErrorWithObjectMacro(self, << "invalid input mesh, not drawn: " << invalid);
+      this->HaveUpload = false;
+      return false;
     }
-    vtkDataArray* dArr = NamedArray(poly, this->DensityArrayName, 1);
-    vtkDataArray* bArr = NamedArray(poly, this->BlurArrayName, 1);
-    vtkDataArray* tArr = NamedArray(poly, this->ThicknessArrayName, 1);
-    vtkDataArray* aArr = NamedArray(poly, this->AbsorptionArrayName, 3);
-    const std::string* names[4] = { &this->DensityArrayName, &this->BlurArrayName,
-      &this->ThicknessArrayName, &this->AbsorptionArrayName };
+    vtkDataArray* dArr = NamedArray(poly, self->DensityArrayName, 1);
+    vtkDataArray* bArr = NamedArray(poly, self->BlurArrayName, 1);
+    vtkDataArray* tArr = NamedArray(poly, self->ThicknessArrayName, 1);
+    vtkDataArray* aArr = NamedArray(poly, self->AbsorptionArrayName, 3);
+    const std::string* names[4] = { &self->DensityArrayName, &self->BlurArrayName,
+      &self->ThicknessArrayName, &self->AbsorptionArrayName };
     vtkDataArray* found[4] = { dArr, bArr, tArr, aArr };
     for (int i = 0; i < 4; ++i)
     {
       if (!names[i]->empty() && !found[i])
       {
-        vtkWarningMacro(<< "point array '" << *names[i] << "' is missing or has "
+        vtkWarningWithObjectMacro(self, << "point array '" << *names[i] << "' is missing or has "
                         << (i == 3 ? "fewer than 3 components" : "no components")
                         << "; using the constant instead");
       }
     }
-    if ((poly->GetNumberOfVerts() > 0 || poly->GetNumberOfLines() > 0) && !impl.WarnedCells)
+    if ((poly->GetNumberOfVerts() > 0 || poly->GetNumberOfLines() > 0) && !this->WarnedCells)
     {
-      vtkWarningMacro(<< "vertices and lines of the input are ignored; only polygons and "
+      vtkWarningWithObjectMacro(self, << "vertices and lines of the input are ignored; only polygons and "
                          "triangle strips are drawn");
-      impl.WarnedCells = true;
+      this->WarnedCells = true;
     }
     double bounds[6];
     poly->GetBounds(bounds);
     for (int a = 0; a < 3; ++a)
     {
-      impl.Centre[a] = std::isfinite(bounds[2 * a]) && std::isfinite(bounds[2 * a + 1])
+      this->Centre[a] = std::isfinite(bounds[2 * a]) && std::isfinite(bounds[2 * a + 1])
         ? 0.5 * (bounds[2 * a] + bounds[2 * a + 1])
         : 0.0;
     }
@@ -490,7 +571,7 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
       }
       for (int a = 0; a < 3; ++a)
       {
-        out[a] = static_cast<float>(p[a] - impl.Centre[a]);
+        out[a] = static_cast<float>(p[a] - this->Centre[a]);
         out[3 + a] = static_cast<float>(std::min(d * rgb[a], 1e30));
       }
       out[6] = bArr ? static_cast<float>(std::min(Clean(bArr->GetComponent(id, 0)), MaximumSigma)) : 1.0f;
@@ -527,68 +608,70 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
       }
     };
     plume::ForEachSheetTriangle(poly, addTriangle);
-    this->SkippedTriangles = skipped;
+    self->SkippedTriangles = skipped;
     if (skipped > 0)
     {
-      vtkWarningMacro(<< skipped << " triangle(s) with a NaN or infinite corner position skipped");
+      vtkWarningWithObjectMacro(self, << skipped << " triangle(s) with a NaN or infinite corner position skipped");
     }
-    this->TriangleCount = static_cast<vtkIdType>(data.size() / 24);
-    impl.VertexCount = static_cast<GLsizei>(data.size() / 8);
+    self->TriangleCount = static_cast<vtkIdType>(data.size() / 24);
+    this->VertexCount = static_cast<GLsizei>(data.size() / 8);
     if (!data.empty())
     {
-      impl.Buffer->Upload(data, vtkOpenGLBufferObject::ArrayBuffer);
+      this->Buffer->Upload(data, vtkOpenGLBufferObject::ArrayBuffer);
     }
-    impl.BufferChanged = true;
-    impl.Uploaded = sig;
-    impl.HaveUpload = true;
-    ++this->UploadCount;
-    impl.DensityFromArray = dArr != nullptr;
-    impl.BlurFromArray = bArr != nullptr;
-    impl.ThicknessFromArray = tArr != nullptr;
+    this->BufferChanged = true;
+    this->Uploaded = sig;
+    this->HaveUpload = true;
+    ++self->UploadCount;
+    this->DensityFromArray = dArr != nullptr;
+    this->BlurFromArray = bArr != nullptr;
+    this->ThicknessFromArray = tArr != nullptr;
   }
   // what multiplies the uploaded corner values (the constants, where no array is used)
-  const float factors[3] = {
-    static_cast<float>(std::min(Clean((impl.DensityFromArray ? 1.0 : this->Density) * this->DensityScale), 1e30)),
-    static_cast<float>(impl.BlurFromArray ? 1.0 : std::min(Clean(this->BlurRadius), MaximumSigma)),
-    static_cast<float>(this->ThinSheet ? 0.0 : (impl.ThicknessFromArray ? 1.0 : std::min(Clean(this->Thickness), MaximumSigma)))
-  };
-  if (impl.VertexCount < 3 || !(factors[0] > 0.0f))
-  {
-    return; // no triangle, or no density anywhere
-  }
+  frame.Factors[0] = static_cast<float>(
+    std::min(Clean((this->DensityFromArray ? 1.0 : self->Density) * self->DensityScale), 1e30));
+  frame.Factors[1] = static_cast<float>(
+    this->BlurFromArray ? 1.0 : std::min(Clean(self->BlurRadius), MaximumSigma));
+  frame.Factors[2] = static_cast<float>(self->ThinSheet
+      ? 0.0
+      : (this->ThicknessFromArray ? 1.0 : std::min(Clean(self->Thickness), MaximumSigma)));
+  return this->VertexCount >= 3 && frame.Factors[0] > 0.0f; // else no triangle, or no density anywhere
+}
 
-  int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
-  ren->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &vpX, &vpY);
-  if (vpWidth < 1 || vpHeight < 1)
+//------------------------------------------------------------------------------
+// Step 2: the viewport and the matrices, composed in double: centre-relative
+// model -> eye, eye -> clip and back; the actor's length scale for sigma.
+bool vtkPlumeSheetMapper::Internals::ComputeFrame(vtkPlumeSheetMapper* vtkNotUsed(self), Frame& frame)
+{
+  frame.Renderer->GetTiledSizeAndOrigin(
+    &frame.Viewport[2], &frame.Viewport[3], &frame.Viewport[0], &frame.Viewport[1]);
+  if (frame.Viewport[2] < 1 || frame.Viewport[3] < 1)
   {
-    return;
+    return false;
   }
-
-  // ---- matrices, composed in double: centre-relative model -> eye, eye -> clip
   vtkMatrix4x4* wcvcT = nullptr;
   vtkMatrix4x4* vcdcT = nullptr;
   vtkMatrix4x4* wcdcT = nullptr;
   vtkMatrix3x3* normals = nullptr;
-  camera->GetKeyMatrices(ren, wcvcT, normals, vcdcT, wcdcT);
-  double wcvc[16], vcdc[16], dcvc[16];
+  frame.Camera->GetKeyMatrices(frame.Renderer, wcvcT, normals, vcdcT, wcdcT);
+  double wcvc[16];
   vtkMatrix4x4::Transpose(wcvcT->GetData(), wcvc);
-  vtkMatrix4x4::Transpose(vcdcT->GetData(), vcdc);
-  vtkMatrix4x4::Invert(vcdc, dcvc);
+  vtkMatrix4x4::Transpose(vcdcT->GetData(), frame.VCDC);
+  vtkMatrix4x4::Invert(frame.VCDC, frame.DCVC);
   double modelToWorld[16];
   vtkMatrix4x4::Identity(modelToWorld);
-  if (!actor->GetIsIdentity())
+  if (!frame.Actor->GetIsIdentity())
   {
-    std::copy(actor->GetMatrix()->GetData(), actor->GetMatrix()->GetData() + 16, modelToWorld);
+    std::copy(frame.Actor->GetMatrix()->GetData(), frame.Actor->GetMatrix()->GetData() + 16, modelToWorld);
   }
   double relToModel[16];
   vtkMatrix4x4::Identity(relToModel);
   for (int r = 0; r < 3; ++r)
   {
-    relToModel[4 * r + 3] = impl.Centre[r];
+    relToModel[4 * r + 3] = this->Centre[r];
   }
-  double mcvcRel[16];
-  vtkMatrix4x4::Multiply4x4(modelToWorld, relToModel, mcvcRel);
-  vtkMatrix4x4::Multiply4x4(wcvc, mcvcRel, mcvcRel);
+  vtkMatrix4x4::Multiply4x4(modelToWorld, relToModel, frame.MCVCRel);
+  vtkMatrix4x4::Multiply4x4(wcvc, frame.MCVCRel, frame.MCVCRel);
   double m3[3][3];
   for (int r = 0; r < 3; ++r)
   {
@@ -597,39 +680,50 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
       m3[r][c] = modelToWorld[4 * r + c];
     }
   }
-  const double modelScale = std::cbrt(std::fabs(vtkMath::Determinant3x3(m3)));
+  frame.ModelScale = std::cbrt(std::fabs(vtkMath::Determinant3x3(m3)));
+  return true;
+}
 
-  // ---- the opaque scene's depth: the frame's shared copy under a
-  // vtkPlumeCompositingPass, else the depth buffer as it is now; without it
-  // the integral runs over the whole line
-  bool bounded = this->BoundedByDepth;
+//------------------------------------------------------------------------------
+// Step 3: the opaque scene's depth: the frame's shared copy under a
+// vtkPlumeCompositingPass, else the depth buffer as it is now; without it the
+// integral runs over the whole line (one warning).
+void vtkPlumeSheetMapper::Internals::AcquireDepth(vtkPlumeSheetMapper* self, Frame& frame)
+{
+  frame.Bounded = self->BoundedByDepth;
   vtkPlumeOpaqueDepthTexture* depth =
-    bounded ? vtkPlumeCompositingPass::AcquireDepth(ren, impl.Depth) : nullptr;
-  if (bounded && !depth)
+    frame.Bounded ? vtkPlumeCompositingPass::AcquireDepth(frame.Renderer, this->Depth) : nullptr;
+  if (frame.Bounded && !depth)
   {
-    if (!impl.WarnedDepth)
+    if (!this->WarnedDepth)
     {
-      vtkWarningMacro(<< "cannot read the opaque depth (" << impl.Depth->GetLastError()
+      vtkWarningWithObjectMacro(self, << "cannot read the opaque depth (" << this->Depth->GetLastError()
                       << "): the sheet is drawn as if nothing opaque were in the scene");
-      impl.WarnedDepth = true;
+      this->WarnedDepth = true;
     }
-    bounded = false;
+    frame.Bounded = false;
   }
+  frame.DepthTexture = frame.Bounded ? depth->GetTextureObject() : nullptr;
+}
 
-  // ---- programs
-  const bool adaptive = this->AdaptiveSampling && this->Quadrature == QUADRATURE_ANALYTIC;
+//------------------------------------------------------------------------------
+// Step 4: the accumulation program of this frame's feature set (compiled once
+// per set: depth bound, thin, quadrature, adaptive, node counts).
+vtkShaderProgram* vtkPlumeSheetMapper::Internals::ReadyProgram(vtkPlumeSheetMapper* self, Frame& frame)
+{
+  const bool adaptive = self->AdaptiveSampling && self->Quadrature == QUADRATURE_ANALYTIC;
   vtkPlumeShaderFeatures features;
-  features.Enable(bounded ? "BOUNDED" : "UNBOUNDED")
-    .Enable(this->ThinSheet ? "THIN" : "THICK")
-    .Enable(this->Quadrature == QUADRATURE_GRID ? "GRID" : "ANALYTIC")
+  features.Enable(frame.Bounded ? "BOUNDED" : "UNBOUNDED")
+    .Enable(self->ThinSheet ? "THIN" : "THICK")
+    .Enable(self->Quadrature == QUADRATURE_GRID ? "GRID" : "ANALYTIC")
     .Enable(adaptive ? "ADAPTIVE" : "FIXED")
-    .Define("PLUME_GRID_A", this->GridA)
-    .Define("PLUME_GRID_B", this->GridB)
+    .Define("PLUME_GRID_A", self->GridA)
+    .Define("PLUME_GRID_B", self->GridB)
     .Define("PLUME_SMALL_TRIANGLE", "0.5");
-  if (this->Quadrature == QUADRATURE_ANALYTIC)
+  if (self->Quadrature == QUADRATURE_ANALYTIC)
   {
     // along the footprint (GridA) and across it where the sigmas vary (GridB)
-    const int counts[2] = { this->GridA, this->GridB };
+    const int counts[2] = { self->GridA, self->GridB };
     const char* names[2][2] = { { "PLUME_GL_NODES", "PLUME_GL_WEIGHTS" },
       { "PLUME_GLB_NODES", "PLUME_GLB_WEIGHTS" } };
     for (int q = 0; q < 2; ++q)
@@ -648,157 +742,182 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     }
   }
   vtkShaderProgram* program =
-    impl.Programs->Ready(renWin, vtkPlumeSheetVS, vtkPlumeSheetGS, vtkPlumeSheetFS, features);
+    this->Programs->Ready(frame.Window, vtkPlumeSheetVS, vtkPlumeSheetGS, vtkPlumeSheetFS, features);
   if (!program)
   {
-    vtkErrorMacro(<< "could not build the sheet shader program (" << features.GetKey() << ")");
+    vtkErrorWithObjectMacro(self, << "could not build the sheet shader program (" << features.GetKey() << ")");
+  }
+  return program;
+}
+
+//------------------------------------------------------------------------------
+// Step 5: the viewport-sized float target of optical depth (reallocated only
+// when the viewport's size changes).
+void vtkPlumeSheetMapper::Internals::UpdateTarget(const Frame& frame)
+{
+  const int w = frame.Viewport[2], h = frame.Viewport[3];
+  if (this->TargetSize[0] == w && this->TargetSize[1] == h && this->AccumTexture->GetHandle())
+  {
     return;
   }
+  this->AccumTexture->SetContext(frame.Window);
+  this->AccumTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+  this->AccumTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  this->AccumTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->AccumTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+  this->AccumTexture->SetInternalFormat(GL_RGBA32F);
+  this->AccumTexture->SetFormat(GL_RGBA);
+  this->AccumTexture->SetDataType(GL_FLOAT);
+  this->AccumTexture->Allocate2D(w, h, 4, VTK_FLOAT);
+  this->TargetSize[0] = w;
+  this->TargetSize[1] = h;
+}
 
+//------------------------------------------------------------------------------
+// Step 6: the accumulation program's uniforms.
+void vtkPlumeSheetMapper::Internals::SetUniforms(
+  vtkPlumeSheetMapper* self, const Frame& frame, vtkShaderProgram* program)
+{
+  plume::SetUniformMatrix4x4(program, "MCVCRel", frame.MCVCRel);
+  program->SetUniformf("ModelToEyeScale", static_cast<float>(frame.ModelScale));
+  program->SetUniform3f("SheetFactors", frame.Factors);
+  plume::SetUniformMatrix4x4(program, "Projection", frame.VCDC);
+  plume::SetUniformMatrix4x4(program, "InverseProjection", frame.DCVC);
+  const float vp[2] = { float(frame.Viewport[2]), float(frame.Viewport[3]) };
+  program->SetUniform2f("ViewportSize", vp);
+  program->SetUniformf("Cutoff", static_cast<float>(self->Cutoff));
+  program->SetUniformf("MinSigmaPixels", static_cast<float>(self->MinimumSigmaPixels));
+  program->SetUniformi("Parallel", frame.Camera->GetParallelProjection() ? 1 : 0);
+  // (OpaqueDepth is set in Draw, once the depth texture has its unit)
+}
+
+//------------------------------------------------------------------------------
+// Step 7: accumulate tau of every triangle into the float target (additive:
+// order-independent), then composite: frame * T, then + SmokeColor (1 - T)
+// if the smoke is not black. GL state is restored on return.
+void vtkPlumeSheetMapper::Internals::Draw(
+  vtkPlumeSheetMapper* self, const Frame& frame, vtkShaderProgram* program)
+{
+  vtkOpenGLRenderWindow* renWin = frame.Window;
   vtkOpenGLState* state = renWin->GetState();
-
-  // ---- target (viewport-sized): float optical depth
-  if (impl.TargetSize[0] != vpWidth || impl.TargetSize[1] != vpHeight ||
-    !impl.AccumTexture->GetHandle())
-  {
-    impl.AccumTexture->SetContext(renWin);
-    impl.AccumTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    impl.AccumTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    impl.AccumTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.AccumTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.AccumTexture->SetInternalFormat(GL_RGBA32F);
-    impl.AccumTexture->SetFormat(GL_RGBA);
-    impl.AccumTexture->SetDataType(GL_FLOAT);
-    impl.AccumTexture->Allocate2D(vpWidth, vpHeight, 4, VTK_FLOAT);
-    impl.TargetSize[0] = vpWidth;
-    impl.TargetSize[1] = vpHeight;
-  }
-  vtkTextureObject* depthTexture = bounded ? depth->GetTextureObject() : nullptr;
+  const int vpX = frame.Viewport[0], vpY = frame.Viewport[1];
+  const int vpWidth = frame.Viewport[2], vpHeight = frame.Viewport[3];
+  vtkTextureObject* depthTexture = frame.DepthTexture;
   if (depthTexture)
   {
     depthTexture->Activate();
   }
 
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglClearColor clearSaver(state);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+
+  // ---- accumulate
+  state->PushFramebufferBindings();
+  this->FBO->SetContext(renWin);
+  this->FBO->Bind();
+  this->FBO->AddColorAttachment(0, this->AccumTexture);
+  this->FBO->ActivateDrawBuffers(1);
+  state->vtkglViewport(0, 0, vpWidth, vpHeight);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  if (depthTexture)
   {
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-    vtkOpenGLState::ScopedglViewport viewportSaver(state);
-    vtkOpenGLState::ScopedglClearColor clearSaver(state);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
-
-    // ---- accumulate tau of every triangle (additive: order-independent)
-    state->PushFramebufferBindings();
-    impl.FBO->SetContext(renWin);
-    impl.FBO->Bind();
-    impl.FBO->AddColorAttachment(0, impl.AccumTexture);
-    impl.FBO->ActivateDrawBuffers(1);
-    state->vtkglViewport(0, 0, vpWidth, vpHeight);
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDisable(GL_CULL_FACE);
-    state->vtkglDepthMask(GL_FALSE);
-    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT);
-    state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-
-    plume::SetUniformMatrix4x4(program, "MCVCRel", mcvcRel);
-    program->SetUniformf("ModelToEyeScale", static_cast<float>(modelScale));
-    program->SetUniform3f("SheetFactors", factors);
-    plume::SetUniformMatrix4x4(program, "Projection", vcdc);
-    plume::SetUniformMatrix4x4(program, "InverseProjection", dcvc);
-    const float vp[2] = { float(vpWidth), float(vpHeight) };
-    program->SetUniform2f("ViewportSize", vp);
-    program->SetUniformf("Cutoff", static_cast<float>(this->Cutoff));
-    program->SetUniformf("MinSigmaPixels", static_cast<float>(this->MinimumSigmaPixels));
-    program->SetUniformi("Parallel", camera->GetParallelProjection() ? 1 : 0);
-    if (bounded)
-    {
-      program->SetUniformi("OpaqueDepth", depthTexture->GetTextureUnit());
-    }
-    impl.VAO->Bind();
-    if (impl.VAOProgram != program || impl.BufferChanged)
-    {
-      impl.VAO->ShaderProgramChanged();
-      impl.VAO->Bind();
-      const int stride = 8 * sizeof(float);
-      bool ok = impl.VAO->AddAttributeArray(
-        program, impl.Buffer, "sheetPosition", 0, stride, VTK_FLOAT, 3, false);
-      ok = impl.VAO->AddAttributeArray(program, impl.Buffer, "sheetDensity", 3 * sizeof(float),
-             stride, VTK_FLOAT, 3, false) && ok;
-      ok = impl.VAO->AddAttributeArray(program, impl.Buffer, "sheetSigma", 6 * sizeof(float),
-             stride, VTK_FLOAT, 2, false) && ok;
-      if (!ok)
-      {
-        vtkErrorMacro(<< "could not bind the sheet vertex attributes");
-      }
-      impl.VAOProgram = program;
-      impl.BufferChanged = false;
-    }
-    // chunked draws keep at most two draws queued in the driver (vtkPlumeThrottledDraw.h)
-    this->LastDrawCount =
-      plume::DrawArraysThrottled(GL_TRIANGLES, 3, impl.VertexCount / 3, this->MaximumTrianglesPerDraw, 2);
-    impl.VAO->Release();
-    impl.FBO->RemoveColorAttachment(0);
-    state->PopFramebufferBindings();
-    if (bounded)
-    {
-      depthTexture->Deactivate();
-    }
-
-    // ---- composite: frame * T, then + SmokeColor (1 - T) if the smoke is not black
-    state->vtkglViewport(vpX, vpY, vpWidth, vpHeight);
-    const bool add = this->SmokeColor[0] > 0 || this->SmokeColor[1] > 0 || this->SmokeColor[2] > 0;
-    impl.AccumTexture->Activate();
-    for (int pass = 0; pass < (add ? 2 : 1); ++pass)
-    {
-      vtkPlumeShaderFeatures compositing;
-      compositing.Enable(pass == 0 ? "MULTIPLY" : "ADD");
-      vtkShaderProgram* composite = impl.Programs->Ready(
-        renWin, vtkPlumeSheetCompositeVS, nullptr, vtkPlumeSheetCompositeFS, compositing);
-      if (!composite)
-      {
-        vtkErrorMacro(<< "could not build the sheet composite program");
-        break;
-      }
-      composite->SetUniformi("OpticalDepth", impl.AccumTexture->GetTextureUnit());
-      const float origin[2] = { float(vpX), float(vpY) };
-      composite->SetUniform2f("ViewportOrigin", origin);
-      if (pass == 0)
-      {
-        state->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-      }
-      else
-      {
-        const float color[3] = { float(this->SmokeColor[0]), float(this->SmokeColor[1]),
-          float(this->SmokeColor[2]) };
-        composite->SetUniform3f("SmokeColor", color);
-        state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
-      }
-      impl.EmptyVAO->Bind();
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-      impl.EmptyVAO->Release();
-    }
-    impl.AccumTexture->Deactivate();
+    program->SetUniformi("OpaqueDepth", depthTexture->GetTextureUnit());
   }
+  this->VAO->Bind();
+  if (this->VAOProgram != program || this->BufferChanged)
+  {
+    this->VAO->ShaderProgramChanged();
+    this->VAO->Bind();
+    const int stride = 8 * sizeof(float);
+    bool ok = this->VAO->AddAttributeArray(
+      program, this->Buffer, "sheetPosition", 0, stride, VTK_FLOAT, 3, false);
+    ok = this->VAO->AddAttributeArray(program, this->Buffer, "sheetDensity", 3 * sizeof(float),
+           stride, VTK_FLOAT, 3, false) && ok;
+    ok = this->VAO->AddAttributeArray(program, this->Buffer, "sheetSigma", 6 * sizeof(float),
+           stride, VTK_FLOAT, 2, false) && ok;
+    if (!ok)
+    {
+      vtkErrorWithObjectMacro(self, << "could not bind the sheet vertex attributes");
+    }
+    this->VAOProgram = program;
+    this->BufferChanged = false;
+  }
+  // chunked draws keep at most two draws queued in the driver (vtkPlumeThrottledDraw.h)
+  self->LastDrawCount = plume::DrawArraysThrottled(
+    GL_TRIANGLES, 3, this->VertexCount / 3, self->MaximumTrianglesPerDraw, 2);
+  this->VAO->Release();
+  this->FBO->RemoveColorAttachment(0);
+  state->PopFramebufferBindings();
+  if (depthTexture)
+  {
+    depthTexture->Deactivate();
+  }
+
+  // ---- composite
+  state->vtkglViewport(vpX, vpY, vpWidth, vpHeight);
+  const bool add = self->SmokeColor[0] > 0 || self->SmokeColor[1] > 0 || self->SmokeColor[2] > 0;
+  this->AccumTexture->Activate();
+  for (int pass = 0; pass < (add ? 2 : 1); ++pass)
+  {
+    vtkPlumeShaderFeatures compositing;
+    compositing.Enable(pass == 0 ? "MULTIPLY" : "ADD");
+    vtkShaderProgram* composite = this->Programs->Ready(
+      renWin, vtkPlumeSheetCompositeVS, nullptr, vtkPlumeSheetCompositeFS, compositing);
+    if (!composite)
+    {
+      vtkErrorWithObjectMacro(self, << "could not build the sheet composite program");
+      break;
+    }
+    composite->SetUniformi("OpticalDepth", this->AccumTexture->GetTextureUnit());
+    const float origin[2] = { float(vpX), float(vpY) };
+    composite->SetUniform2f("ViewportOrigin", origin);
+    if (pass == 0)
+    {
+      state->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    }
+    else
+    {
+      const float color[3] = { float(self->SmokeColor[0]), float(self->SmokeColor[1]),
+        float(self->SmokeColor[2]) };
+      composite->SetUniform3f("SmokeColor", color);
+      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+    }
+    this->EmptyVAO->Bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    this->EmptyVAO->Release();
+  }
+  this->AccumTexture->Deactivate();
 }
 
 //------------------------------------------------------------------------------
-void vtkPlumeSheetMapper::RenderGrid(vtkRenderer* ren, vtkActor* actor, vtkPolyData* poly)
+// Grid mode, step 1: the density grid, recomputed only when the mesh, its
+// arrays or the density/sigma settings change (camera moves compute nothing).
+// False when there is nothing to draw.
+bool vtkPlumeSheetMapper::Internals::UpdateGrid(vtkPlumeSheetMapper* self, Frame& frame)
 {
-  Internals& impl = *this->Impl;
-  const Internals::GridSignature sig{ poly, poly->GetMTime(), this->DensityArrayName, this->BlurArrayName,
-    this->ThicknessArrayName,
-    { this->Density, this->DensityScale, this->BlurRadius, this->Thickness, this->ThinSheet ? 1.0 : 0.0,
-      this->Cutoff, this->GridSamplesPerSigma, this->GridMaximumNodes } };
-  if (!impl.HaveGrid || sig != impl.GridFrom)
+  vtkPolyData* poly = frame.Mesh;
+  const GridSignature sig{ poly, poly->GetMTime(), self->DensityArrayName, self->BlurArrayName,
+    self->ThicknessArrayName,
+    { self->Density, self->DensityScale, self->BlurRadius, self->Thickness, self->ThinSheet ? 1.0 : 0.0,
+      self->Cutoff, self->GridSamplesPerSigma, self->GridMaximumNodes } };
+  if (!this->HaveGrid || sig != this->GridFrom)
   {
-    impl.HaveGrid = false;
+    this->HaveGrid = false;
     std::string invalid = vtkPlumeInputValidation::CheckCells(poly);
     if (invalid.empty())
     {
@@ -806,46 +925,52 @@ void vtkPlumeSheetMapper::RenderGrid(vtkRenderer* ren, vtkActor* actor, vtkPolyD
     }
     if (!invalid.empty())
     {
-      vtkErrorMacro(<< "invalid input mesh, not drawn: " << invalid);
-      return;
+      vtkErrorWithObjectMacro(self, << "invalid input mesh, not drawn: " << invalid);
+      return false;
     }
-    if (!this->AbsorptionArrayName.empty() && !impl.WarnedAbsorption)
+    if (!self->AbsorptionArrayName.empty() && !this->WarnedAbsorption)
     {
-      vtkWarningMacro(<< "the grid mode draws grey smoke: absorption array '" << this->AbsorptionArrayName
-                      << "' ignored (use the exact mode for coloured absorption)");
-      impl.WarnedAbsorption = true;
+      vtkWarningWithObjectMacro(self, << "the grid mode draws grey smoke: absorption array '"
+                                      << self->AbsorptionArrayName
+                                      << "' ignored (use the exact mode for coloured absorption)");
+      this->WarnedAbsorption = true;
     }
-    vtkPlumeSheetDensityGrid* grid = impl.Grid;
+    vtkPlumeSheetDensityGrid* grid = this->Grid;
     grid->SetInputData(poly);
-    grid->SetDensityArrayName(this->DensityArrayName.c_str());
-    grid->SetDensity(this->Density);
-    grid->SetDensityScale(this->DensityScale);
-    grid->SetBlurArrayName(this->BlurArrayName.c_str());
-    grid->SetBlurRadius(this->BlurRadius);
-    grid->SetThicknessArrayName(this->ThicknessArrayName.c_str());
-    grid->SetThickness(this->Thickness);
-    grid->SetThinSheet(this->ThinSheet);
-    grid->SetCutoff(this->Cutoff);
-    grid->SetSamplesPerSigma(this->GridSamplesPerSigma);
-    grid->SetMaximumNodes(this->GridMaximumNodes);
+    grid->SetDensityArrayName(self->DensityArrayName.c_str());
+    grid->SetDensity(self->Density);
+    grid->SetDensityScale(self->DensityScale);
+    grid->SetBlurArrayName(self->BlurArrayName.c_str());
+    grid->SetBlurRadius(self->BlurRadius);
+    grid->SetThicknessArrayName(self->ThicknessArrayName.c_str());
+    grid->SetThickness(self->Thickness);
+    grid->SetThinSheet(self->ThinSheet);
+    grid->SetCutoff(self->Cutoff);
+    grid->SetSamplesPerSigma(self->GridSamplesPerSigma);
+    grid->SetMaximumNodes(self->GridMaximumNodes);
     if (!grid->Compute())
     {
-      return;
+      return false;
     }
-    ++this->GridComputeCount;
-    this->GridSpacing = grid->GetOutput()->GetSpacing()[0];
-    this->GridComputeSeconds = grid->GetComputeSeconds();
+    ++self->GridComputeCount;
+    self->GridSpacing = grid->GetOutput()->GetSpacing()[0];
+    self->GridComputeSeconds = grid->GetComputeSeconds();
     double range[2];
     grid->GetOutput()->GetPointData()->GetScalars()->GetRange(range);
-    impl.GridMaxDensity = std::isfinite(range[1]) ? range[1] : 0.0;
-    impl.GridMapper->SetInputData(grid->GetOutput());
-    impl.GridFrom = sig;
-    impl.HaveGrid = true;
+    this->GridMaxDensity = std::isfinite(range[1]) ? range[1] : 0.0;
+    this->GridMapper->SetInputData(grid->GetOutput());
+    this->GridFrom = sig;
+    this->HaveGrid = true;
   }
-  if (!(impl.GridMaxDensity > 0.0))
-  {
-    return; // no smoke anywhere
-  }
+  return this->GridMaxDensity > 0.0; // else no smoke anywhere
+}
+
+//------------------------------------------------------------------------------
+// Grid mode, step 2: the transfer functions and the internal volume mapper's
+// settings, then its raycast.
+void vtkPlumeSheetMapper::Internals::DrawGrid(vtkPlumeSheetMapper* self, const Frame& frame)
+{
+  vtkActor* actor = frame.Actor;
   // extinction per world unit = density / the actor's length scale (the grid
   // is in model units; the density stays per unit of world area, as in the
   // exact mode): alpha(s) = 1 - exp(-s c u) tabulated with u chosen so the
@@ -864,34 +989,54 @@ void vtkPlumeSheetMapper::RenderGrid(vtkRenderer* ren, vtkActor* actor, vtkPolyD
     modelScale = std::cbrt(std::fabs(vtkMath::Determinant3x3(m3)));
   }
   const double c = 1.0 / std::max(modelScale, 1e-300);
-  const double top = impl.GridMaxDensity;
+  const double top = this->GridMaxDensity;
   const double unit = 1.0 / (top * c);
-  impl.GridOpacity->RemoveAllPoints();
+  this->GridOpacity->RemoveAllPoints();
   const int points = 256;
   for (int i = 0; i <= points; ++i)
   {
     const double s = top * i / points;
-    impl.GridOpacity->AddPoint(s, 1.0 - std::exp(-s * c * unit));
+    this->GridOpacity->AddPoint(s, 1.0 - std::exp(-s * c * unit));
   }
-  impl.GridColor->RemoveAllPoints();
-  impl.GridColor->AddRGBPoint(0.0, this->SmokeColor[0], this->SmokeColor[1], this->SmokeColor[2]);
-  impl.GridColor->AddRGBPoint(top, this->SmokeColor[0], this->SmokeColor[1], this->SmokeColor[2]);
-  impl.GridProperty->SetScalarOpacity(impl.GridOpacity);
-  impl.GridProperty->SetColor(impl.GridColor);
-  impl.GridProperty->SetScalarOpacityUnitDistance(unit);
-  impl.GridProperty->SetInterpolationTypeToLinear();
-  impl.GridProperty->ShadeOff();
-  impl.GridVolume->SetProperty(impl.GridProperty);
-  impl.GridVolume->SetMapper(impl.GridMapper);
-  impl.GridVolume->SetUserMatrix(actor->GetIsIdentity() ? nullptr : actor->GetMatrix());
-  impl.GridMapper->SetSampleDistance(this->GridSampleDistance);
-  impl.GridMapper->SetUseOpaqueDepth(this->BoundedByDepth);
-  impl.GridMapper->SetTerminationError(0.001); // unlit: rays stop at opacity 0.999
-  impl.GridMapper->SetEmptySpaceSkipping(true);
-  impl.GridMapper->SetJitter(true);
-  impl.GridMapper->Render(ren, impl.GridVolume);
+  this->GridColor->RemoveAllPoints();
+  this->GridColor->AddRGBPoint(0.0, self->SmokeColor[0], self->SmokeColor[1], self->SmokeColor[2]);
+  this->GridColor->AddRGBPoint(top, self->SmokeColor[0], self->SmokeColor[1], self->SmokeColor[2]);
+  this->GridProperty->SetScalarOpacity(this->GridOpacity);
+  this->GridProperty->SetColor(this->GridColor);
+  this->GridProperty->SetScalarOpacityUnitDistance(unit);
+  this->GridProperty->SetInterpolationTypeToLinear();
+  this->GridProperty->ShadeOff();
+  this->GridVolume->SetProperty(this->GridProperty);
+  this->GridVolume->SetMapper(this->GridMapper);
+  this->GridVolume->SetUserMatrix(actor->GetIsIdentity() ? nullptr : actor->GetMatrix());
+  // coarse while the camera moves, refined when it stops (see AutoAdjustQuality):
+  // the internal volume gets the actor's time budget, so its own lattice
+  // choice follows the same rule
+  const bool interactive = self->AutoAdjustQuality && actor->GetAllocatedRenderTime() < 1.0;
+  this->GridVolume->SetAllocatedRenderTime(actor->GetAllocatedRenderTime(), frame.Renderer);
+  this->GridMapper->SetAutoAdjustSampleDistances(self->AutoAdjustQuality);
+  this->GridMapper->SetImageSampleDistance(1);
+  this->GridMapper->SetInteractiveImageSampleDistance(self->InteractiveImageSampleDistance);
+  self->LastInteractive = interactive;
+  self->LastGridSampleDistance =
+    interactive ? self->InteractiveGridSampleDistance : self->GridSampleDistance;
+  this->GridMapper->SetSampleDistance(self->LastGridSampleDistance);
+  // a still frame yields to input the application reports as waiting (VTK's
+  // AbortCheckEvent, as vtkFixedPointVolumeRayCastMapper does): an aborted
+  // frame is not shown, so the last interactive frame stays and the user
+  // keeps moving the camera without waiting for the refinement
+  if (!interactive && frame.Window->CheckAbortStatus())
+  {
+    ++self->AbortedStillFrames;
+    return;
+  }
+  this->GridMapper->SetUseOpaqueDepth(self->BoundedByDepth);
+  this->GridMapper->SetTerminationError(0.001); // unlit: rays stop at opacity 0.999
+  this->GridMapper->SetEmptySpaceSkipping(true);
+  this->GridMapper->SetJitter(true);
+  this->GridMapper->Render(frame.Renderer, this->GridVolume);
+  self->LastImageSampleDistance = this->GridMapper->GetLastImageSampleDistance();
 }
-
 //------------------------------------------------------------------------------
 void vtkPlumeSheetMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
@@ -925,6 +1070,9 @@ void vtkPlumeSheetMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridSamplesPerSigma: " << this->GridSamplesPerSigma << "\n";
   os << indent << "GridSampleDistance: " << this->GridSampleDistance << "\n";
   os << indent << "GridMaximumNodes: " << this->GridMaximumNodes << "\n";
+  os << indent << "AutoAdjustQuality: " << this->AutoAdjustQuality << "\n";
+  os << indent << "InteractiveGridSampleDistance: " << this->InteractiveGridSampleDistance << "\n";
+  os << indent << "InteractiveImageSampleDistance: " << this->InteractiveImageSampleDistance << "\n";
   os << indent << "UploadCount: " << this->UploadCount << "\n";
   os << indent << "TriangleCount: " << this->TriangleCount << "\n";
 }

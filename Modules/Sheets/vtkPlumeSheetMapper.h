@@ -296,6 +296,48 @@ public:
   vtkGetMacro(GridMaximumNodes, double);
   ///@}
 
+  ///@{
+  /**
+   * Grid mode: coarse while the camera moves, refined when it stops (VTK's
+   * convention, as vtkPlumeVolumeMapper's AutoAdjustSampleDistances): a frame
+   * is interactive when the actor's allocated render time is below 1 s, i.e.
+   * the render window's DesiredUpdateRate is above 1 frame/s (the interactor
+   * sets its DesiredUpdateRate while the user moves the camera and its
+   * StillUpdateRate when the user lets go, then renders once more). An
+   * interactive frame raycasts the same grid with steps of
+   * InteractiveGridSampleDistance spacings on a lattice of one ray per
+   * InteractiveImageSampleDistance pixels (interpolated where the lattice
+   * agrees, vtkPlumeVolumeMapper's error-controlled lattice); a still frame
+   * uses GridSampleDistance and one ray per pixel. Both read the same grid,
+   * so the switch computes and uploads nothing, and every frame is cast anew
+   * (no stale frame). A still frame is skipped when the window's abort check
+   * reports waiting input (VTK's AbortCheckEvent): VTK then does not show the
+   * frame, and the interaction goes on. Off: every frame is a still frame.
+   * Default on.
+   */
+  vtkSetMacro(AutoAdjustQuality, bool);
+  vtkGetMacro(AutoAdjustQuality, bool);
+  vtkBooleanMacro(AutoAdjustQuality, bool);
+  /** Grid mode, interactive frames: raycast step in grid spacings. Default 2. Clamped to 0.05..16. */
+  vtkSetClampMacro(InteractiveGridSampleDistance, double, 0.05, 16.0);
+  vtkGetMacro(InteractiveGridSampleDistance, double);
+  /** Grid mode, interactive frames: one ray per this many pixels (1: every pixel). Default 2. Clamped to 1..16. */
+  vtkSetClampMacro(InteractiveImageSampleDistance, int, 1, 16);
+  vtkGetMacro(InteractiveImageSampleDistance, int);
+  ///@}
+
+  /** Grid mode: whether the last frame was drawn with the interactive settings. */
+  vtkGetMacro(LastInteractive, bool);
+  /**
+   * Grid mode: still frames not drawn because the render window's abort
+   * check (vtkCommand::AbortCheckEvent, SetAbortRender) reported waiting input.
+   */
+  vtkGetMacro(AbortedStillFrames, int);
+  /** Grid mode: the raycast step (grid spacings) of the last frame. */
+  vtkGetMacro(LastGridSampleDistance, double);
+  /** Grid mode: the ray lattice (pixels) of the last frame, as the volume mapper used it. */
+  vtkGetMacro(LastImageSampleDistance, int);
+
   /** Grid mode: grids computed so far (camera moves add none; data and sigma changes add one). */
   vtkGetMacro(GridComputeCount, int);
   /** Grid mode: the spacing of the current grid (model units), 0 before the first. */
@@ -350,6 +392,13 @@ protected:
   double GridSamplesPerSigma = 2.0;
   double GridSampleDistance = 1.0;
   double GridMaximumNodes = 33554432.0;
+  bool AutoAdjustQuality = true;
+  double InteractiveGridSampleDistance = 2.0;
+  int InteractiveImageSampleDistance = 2;
+  bool LastInteractive = false;
+  double LastGridSampleDistance = 0.0;
+  int LastImageSampleDistance = 0;
+  int AbortedStillFrames = 0;
   int GridComputeCount = 0;
   double GridSpacing = 0.0;
   double GridComputeSeconds = 0.0;
@@ -362,9 +411,7 @@ private:
   vtkPlumeSheetMapper(const vtkPlumeSheetMapper&) = delete;
   void operator=(const vtkPlumeSheetMapper&) = delete;
 
-  void RenderGrid(vtkRenderer* ren, vtkActor* actor, vtkPolyData* poly);
-
-  class Internals; // GL state lives here
+  class Internals; // GL state and the render steps live here
   std::unique_ptr<Internals> Impl;
 };
 

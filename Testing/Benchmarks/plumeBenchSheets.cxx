@@ -12,7 +12,13 @@
 // vtkFixedPointVolumeRayCastMapper 64^3): time against triangle count (the
 // fire_ug.vtu mfrac isosurface, 1,278 triangles, split 1->4 up to 5 times:
 // the same surface and smoke, up to 1.3 million triangles) and against screen
-// coverage (the office sheet zoomed). Each job runs in its own process.
+// coverage (the office sheet zoomed). The grid mode's interactive frames
+// (window DesiredUpdateRate 15, as while the user drags the camera) and still
+// frames (the default 0.0001, as when the user lets go) are timed apart. The
+// 1.3 M-triangle fire runs every mode and the peers with errors against the
+// reference of the unsplit surface (splitting a flat triangle at its edge
+// midpoints leaves the smoke unchanged: same density, same sigmas).
+// Each job runs in its own process.
 // Slow jobs time fewer frames (at least one after the first; see Frames()).
 #include "plumeBenchmarks.h"
 #include "plumeTestSupport.h"
@@ -291,8 +297,9 @@ std::vector<std::string> Split(const std::string& job)
   return parts;
 }
 
-// Jobs: reference:SIZE | ours:SIZE:A|F|G:ARG | peer:SIZE:gpu|fixed:N |
-// tris:LEVEL:ours|peer | cover:ZOOM:ours|peer
+// Jobs: reference:SIZE | ours:SIZE:A|F|G|V|I:ARG | peer:SIZE:gpu|fixed:N |
+// tris:LEVEL:ours|grid|gridi|peer|gpu | tris:reference | cover:ZOOM:ours|peer
+// (V: grid mode still frames, I: grid mode interactive frames)
 nlohmann::json RunJob(const Context& context, const std::string& job)
 {
   vtkSMPTools::SetBackend("STDThread");
@@ -302,11 +309,12 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   const int size = scaling ? (context.Quick ? ScaleSizeQuick : ScaleSize) : std::stoi(part[1]);
   const int stride = StrideOf(size);
   const bool fire = kind == "tris";
+  const bool fireReference = fire && part[1] == "reference";
   const double zoom = kind == "cover" ? std::stod(part[1]) : 1.0;
   const double density = fire ? 0.25 : Density;
   const double blur = fire ? 0.06 : Blur;
   const double thick = fire ? 0.04 : Thick;
-  auto mesh = fire ? FireMesh(std::stoi(part[1])) : LoadMesh();
+  auto mesh = fire ? FireMesh(fireReference ? 0 : std::stoi(part[1])) : LoadMesh();
   auto window = context.MakeWindow(size, size);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(1, 1, 1);
@@ -315,7 +323,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   window->Render();
   window->WaitForCompletion();
 
-  if (kind == "reference")
+  if (kind == "reference" || fireReference)
   {
     vtkNew<vtkPlumeSheetReference> ref;
     ref->SetInputData(mesh);
@@ -338,9 +346,14 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   }
 
   // ours:SIZE:MODE:ARG, peer:SIZE:gpu|fixed:N; tris/cover:X:ours|peer (default settings / fixed 64^3)
-  const bool isOurs = kind == "ours" || (scaling && part[2] == "ours");
-  const std::string mode = scaling ? (isOurs ? "A" : "fixed") : part[2];
-  const std::string arg = scaling ? (isOurs ? "8" : "64") : part[3];
+  const std::string who = scaling ? part[2] : "";
+  const bool isOurs = kind == "ours" || who == "ours" || who == "grid" || who == "gridi";
+  const std::string mode = scaling
+    ? (who == "ours" ? "A" : who == "grid" ? "V" : who == "gridi" ? "I" : who == "gpu" ? "gpu" : "fixed")
+    : part[2];
+  const std::string arg = scaling ? (who == "ours" ? "8" : (isOurs ? "2" : "64")) : part[3];
+  // interactive frames: the rate vtkRenderWindowInteractor asks for while the camera moves
+  window->SetDesiredUpdateRate(mode == "I" ? 15.0 : 0.0001);
   vtkNew<vtkActor> actor;
   vtkNew<vtkVolume> volume;
   vtkSmartPointer<vtkPlumeSheetMapper> ours;
@@ -353,7 +366,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     ours->SetDensity(density);
     ours->SetBlurRadius(blur);
     ours->SetThickness(thick);
-    if (mode == "V")
+    if (mode == "V" || mode == "I")
     {
       // grid mode: the smoke on a grid of ARG nodes per sigma, raycast
       ours->SetRenderMode(vtkPlumeSheetMapper::RENDER_GRID);
@@ -436,7 +449,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   window->WaitForCompletion();
   nlohmann::json result = { { "first_s", first }, { "render_s", Median(times) },
     { "frames", times.size() }, { "prep_s", prep }, { "peak_rss_mb", PeakRSSMB() } };
-  if (!scaling)
+  if (!scaling || fire)
   {
     result["samples"] = Samples(window, size, stride);
   }
@@ -447,6 +460,9 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
       result["grid_s"] = ours->GetGridComputeSeconds();
       result["grid_spacing"] = ours->GetGridSpacing();
       result["grids"] = ours->GetGridComputeCount();
+      result["interactive"] = ours->GetLastInteractive();
+      result["grid_step"] = ours->GetLastGridSampleDistance();
+      result["lattice"] = ours->GetLastImageSampleDistance();
     }
     result["uploads"] = ours->GetUploadCount();
     result["triangles"] = ours->GetTriangleCount();
@@ -470,7 +486,8 @@ std::vector<std::string> OursJobs(bool quick, int size)
   }
   if (size == 512)
   {
-    return { p + "V:0.5", p + "V:1", p + "V:1.5", p + "V:2", p + "V:3", p + "A:2", p + "A:4", p + "A:8",
+    return { p + "V:0.5", p + "V:1", p + "V:1.5", p + "V:2", p + "V:3", p + "I:1", p + "I:2", p + "A:2",
+      p + "A:4", p + "A:8",
       p + "F:8", p + "G:2x1", p + "G:8x5", p + "G:16x10" };
   }
   return { p + "A:2", p + "A:8", p + "G:2x1", p + "G:8x5" };
@@ -498,6 +515,15 @@ std::vector<std::string> ScalingJobs(bool quick)
   {
     jobs.push_back("tris:" + l + ":ours");
     jobs.push_back("tris:" + l + ":peer");
+  }
+  // the million-triangle case: every mode and both peers, with errors
+  if (!quick)
+  {
+    jobs.push_back("tris:reference");
+    for (const char* who : { "grid", "gridi", "gpu" })
+    {
+      jobs.push_back(std::string("tris:5:") + who);
+    }
   }
   for (const auto& z : zooms)
   {
@@ -536,7 +562,12 @@ std::string Describe(const std::string& job)
     const std::string& arg = part[3];
     if (part[2] == "V")
     {
-      return "grid mode, " + arg + " nodes per sigma" + (arg == "2" ? " (default)" : "");
+      return "grid mode, " + arg + " nodes per sigma" + (arg == "2" ? " (default)" : "") + ", still frames";
+    }
+    if (part[2] == "I")
+    {
+      return "grid mode, " + arg + " nodes per sigma" + (arg == "2" ? " (default)" : "") +
+        ", interactive frames (DesiredUpdateRate 15)";
     }
     if (part[2] == "F")
     {
@@ -634,6 +665,42 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
   }
   // scaling: default settings against splat + fixed-point 64^3 of the same mesh and view (no error)
   const int scaleSize = quick ? ScaleSizeQuick : ScaleSize;
+  const auto fireRef = results.find("tris:reference");
+  // the million-triangle fire: every mode and peer against the reference (no ratio: see the lines above)
+  for (const auto& job : ScalingJobs(quick))
+  {
+    const auto part = Split(job);
+    if (part[0] != "tris" || part[1] != "5" || fireRef == results.end())
+    {
+      continue;
+    }
+    const auto it = results.find(job);
+    if (it == results.end() || !it->second.contains("samples"))
+    {
+      continue;
+    }
+    static const std::map<std::string, std::string> names = { { "ours", "exact mode (default settings)" },
+      { "grid", "grid mode, still frames" }, { "gridi", "grid mode, interactive frames (DesiredUpdateRate 15)" },
+      { "peer", "vtkFixedPointVolumeRayCastMapper on a splatted 64^3 grid" },
+      { "gpu", "vtkGPUVolumeRayCastMapper on a splatted 64^3 grid" } };
+    const auto err = Error(fireRef->second, it->second);
+    nlohmann::json line = { { "bench", "sheets" },
+      { "case", "fire mfrac isosurface split 5x (1.3 M triangles), " + std::to_string(scaleSize) + "^2, " +
+          names.at(part[2]) },
+      { "ours_s", it->second["render_s"] }, { "ours_first_s", it->second["first_s"] },
+      { "frames", it->second["frames"] }, { "error", err.first }, { "error_max", err.second },
+      { "peak_rss_mb", it->second["peak_rss_mb"] }, { "reference_s", fireRef->second["reference_s"] } };
+    if (it->second.contains("grid_s"))
+    {
+      line["grid_s"] = it->second["grid_s"];
+      line["grid_spacing"] = it->second["grid_spacing"];
+    }
+    if (it->second.contains("prep_s"))
+    {
+      line["prep_s"] = it->second["prep_s"];
+    }
+    lines.push_back(line);
+  }
   for (const auto& job : ScalingJobs(quick))
   {
     if (job.size() < 5 || job.compare(job.size() - 5, 5, ":ours") != 0)
