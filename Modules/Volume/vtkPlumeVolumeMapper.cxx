@@ -116,7 +116,8 @@ public:
   vtkNew<vtkPlumeLookupTexture> Table; // colour + extinction per world unit over the scalar range
   vtkNew<vtkTextureObject> Occupancy;   // 1 byte per 8^3 block: 0 = transparent
   vtkNew<vtkTextureObject> BlockRanges; // RG32F per 8^3 block: min, max of u (MIP, isosurface)
-  int RangesUpload = -1;
+  int RangesUpload = -1;     // data version of the block-range texture
+  double RangesScaleBias[2] = { 0, 0 }; // and the mapping to u it was made with
   int OccupancyUpload = -1;
   int OccupancyTable = -1;
   size_t OccupiedBlocks = 0;
@@ -163,6 +164,11 @@ vtkPlumeVolumeMapper::~vtkPlumeVolumeMapper() = default;
 int vtkPlumeVolumeMapper::GetUploadCount()
 {
   return this->Impl->Scalars->GetUploadCount();
+}
+
+int vtkPlumeVolumeMapper::GetHandOverCount()
+{
+  return this->Impl->Scalars->GetHandOverCount();
 }
 
 //------------------------------------------------------------------------------
@@ -460,7 +466,16 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkErrorMacro(<< impl.Scalars->GetLastError());
     return;
   }
-  const double* range = impl.Scalars->GetScalarRange();
+  // the transfer functions' range: the data's unless set; the texture's raw
+  // values are mapped to it by a scale and bias (a range change uploads nothing)
+  double range[2] = { impl.Scalars->GetScalarRange()[0], impl.Scalars->GetScalarRange()[1] };
+  if (this->TransferFunctionRange[0] < this->TransferFunctionRange[1])
+  {
+    range[0] = this->TransferFunctionRange[0];
+    range[1] = this->TransferFunctionRange[1];
+  }
+  double scaleBias[2];
+  impl.Scalars->GetScaleBias(range, scaleBias);
 
   // ---- transfer-function table (only when the property or range changed)
   vtkVolumeProperty* property = vol->GetProperty();
@@ -503,7 +518,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   // ---- empty-space skipping: blocks whose value range has zero opacity everywhere
   const bool skipping = this->EmptySpaceSkipping && this->BlendMode == COMPOSITE_BLEND;
-  if (skipping && (impl.OccupancyUpload != impl.Scalars->GetUploadCount() ||
+  if (skipping && (impl.OccupancyUpload != impl.Scalars->GetDataVersion() ||
                     impl.OccupancyTable != this->TableCount || !impl.Occupancy->GetHandle()))
   {
     // prefix count of table entries with non-zero extinction
@@ -518,9 +533,18 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     size_t empty = 0;
     for (size_t b = 0; b < occupied.size(); ++b)
     {
+      if (ranges[2 * b] > ranges[2 * b + 1])
+      {
+        occupied[b] = 0; // no valid node
+        ++empty;
+        continue;
+      }
       // table entries touched by linear interpolation of u in [min, max]
-      const int i0 = std::max(0, static_cast<int>(std::floor(ranges[2 * b] * (TableSize - 1))));
-      const int i1 = std::min(TableSize - 1, static_cast<int>(std::ceil(ranges[2 * b + 1] * (TableSize - 1))));
+      // (u beyond [0, 1] reads the end entries: the table is clamped)
+      const double u0 = ranges[2 * b] * scaleBias[0] + scaleBias[1];
+      const double u1 = ranges[2 * b + 1] * scaleBias[0] + scaleBias[1];
+      const int i0 = static_cast<int>(std::min(double(TableSize - 1), std::max(0.0, std::floor(std::min(u0, u1) * (TableSize - 1)))));
+      const int i1 = static_cast<int>(std::min(double(TableSize - 1), std::max(0.0, std::ceil(std::max(u0, u1) * (TableSize - 1)))));
       occupied[b] = prefix[i1 + 1] - prefix[i0] > 0 ? 255 : 0;
       empty += occupied[b] ? 0 : 1;
     }
@@ -563,7 +587,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       impl.OccupiedMin[a] = hi[a] >= 0 ? lo[a] * b : 0.0;
       impl.OccupiedMax[a] = hi[a] >= 0 ? (hi[a] + 1) * b : 0.0;
     }
-    impl.OccupancyUpload = impl.Scalars->GetUploadCount();
+    impl.OccupancyUpload = impl.Scalars->GetDataVersion();
     impl.OccupancyTable = this->TableCount;
     impl.EmptyFraction = occupied.empty() ? 0.0 : double(empty) / occupied.size();
   }
@@ -571,10 +595,25 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // the running maximum or the iso value): upload the block ranges
   const bool rangeSkipping = this->EmptySpaceSkipping &&
     ((this->BlendMode == MAXIMUM_INTENSITY_BLEND && this->MIPSkipping) || this->BlendMode == ISOSURFACE_BLEND);
-  if (rangeSkipping && (impl.RangesUpload != impl.Scalars->GetUploadCount() || !impl.BlockRanges->GetHandle()))
+  if (rangeSkipping && (impl.RangesUpload != impl.Scalars->GetDataVersion() || !impl.BlockRanges->GetHandle() ||
+                         impl.RangesScaleBias[0] != scaleBias[0] || impl.RangesScaleBias[1] != scaleBias[1]))
   {
     const int* bd = impl.Scalars->GetBlockDimensions();
+    // in u, as the shader's samples are (a block with no valid node: (1, 0), never entered)
     std::vector<float> ranges = impl.Scalars->GetBlockRanges();
+    for (size_t b = 0; 2 * b + 1 < ranges.size(); ++b)
+    {
+      if (ranges[2 * b] > ranges[2 * b + 1])
+      {
+        ranges[2 * b] = 1.0f;
+        ranges[2 * b + 1] = 0.0f;
+        continue;
+      }
+      const float u0 = static_cast<float>(ranges[2 * b] * scaleBias[0] + scaleBias[1]);
+      const float u1 = static_cast<float>(ranges[2 * b + 1] * scaleBias[0] + scaleBias[1]);
+      ranges[2 * b] = std::min(u0, u1);
+      ranges[2 * b + 1] = std::max(u0, u1);
+    }
     impl.BlockRanges->SetContext(renWin);
     impl.BlockRanges->SetWrapS(vtkTextureObject::ClampToEdge);
     impl.BlockRanges->SetWrapT(vtkTextureObject::ClampToEdge);
@@ -587,7 +626,9 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       vtkErrorMacro(<< "could not create the block-range texture");
       return;
     }
-    impl.RangesUpload = impl.Scalars->GetUploadCount();
+    impl.RangesUpload = impl.Scalars->GetDataVersion();
+    impl.RangesScaleBias[0] = scaleBias[0];
+    impl.RangesScaleBias[1] = scaleBias[1];
   }
   // MIP decides per ray (0 here); the isosurface's fraction is set with its iso value below
   this->EmptyBlockFraction = skipping ? impl.EmptyFraction : 0.0;
@@ -895,12 +936,17 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     program->SetUniformf("IsoValue", isoU);
     if (rangeSkipping)
     {
-      // blocks whose range does not contain the iso value (as the shader tests them)
+      // blocks whose range does not contain the iso value (as the shader tests them, in u)
       const std::vector<float>& ranges = impl.Scalars->GetBlockRanges();
       size_t outside = 0;
       for (size_t b = 0; 2 * b + 1 < ranges.size(); ++b)
       {
-        outside += ranges[2 * b + 1] < isoU - IsoMargin || ranges[2 * b] > isoU + IsoMargin ? 1 : 0;
+        const float u0 = static_cast<float>(ranges[2 * b] * scaleBias[0] + scaleBias[1]);
+        const float u1 = static_cast<float>(ranges[2 * b + 1] * scaleBias[0] + scaleBias[1]);
+        outside += ranges[2 * b] > ranges[2 * b + 1] || std::max(u0, u1) < isoU - IsoMargin ||
+            std::min(u0, u1) > isoU + IsoMargin
+          ? 1
+          : 0;
       }
       this->EmptyBlockFraction = ranges.empty() ? 0.0 : double(outside) / (ranges.size() / 2);
     }
@@ -957,6 +1003,8 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   impl.Scalars->GetTextureObject()->SetMagnificationFilter(filter);
   impl.Scalars->GetTextureObject()->Activate();
   program->SetUniformi("Volume", impl.Scalars->GetTextureObject()->GetTextureUnit());
+  const float fScaleBias[2] = { static_cast<float>(scaleBias[0]), static_cast<float>(scaleBias[1]) };
+  program->SetUniform2f("ValueScaleBias", fScaleBias);
   impl.Table->GetTextureObject()->Activate();
   program->SetUniformi("TransferFunction", impl.Table->GetTextureObject()->GetTextureUnit());
   if (useDepth)
@@ -1084,6 +1132,8 @@ void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LatticeTolerance: " << this->LatticeTolerance << "\n";
   os << indent << "EffectiveOpacityThreshold: " << this->EffectiveOpacityThreshold << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "TransferFunctionRange: " << this->TransferFunctionRange[0] << " "
+     << this->TransferFunctionRange[1] << "\n";
   os << indent << "ValidMaskArrayName: " << this->ValidMaskArrayName << "\n";
   os << indent << "Smoke: " << this->Smoke << "\n";
   os << indent << "ShadowSampleDistance: " << this->ShadowSampleDistance << "\n";

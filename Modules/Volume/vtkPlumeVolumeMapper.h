@@ -30,8 +30,11 @@
  *
  * Transfer functions (vtkVolumeProperty, component 0): colour c(s) from the
  * RGB transfer function, scalar opacity α(s) per ScalarOpacityUnitDistance u
- * (world units). They are tabulated with 1024 entries over the data range and
- * re-tabulated only when the property or the data range changes. The
+ * (world units). They are tabulated with 1024 entries over the data's finite
+ * range, or over TransferFunctionRange when it is set, and re-tabulated only
+ * when the property or that range changes. The 3D texture holds the raw
+ * values (vtkPlumeScalarTexture3D), mapped to the table by a scale and bias:
+ * a range change re-tabulates 1024 entries and uploads no volume. The
  * extinction coefficient is σ(s) = -ln(1 - min(α(s), 1 - 1e-6)) / u, so the
  * opacity of a segment of world length L is 1 - exp(-σ L): the correction for
  * the actual step length.
@@ -223,6 +226,18 @@ public:
   vtkGetMacro(EffectiveOpacityThreshold, double);
 
   ///@{
+  /**
+   * The scalar range (data units) the transfer functions are tabulated over:
+   * values below it read the table's first entry, above it its last. Unset
+   * (default {0, 0}, or any range with min >= max): the data's finite range
+   * (of the valid nodes). A change re-tabulates the table and uploads no
+   * volume (the texture's raw values are mapped by a scale and bias).
+   */
+  vtkSetVector2Macro(TransferFunctionRange, double);
+  vtkGetVector2Macro(TransferFunctionRange, double);
+  ///@}
+
+  ///@{
   /** Iso value (data units) for ISOSURFACE_BLEND. Default NaN = the property's first iso value (VTK's default 0), or mid-range if it has none. */
   vtkSetMacro(IsoValue, double);
   vtkGetMacro(IsoValue, double);
@@ -330,6 +345,9 @@ public:
   /** Number of 3D-texture uploads so far (tests check re-renders do not upload). */
   int GetUploadCount();
 
+  /** Number of data versions bound from a producer's hand-over (vtkPlumeTextureHandOver) instead of uploaded. */
+  int GetHandOverCount();
+
   /** Number of transfer-function tabulations so far. */
   vtkGetMacro(TableCount, int);
 
@@ -367,6 +385,7 @@ protected:
   double TextureMemoryBudgetMB = 0.0;
   double EffectiveTextureMemoryBudgetMB = 0.0;
   int TableCount = 0;
+  double TransferFunctionRange[2] = { 0.0, 0.0 };
 
 private:
   vtkPlumeVolumeMapper(const vtkPlumeVolumeMapper&) = delete;
