@@ -36,6 +36,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkTimeStamp.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -131,6 +132,8 @@ public:
   vtkOpenGLRenderWindow* Window = nullptr;
   double AutomaticBudgetMB = 0; // of Window
   int FrameCount = 0; // frames drawn (animated jitter)
+  double TableUnit = 0; // opacity unit distance of the table
+  vtkTimeStamp TableUnitTime;
 
   // Everything one Render() call derives (the per-frame record the steps pass on).
   struct Frame
@@ -325,6 +328,11 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Advanced()
       .Doc("Early ray termination: the most a stopped ray may change a pixel, of full scale (0: never stop).")
       .Bind(&T::SetTerminationError, &T::GetTerminationError);
+    t.Real("opacity_unit_distance", "OpacityUnitDistance", 0.0)
+      .Between(0.0, 1e30)
+      .Units("world units")
+      .Doc("Length over which a sample's opacity applies (opacity is corrected for the actual step); 0: the volume property's if set, else the mean voxel spacing.")
+      .Bind(&T::SetOpacityUnitDistance, &T::GetOpacityUnitDistance);
     t.Real("shadow_sample_distance", "ShadowSampleDistance", 1.0)
       .Between(0.05, 100.0)
       .Units("voxels")
@@ -358,6 +366,38 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
     return t;
   }();
   return table;
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeVolumeMapper::GetAutomaticOpacityUnitDistance(vtkImageData* image)
+{
+  double spacing[3] = { 1, 1, 1 };
+  if (image)
+  {
+    image->GetSpacing(spacing);
+  }
+  const double mean = (std::fabs(spacing[0]) + std::fabs(spacing[1]) + std::fabs(spacing[2])) / 3;
+  return mean > 0 && std::isfinite(mean) ? mean : 1.0;
+}
+
+double vtkPlumeVolumeMapper::GetAutomaticIsoValue(vtkVolumeProperty* property, const double range[2])
+{
+  // the middle of the colour map (what the user sees coloured), else of the range
+  double r[2] = { 0, 0 };
+  if (property && property->GetColorChannels(0) == 1 && property->GetGrayTransferFunction(0))
+  {
+    property->GetGrayTransferFunction(0)->GetRange(r);
+  }
+  else if (property && property->GetRGBTransferFunction(0))
+  {
+    property->GetRGBTransferFunction(0)->GetRange(r);
+  }
+  if (!(r[0] < r[1]) || !std::isfinite(r[1] - r[0]))
+  {
+    r[0] = range[0];
+    r[1] = range[1];
+  }
+  return r[0] + 0.5 * (r[1] - r[0]);
 }
 
 //------------------------------------------------------------------------------
@@ -576,9 +616,25 @@ bool vtkPlumeVolumeMapper::Internals::UpdateResources(vtkPlumeVolumeMapper* self
   vtkPiecewiseFunction* gray =
     property->GetColorChannels(0) == 1 ? property->GetGrayTransferFunction(0) : nullptr;
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  // the opacity unit distance: ours if set, else the property's if set (VTK's
+  // default is 1), else one voxel (the image's mean spacing)
+  double unit = self->OpacityUnitDistance;
+  if (!(unit > 0))
+  {
+    unit = property->GetScalarOpacityUnitDistance(0);
+    if (unit == 1.0)
+    {
+      unit = vtkPlumeVolumeMapper::GetAutomaticOpacityUnitDistance(image);
+    }
+  }
+  self->EffectiveOpacityUnitDistance = unit;
+  if (unit != this->TableUnit)
+  {
+    this->TableUnit = unit; // the table's extinction depends on it
+    this->TableUnitTime.Modified();
+  }
   const vtkMTimeType tfTime = std::max({ property->GetMTime(), color->GetMTime(),
-    opacity->GetMTime(), gray ? gray->GetMTime() : vtkMTimeType(0) });
-  const double unit = property->GetScalarOpacityUnitDistance(0);
+    opacity->GetMTime(), gray ? gray->GetMTime() : vtkMTimeType(0), this->TableUnitTime.GetMTime() });
   const double invUnit = unit > 0 ? 1.0 / unit : 1.0;
   frame.InvUnit = invUnit;
   const int uploads = this->Table->GetUploadCount();
@@ -1115,14 +1171,18 @@ void vtkPlumeVolumeMapper::Internals::SetUniforms(
   {
     double iso = self->IsoValue;
     vtkContourValues* values = property->GetIsoSurfaceValues();
-    if (!std::isfinite(iso) && values && values->GetNumberOfContours() > 0)
+    // the property's, unless it holds VTK's default (one value, 0: not set)
+    const bool propertySet = values && values->GetNumberOfContours() > 0 &&
+      !(values->GetNumberOfContours() == 1 && values->GetValue(0) == 0.0);
+    if (!std::isfinite(iso) && propertySet)
     {
       iso = values->GetValue(0);
     }
     if (!std::isfinite(iso))
     {
-      iso = range[0] + 0.5 * span;
+      iso = vtkPlumeVolumeMapper::GetAutomaticIsoValue(property, range);
     }
+    self->EffectiveIsoValue = iso;
     const double u = span > 0 ? (iso - range[0]) / span : (iso > range[0] ? 2.0 : -1.0);
     const float isoU = static_cast<float>(std::min(2.0, std::max(-1.0, u)));
     program->SetUniformf("IsoValue", isoU);
@@ -1334,7 +1394,9 @@ void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutoAdjustSampleDistances: " << this->AutoAdjustSampleDistances << "\n";
   os << indent << "LatticeTolerance: " << this->LatticeTolerance << "\n";
   os << indent << "EffectiveOpacityThreshold: " << this->EffectiveOpacityThreshold << "\n";
-  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "IsoValue: " << this->IsoValue << " (in effect " << this->EffectiveIsoValue << ")\n";
+  os << indent << "OpacityUnitDistance: " << this->OpacityUnitDistance << " (in effect "
+     << this->EffectiveOpacityUnitDistance << ")\n";
   os << indent << "TransferFunctionRange: " << this->TransferFunctionRange[0] << " "
      << this->TransferFunctionRange[1] << "\n";
   os << indent << "ValidMaskArrayName: " << this->ValidMaskArrayName << "\n";
