@@ -31,7 +31,9 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
 {
   const std::string dataset = p.String("dataset", "");
   const std::string arrayName = p.String("array", "");
-  // the mapper's own parameters (mode, steps, jitter, ...) come from its table
+  // the mapper's own parameters (mode, steps, jitter, opacity_unit_distance, ...) come
+  // from its table; its defaults (one voxel as the opacity unit distance, the middle of
+  // the colour map as the iso value) are the library's
   vtkNew<vtkPlumeVolumeMapper> mapper;
   p.Apply(vtkPlumeVolumeMapper::GetParameterTable(), mapper);
   const int mode = mapper->GetRenderMode();
@@ -41,7 +43,6 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   coloring.ReadLegend(p);
   const bool solid = p.Boolean("solid_color", false);
   const nlohmann::json* opacityPoints = p.Raw("opacity");
-  const double unitDistance = p.Number("opacity_unit_distance", 0.0, 0.0);
   const bool hasIso = p.Has("iso_value");
   const double iso = p.Number("iso_value", 0.0);
   // vtkVolumeProperty's lighting: smoke is lit more evenly by default
@@ -147,10 +148,6 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   }
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
-  double spacing[3];
-  image->GetSpacing(spacing);
-  property->SetScalarOpacityUnitDistance(
-    unitDistance > 0 ? unitDistance : (std::fabs(spacing[0]) + std::fabs(spacing[1]) + std::fabs(spacing[2])) / 3);
   property->SetInterpolationTypeToLinear();
   property->SetAmbient(ambient);
   property->SetDiffuse(diffuse);
@@ -160,10 +157,10 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   mapper->SetInputData(image);
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SelectScalarArray(array->GetName());
-  if (mode == vtkPlumeVolumeMapper::RENDER_ISOSURFACE)
+  if (mode == vtkPlumeVolumeMapper::RENDER_ISOSURFACE && hasIso)
   {
-    mapper->SetIsoValue(hasIso ? iso : 0.5 * (range[0] + range[1]));
-    if (hasIso && (iso < range[0] || iso > range[1]))
+    mapper->SetIsoValue(iso);
+    if (iso < range[0] || iso > range[1])
     {
       std::cerr << "plume: warning: " << p.Where() << ": 'iso_value' " << iso << " is outside the data range ["
                 << range[0] << ", " << range[1] << "]: no surface will show\n";

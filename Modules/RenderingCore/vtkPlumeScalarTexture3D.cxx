@@ -1,5 +1,7 @@
 #include "vtkPlumeScalarTexture3D.h"
 
+#include "vtkPlumeTextureHandOver.h"
+
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
@@ -9,6 +11,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -52,19 +55,47 @@ vtkPlumeScalarTexture3D::vtkPlumeScalarTexture3D()
 
 vtkPlumeScalarTexture3D::~vtkPlumeScalarTexture3D() = default;
 
+namespace
+{
+void SetSampling(vtkTextureObject* texture)
+{
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetWrapR(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+}
+}
+
 vtkTextureObject* vtkPlumeScalarTexture3D::GetTextureObject()
 {
-  return this->Texture;
+  return this->Bound ? this->Bound : this->Texture.Get();
+}
+
+void vtkPlumeScalarTexture3D::GetScaleBias(const double range[2], double scaleBias[2]) const
+{
+  // u = (t / ValueScale + ValueShift - range[0]) / span, halves so that spans
+  // near DBL_MAX do not overflow
+  const double halfSpan = 0.5 * range[1] - 0.5 * range[0];
+  double scale = halfSpan != 0.0 ? (0.5 / halfSpan) / this->ValueScale : 0.0;
+  double bias = halfSpan != 0.0 ? (0.5 * this->ValueShift - 0.5 * range[0]) / halfSpan : 0.0;
+  if (!std::isfinite(scale) || !std::isfinite(bias))
+  {
+    scale = bias = 0.0;
+  }
+  scaleBias[0] = scale;
+  scaleBias[1] = bias;
 }
 
 void vtkPlumeScalarTexture3D::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Texture->ReleaseGraphicsResources(window);
-  this->UploadedImage = nullptr;
-  this->UploadedArray = nullptr;
-  this->UploadedComponent = -2;
-  this->UploadedTime = 0;
-  this->UploadedMask = nullptr;
+  this->Bound = nullptr;
+  this->HandedOver = false;
+  this->Uploaded = Signature();
+  this->Handed = Signature();
+  this->Max3DTextureSize = 0;
+  this->Window = nullptr;
 }
 
 bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData* image,
@@ -96,7 +127,6 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
     this->LastError = msg.str();
     return false;
   }
-
   if (mask && (mask->GetNumberOfTuples() != n || mask->GetNumberOfComponents() != 1))
   {
     std::ostringstream msg;
@@ -105,29 +135,118 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
     this->LastError = msg.str();
     return false;
   }
-  const vtkMTimeType time =
-    std::max({ image->GetMTime(), array->GetMTime(), mask ? mask->GetMTime() : vtkMTimeType(0) });
-  if (this->Texture->GetContext() == window && this->Texture->GetHandle() &&
-    this->UploadedImage == image && this->UploadedArray == array &&
-    this->UploadedComponent == component && this->UploadedTime == time && this->UploadedMask == mask &&
-    (this->Masked || this->UploadedGradients == this->Gradients)) // (masked: no gradients either way)
+  if (this->Window && this->Window != window)
   {
-    return true;
+    this->ReleaseGraphicsResources(this->Window); // textures belong to one context
   }
-
-  GLint maxSize = 0;
-  window->MakeCurrent();
-  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
-  if (dims[0] > maxSize || dims[1] > maxSize || dims[2] > maxSize)
+  this->Window = window;
+  if (this->Max3DTextureSize == 0)
+  {
+    window->MakeCurrent();
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
+    this->Max3DTextureSize = maxSize;
+  }
+  if (dims[0] > this->Max3DTextureSize || dims[1] > this->Max3DTextureSize ||
+    dims[2] > this->Max3DTextureSize)
   {
     std::ostringstream msg;
     msg << "grid " << dims[0] << "x" << dims[1] << "x" << dims[2]
-        << " exceeds GL_MAX_3D_TEXTURE_SIZE = " << maxSize
+        << " exceeds GL_MAX_3D_TEXTURE_SIZE = " << this->Max3DTextureSize
         << " along at least one axis; resample the data to a coarser image";
     this->LastError = msg.str();
     return false;
   }
 
+  const Signature sig{ image, array, mask, component, this->Gradients,
+    std::max({ image->GetMTime(), array->GetMTime(), mask ? mask->GetMTime() : vtkMTimeType(0) }) };
+
+  // the producer's GPU copy: raw values of a one-component array, one float channel, our size;
+  // usable as it is only without a mask, gradients or non-finite values
+  vtkTextureObject* handed = (mask || this->Gradients || comps != 1)
+    ? nullptr
+    : vtkPlumeTextureHandOver::Find(array, window);
+  if (handed &&
+    (handed->GetWidth() != static_cast<unsigned int>(dims[0]) ||
+      handed->GetHeight() != static_cast<unsigned int>(dims[1]) ||
+      handed->GetDepth() != static_cast<unsigned int>(dims[2]) || handed->GetComponents() != 1 ||
+      handed->GetVTKDataType() != VTK_FLOAT))
+  {
+    handed = nullptr;
+  }
+  if (handed)
+  {
+    if (!(sig == this->Analysed) || this->ValueShift != 0.0 || this->ValueScale != 1.0)
+    {
+      this->ValueShift = 0.0; // the producer's texels are the values themselves
+      if (!this->Analyse(array, component, mask, dims, nullptr))
+      {
+        return false;
+      }
+      this->Analysed = sig;
+    }
+    if (this->NonFiniteCount > 0)
+    {
+      handed = nullptr; // its NaN/Inf would reach the shader: upload sanitised values instead
+    }
+  }
+  this->HandedOver = handed != nullptr;
+  if (handed)
+  {
+    if (this->Texture->GetHandle())
+    {
+      this->Texture->ReleaseGraphicsResources(window); // not needed meanwhile
+    }
+    this->Uploaded = Signature();
+    SetSampling(handed);
+    this->Bound = handed;
+    if (!(sig == this->Handed))
+    {
+      this->Handed = sig;
+      ++this->HandOverCount;
+      ++this->DataVersion;
+    }
+    return true;
+  }
+  this->Handed = Signature();
+  this->Bound = this->Texture;
+  if (sig == this->Uploaded && this->Texture->GetHandle())
+  {
+    return true;
+  }
+
+  std::vector<float> texels;
+  if (!this->Analyse(array, component, mask, dims, &texels))
+  {
+    return false;
+  }
+  this->Analysed = sig;
+  const int channels = this->Masked ? 2 : (this->HasGradients ? 4 : 1);
+  this->Texture->SetContext(window);
+  // the format is cached by the texture object: one, two or four channels per upload
+  this->Texture->ResetFormatAndType();
+  SetSampling(this->Texture);
+  if (!this->Texture->Create3DFromRaw(dims[0], dims[1], dims[2], channels, VTK_FLOAT, texels.data()))
+  {
+    std::ostringstream msg;
+    msg << "could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
+        << (this->Masked ? " RG32F" : (this->HasGradients ? " RGBA32F" : " R32F")) << " 3D texture";
+    this->LastError = msg.str();
+    this->Uploaded = Signature();
+    this->Analysed = Signature();
+    return false;
+  }
+  this->Uploaded = sig;
+  ++this->UploadCount;
+  ++this->DataVersion;
+  return true;
+}
+
+bool vtkPlumeScalarTexture3D::Analyse(
+  vtkDataArray* array, int component, vtkDataArray* mask, const int dims[3], std::vector<float>* texels)
+{
+  const vtkIdType n = static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2];
+  const int comps = array->GetNumberOfComponents();
   std::vector<double> values(static_cast<size_t>(n));
   switch (array->GetDataType())
   {
@@ -160,7 +279,7 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
     }
     if (std::find(outside.begin(), outside.end(), true) == outside.end())
     {
-      outside.clear(); // nothing masked: plain u
+      outside.clear(); // nothing masked: plain values
     }
   }
   const bool masked = !outside.empty();
@@ -189,94 +308,36 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
   {
     lo = hi = 0.0;
   }
-  const double span = hi - lo;
-  const double inv = (span > 0 && std::isfinite(1.0 / span)) ? 1.0 / span : 0.0;
-  std::vector<float> u(static_cast<size_t>(n));
+  // our uploads store v - lo (see the class documentation); a hand-over holds v (shift 0).
+  // Spans float cannot hold with its precision (beyond 1e30 or below 1e-30) are
+  // stored divided by the span instead (in [0, 1])
+  const double shift = texels ? lo : 0.0;
+  const double halfSpan = 0.5 * hi - 0.5 * lo;
+  const bool rescale = texels && halfSpan > 0 && (halfSpan > 0.5e30 || halfSpan < 0.5e-30);
+  const double valueScale = rescale ? 0.5 / halfSpan : 1.0;
+  // the texel value of every node, sanitised; float(v - shift) is what the GPU interpolates
+  std::vector<float> t(static_cast<size_t>(n));
+  const double fmax = static_cast<double>(FLT_MAX);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const double v = values[i];
-    double t;
+    double v = values[i];
     if (std::isnan(v))
     {
-      t = 0.0;
+      v = lo;
     }
     else if (std::isinf(v))
     {
-      t = v > 0 ? 1.0 : 0.0;
+      v = v > 0 ? hi : lo;
     }
-    else
-    {
-      t = (v - lo) * inv;
-    }
-    // (v - lo) * inv can overflow for spans near DBL_MAX; clamp keeps it finite
-    u[i] = static_cast<float>(std::min(1.0, std::max(0.0, std::isfinite(t) ? t : 0.0)));
+    const double stored = rescale ? (0.5 * v - 0.5 * shift) / halfSpan : v - shift;
+    // (a handed-over array's values beyond float's range saturate instead of becoming Inf)
+    t[i] = static_cast<float>(std::min(fmax, std::max(-fmax, stored)));
   }
-  if (span > 0 && inv == 0.0)
-  {
-    // span so large that 1/span underflows: scale in two steps
-    const double half = 0.5 * hi - 0.5 * lo;
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      const double v = values[i];
-      if (std::isfinite(v))
-      {
-        u[i] = static_cast<float>(std::min(1.0, std::max(0.0, 0.5 * ((0.5 * v - 0.5 * lo) / half))));
-      }
-    }
-  }
-  if (masked)
-  {
-    // (u w, w): see the class documentation
-    std::vector<float> uw(2 * static_cast<size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      uw[2 * i] = outside[i] ? 0.0f : u[i];
-      uw[2 * i + 1] = outside[i] ? 0.0f : 1.0f;
-    }
-    u.swap(uw);
-  }
-  const bool gradients = this->Gradients && !masked;
-  if (gradients)
-  {
-    // (u, central differences along x, y, z): see the class documentation
-    std::vector<float> ug(4 * static_cast<size_t>(n));
-    const size_t sx = 1, sy = static_cast<size_t>(dims[0]), sz = sy * dims[1];
-    for (int k = 0; k < dims[2]; ++k)
-    {
-      for (int j = 0; j < dims[1]; ++j)
-      {
-        for (int i = 0; i < dims[0]; ++i)
-        {
-          const size_t id = i + sy * j + sz * k;
-          ug[4 * id] = u[id];
-          ug[4 * id + 1] = u[id + (i + 1 < dims[0] ? sx : 0)] - u[id - (i > 0 ? sx : 0)];
-          ug[4 * id + 2] = u[id + (j + 1 < dims[1] ? sy : 0)] - u[id - (j > 0 ? sy : 0)];
-          ug[4 * id + 3] = u[id + (k + 1 < dims[2] ? sz : 0)] - u[id - (k > 0 ? sz : 0)];
-        }
-      }
-    }
-    u.swap(ug);
-  }
-  const int channels = masked ? 2 : (gradients ? 4 : 1);
+  values.clear();
+  values.shrink_to_fit();
 
-  this->Texture->SetContext(window);
-  // the format is cached by the texture object: one or two channels per upload
-  this->Texture->ResetFormatAndType();
-  this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  this->Texture->SetWrapR(vtkTextureObject::ClampToEdge);
-  this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
-  this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  if (!this->Texture->Create3DFromRaw(dims[0], dims[1], dims[2], channels, VTK_FLOAT, u.data()))
-  {
-    std::ostringstream msg;
-    msg << "could not create the " << dims[0] << "x" << dims[1] << "x" << dims[2]
-        << (masked ? " RG32F" : (gradients ? " RGBA32F" : " R32F")) << " 3D texture";
-    this->LastError = msg.str();
-    this->UploadedImage = nullptr;
-    return false;
-  }
-  // min/max per block of BlockSize voxels (nodes I·B .. (I+1)·B)
+  const bool gradients = this->Gradients && !masked;
+  // min/max per block of BlockSize voxels (nodes I·B .. (I+1)·B), valid nodes only
   this->BlockRanges.clear();
   if (this->BlockSize > 0)
   {
@@ -288,50 +349,84 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
     const size_t blocks =
       static_cast<size_t>(this->BlockDimensions[0]) * this->BlockDimensions[1] * this->BlockDimensions[2];
     this->BlockRanges.resize(2 * blocks);
-    const size_t ch = static_cast<size_t>(channels); // per node in u
     for (int bk = 0; bk < this->BlockDimensions[2]; ++bk)
     {
       for (int bj = 0; bj < this->BlockDimensions[1]; ++bj)
       {
         for (int bi = 0; bi < this->BlockDimensions[0]; ++bi)
         {
-          float mn = 1.0f, mx = 0.0f;
+          float mn = FLT_MAX, mx = -FLT_MAX;
           for (int k = bk * b; k <= std::min((bk + 1) * b, dims[2] - 1); ++k)
           {
             for (int j = bj * b; j <= std::min((bj + 1) * b, dims[1] - 1); ++j)
             {
-              const float* row = &u[ch * static_cast<size_t>(dims[0]) * (j + static_cast<size_t>(dims[1]) * k)];
+              const size_t row = static_cast<size_t>(dims[0]) * (j + static_cast<size_t>(dims[1]) * k);
               for (int i = bi * b; i <= std::min((bi + 1) * b, dims[0] - 1); ++i)
               {
-                if (masked && row[ch * i + 1] == 0.0f)
+                if (masked && outside[row + i])
                 {
                   continue; // outside the data
                 }
-                mn = std::min(mn, row[ch * i]);
-                mx = std::max(mx, row[ch * i]);
+                mn = std::min(mn, t[row + i]);
+                mx = std::max(mx, t[row + i]);
               }
             }
           }
-          const size_t id = bi + static_cast<size_t>(this->BlockDimensions[0]) * (bj + static_cast<size_t>(this->BlockDimensions[1]) * bk);
+          const size_t id = bi + static_cast<size_t>(this->BlockDimensions[0]) *
+              (bj + static_cast<size_t>(this->BlockDimensions[1]) * bk);
           this->BlockRanges[2 * id] = mn;
           this->BlockRanges[2 * id + 1] = mx;
         }
       }
     }
   }
+
+  if (texels)
+  {
+    if (masked)
+    {
+      // (t w, w): see the class documentation
+      texels->resize(2 * static_cast<size_t>(n));
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        (*texels)[2 * i] = outside[i] ? 0.0f : t[i];
+        (*texels)[2 * i + 1] = outside[i] ? 0.0f : 1.0f;
+      }
+    }
+    else if (gradients)
+    {
+      // (t, central differences along x, y, z): see the class documentation
+      texels->resize(4 * static_cast<size_t>(n));
+      float* ug = texels->data();
+      const size_t sx = 1, sy = static_cast<size_t>(dims[0]), sz = sy * dims[1];
+      for (int k = 0; k < dims[2]; ++k)
+      {
+        for (int j = 0; j < dims[1]; ++j)
+        {
+          for (int i = 0; i < dims[0]; ++i)
+          {
+            const size_t id = i + sy * j + sz * k;
+            ug[4 * id] = t[id];
+            ug[4 * id + 1] = t[id + (i + 1 < dims[0] ? sx : 0)] - t[id - (i > 0 ? sx : 0)];
+            ug[4 * id + 2] = t[id + (j + 1 < dims[1] ? sy : 0)] - t[id - (j > 0 ? sy : 0)];
+            ug[4 * id + 3] = t[id + (k + 1 < dims[2] ? sz : 0)] - t[id - (k > 0 ? sz : 0)];
+          }
+        }
+      }
+    }
+    else
+    {
+      texels->swap(t);
+    }
+  }
+  this->ValueShift = shift;
+  this->ValueScale = valueScale;
   this->ScalarRange[0] = lo;
   this->ScalarRange[1] = hi;
   std::copy(dims, dims + 3, this->Dimensions);
   this->NonFiniteCount = nonFinite;
-  this->UploadedImage = image;
-  this->UploadedArray = array;
-  this->UploadedComponent = component;
-  this->UploadedTime = time;
-  this->UploadedMask = mask;
   this->Masked = masked;
   this->HasGradients = gradients;
-  this->UploadedGradients = this->Gradients;
-  ++this->UploadCount;
   return true;
 }
 
@@ -339,8 +434,11 @@ void vtkPlumeScalarTexture3D::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ScalarRange: " << this->ScalarRange[0] << " " << this->ScalarRange[1] << "\n";
+  os << indent << "ValueShift: " << this->ValueShift << " ValueScale: " << this->ValueScale << "\n";
   os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
      << this->Dimensions[2] << "\n";
   os << indent << "NonFiniteCount: " << this->NonFiniteCount << "\n";
+  os << indent << "HandedOver: " << this->HandedOver << "\n";
   os << indent << "UploadCount: " << this->UploadCount << "\n";
+  os << indent << "HandOverCount: " << this->HandOverCount << "\n";
 }

@@ -1,42 +1,65 @@
 /**
  * @class   vtkPlumeScalarTexture3D
- * @brief   one scalar field of a vtkImageData as a normalised 3D float texture (shared by Plume's renderers)
+ * @brief   one scalar field of a vtkImageData as a 3D float texture of raw values, or the producer's GPU copy of it
  *
- * Uploads one point-data array of a vtkImageData (one component, a chosen
+ * Holds one point-data array of a vtkImageData (one component, a chosen
  * component, or the magnitude of a vector) as a single-channel GL_R32F 3D
  * texture with linear filtering and clamp-to-edge wrapping, so that texel
  * (i, j, k) holds the value at grid node (i, j, k) and the texture coordinate
  * of index-space point p is (p + 0.5) / dims.
  *
- * Values are stored normalised, u = (v - range[0]) / (range[1] - range[0]),
- * where range is the finite range of the array (GetScalarRange(); computed in
- * double, so huge or far-from-zero values keep their float precision). A
- * constant field stores u = 0 everywhere.
+ * Raw values, mapped by the shader: texel t = v - GetValueShift(), in data
+ * units (data whose span float cannot resolve, beyond 1e30 or below 1e-30,
+ * are stored as (v - shift) * GetValueScale() with scale = 1 / span instead). GetScaleBias(range) gives the uniform pair (scale, bias) with
+ * u = t * scale + bias = (v - range[0]) / (range[1] - range[0]), so a
+ * transfer function over any range reads the same texture: changing the
+ * colour or opacity range changes two uniforms and uploads nothing. The shift
+ * is the data's finite minimum (in double) for our own uploads, so data far
+ * from zero (a temperature of 300 ± 0.01) keep float's 24 bits relative to
+ * their span; it is 0 for a handed-over texture, which holds the values as
+ * they are. A degenerate range (range[0] == range[1]) gives scale = bias = 0
+ * (u = 0 everywhere, as a constant field).
  *
  * Sanitising (non-finite values never reach the GPU):
- *  - NaN  -> range[0] (u = 0: "empty" for transfer functions that start at 0)
- *  - +Inf -> range[1] (u = 1)
- *  - -Inf -> range[0] (u = 0)
- * An array with no finite value at all gives range (0, 0) and u = 0.
+ *  - NaN  -> the finite minimum (u = 0 over the data range: "empty" for
+ *            transfer functions that start at 0)
+ *  - +Inf -> the finite maximum, -Inf -> the finite minimum
+ * An array with no finite value at all gives range (0, 0) and t = 0.
  *
  * Valid-point mask (optional, e.g. vtkResampleToImage's vtkValidPointMask):
  * nodes whose mask is 0 lie outside the data and are left out of the range.
  * If there are any (GetMasked()), the texture has two channels, GL_RG32F:
- * r = u w and g = w, w = 1 at valid nodes and 0 outside. Linear filtering
+ * r = t w and g = w, w = 1 at valid nodes and 0 outside. Linear filtering
  * then gives, at any point, the interpolation weight of valid nodes (g) and
  * r / g = the value interpolated over the valid nodes only, so a shader can
  * fade the data out over the last voxel (weight g) without ever blending in
- * the values of nodes outside it. Block ranges cover valid nodes only (a
- * block with none has min 1 > max 0).
+ * the values of nodes outside it. Block ranges cover valid nodes only.
  *
- * Re-upload happens only when the image, the array, the component choice or
- * their MTimes change, or after ReleaseGraphicsResources; GetUploadCount()
- * lets tests check that. Grids larger than GL_MAX_3D_TEXTURE_SIZE along an
- * axis are refused with an error naming the size (never silently cropped).
+ * Hand-over (vtkPlumeTextureHandOver): when the producer of the array (e.g. a
+ * GPU solver or splatter) attached its own copy, a single-channel float 3D
+ * texture of the grid's size in the same window holding the raw values, that
+ * texture is bound instead of an upload (GetHandedOver()). The range, the
+ * block summary and the non-finite count are still computed from the CPU
+ * array (which the hand-over contract keeps complete). The copy is ignored,
+ * and the array uploaded, when it is stale (the array was modified or the
+ * producer revoked it), lives in another window, has another size, channel
+ * count or type, or cannot be used as it is: a mask or gradients are asked
+ * for, a component or the magnitude of a multi-component array is asked for,
+ * or the array has non-finite values (the copy would hold them unsanitised).
  *
- * Typical use inside a mapper's Render():
+ * Staleness: Update() re-reads the array only when the image, the array, the
+ * component, the mask, the gradient option or their MTimes changed, or after
+ * ReleaseGraphicsResources (or a change of window, which releases the old
+ * window's texture first); GetUploadCount() and GetHandOverCount() let tests
+ * check that. Grids larger than GL_MAX_3D_TEXTURE_SIZE along an axis are
+ * refused with an error naming the size (never silently cropped).
+ *
+ * Typical use inside a mapper:
  * @code
  *   if (!this->Texture->Update(renWin, image, array, -1)) return; // -1: magnitude / single component
+ *   double sb[2];
+ *   this->Texture->GetScaleBias(tableRange, sb);
+ *   program->SetUniform2f("ValueScaleBias", ...);
  *   this->Texture->GetTextureObject()->Activate();
  *   program->SetUniformi("Volume", this->Texture->GetTextureObject()->GetTextureUnit());
  * @endcode
@@ -47,6 +70,7 @@
 #include "PlumeRenderingCoreModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For members
+#include "vtkWeakPointer.h"  // For members
 
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -78,11 +102,27 @@ public:
   /** True if the last upload had masked nodes: a two-channel (u w, w) texture. */
   bool GetMasked() const { return this->Masked; }
 
-  /** The GL texture (valid after a successful Update). */
+  /** The texture to bind after a successful Update: the handed-over one or our own. */
   vtkTextureObject* GetTextureObject();
 
-  /** Finite range of the uploaded values in data units: u = 0 at [0], u = 1 at [1]. */
+  /** True if the last Update bound the producer's texture instead of ours. */
+  bool GetHandedOver() const { return this->HandedOver; }
+
+  /** Finite range of the values in data units (of the valid nodes with a mask). */
   const double* GetScalarRange() const { return this->ScalarRange; }
+
+  /** The texel holds v - shift (data units): the finite minimum for our uploads, 0 for a hand-over. */
+  double GetValueShift() const { return this->ValueShift; }
+
+  /** ... times this: 1, or 1 / span for spans beyond 1e30 or below 1e-30 (see the class documentation). */
+  double GetValueScale() const { return this->ValueScale; }
+
+  /**
+   * The shader's (scale, bias): u = t scale + bias maps `range` (data units)
+   * to [0, 1] from texel values t. range[0] == range[1] (or a non-finite
+   * result) gives (0, 0).
+   */
+  void GetScaleBias(const double range[2], double scaleBias[2]) const;
 
   /** Grid dimensions of the uploaded texture. */
   const int* GetDimensions() const { return this->Dimensions; }
@@ -100,26 +140,31 @@ public:
 
   ///@{
   /**
-   * Also store central differences (GL_RGBA32F: r = u, gba = u[i+1] - u[i-1]
+   * Also store central differences (GL_RGBA32F: r = t, gba = t[i+1] - t[i-1]
    * along x, y, z, the neighbours clamped to the grid as the texture's
    * clamp-to-edge does). Because trilinear interpolation is linear, the
    * filtered gba at any point equals the central difference (one voxel each
-   * way) of the filtered u there, so a shader gets the gradient in one
-   * look-up instead of six. Ignored for masked uploads (see GetMasked; their
-   * values are normalised per sample, r / g). 4x the memory. Default off;
-   * a change re-uploads.
+   * way) of the filtered t there, so a shader gets the gradient in one
+   * look-up instead of six (times the scale of GetScaleBias for u). Ignored
+   * for masked uploads (see GetMasked; their values are divided per sample,
+   * r / g). 4x the memory. A hand-over is not used with gradients. Default
+   * off; a change re-uploads.
    */
   vtkSetMacro(Gradients, bool);
   vtkGetMacro(Gradients, bool);
   ///@}
 
-  /** True if the last upload stored gradients (RGBA32F: u, du/dx, du/dy, du/dz, central differences). */
+  /** True if the last upload stored gradients (RGBA32F: t and its central differences along x, y, z). */
   bool GetHasGradients() const { return this->HasGradients; }
 
   /** Number of blocks along each axis (ceil((dims - 1) / B), at least 1). */
   const int* GetBlockDimensions() const { return this->BlockDimensions; }
 
-  /** Per block, the min and max of the normalised values u (2 floats per block, x fastest). */
+  /**
+   * Per block, the min and max of the texel values t (2 floats per block, x
+   * fastest; map them with GetScaleBias). A block with no valid node has
+   * min > max (+FLT_MAX, -FLT_MAX).
+   */
   const std::vector<float>& GetBlockRanges() const { return this->BlockRanges; }
 
   /** Number of values that were NaN or infinite in the last upload. */
@@ -127,6 +172,16 @@ public:
 
   /** Number of uploads so far (tests check that re-renders do not upload). */
   vtkGetMacro(UploadCount, int);
+
+  /** Number of distinct data versions that were bound from a hand-over instead of uploaded. */
+  vtkGetMacro(HandOverCount, int);
+
+  /**
+   * Number of distinct data versions seen (uploaded or handed over): what the
+   * block summary and the range were computed from; consumers that derive
+   * things from them (a mapper's empty-space texture) compare it.
+   */
+  vtkGetMacro(DataVersion, int);
 
   /** Description of the last failure, "" after a successful Update. */
   const std::string& GetLastError() const { return this->LastError; }
@@ -138,7 +193,19 @@ protected:
   vtkPlumeScalarTexture3D();
   ~vtkPlumeScalarTexture3D() override;
 
+  // reads the array: range, shift, block summary; fills `texels` (channels per node) unless null
+  bool Analyse(vtkDataArray* array, int component, vtkDataArray* mask, const int dims[3],
+    std::vector<float>* texels);
+
   vtkSmartPointer<vtkTextureObject> Texture;
+  vtkTextureObject* Bound = nullptr; // Texture or the handed-over one
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  int Max3DTextureSize = 0;
+  bool HandedOver = false;
+  int HandOverCount = 0;
+  int DataVersion = 0;
+  double ValueShift = 0.0;
+  double ValueScale = 1.0;
   double ScalarRange[2] = { 0, 0 };
   int Dimensions[3] = { 0, 0, 0 };
   long long NonFiniteCount = 0;
@@ -150,14 +217,25 @@ protected:
   std::vector<float> BlockRanges;
   std::string LastError;
 
-  // what the texture was built from
-  vtkImageData* UploadedImage = nullptr;
-  vtkDataArray* UploadedArray = nullptr;
-  int UploadedComponent = -2;
-  vtkMTimeType UploadedTime = 0;
-  vtkDataArray* UploadedMask = nullptr;
+  // what the texture (or the last hand-over) holds
+  struct Signature
+  {
+    vtkImageData* Image = nullptr;
+    vtkDataArray* Array = nullptr;
+    vtkDataArray* Mask = nullptr;
+    int Component = -2;
+    bool Gradients = false;
+    vtkMTimeType Time = 0;
+    bool operator==(const Signature& o) const
+    {
+      return this->Image == o.Image && this->Array == o.Array && this->Mask == o.Mask &&
+        this->Component == o.Component && this->Gradients == o.Gradients && this->Time == o.Time;
+    }
+  };
+  Signature Uploaded;
+  Signature Handed;
+  Signature Analysed; // what ScalarRange, the block summary and Masked describe
   bool Masked = false;
-  bool UploadedGradients = false;
 
 private:
   vtkPlumeScalarTexture3D(const vtkPlumeScalarTexture3D&) = delete;

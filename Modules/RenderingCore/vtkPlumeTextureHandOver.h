@@ -20,7 +20,9 @@
  *
  * Layout contract (checked by the consumer): a 3D texture whose texel
  * (i, j, k) is grid node (i, j, k); for vectors, RGBA32F with xyz = the vector
- * and a = 1 (valid), the layout vtkPlumeVelocityGlyphMapper uploads itself.
+ * and a = 1 (valid), the layout vtkPlumeVelocityGlyphMapper uploads itself;
+ * for scalars (one-component arrays), one float channel holding the raw
+ * values (vtkPlumeScalarTexture3D, used by vtkPlumeVolumeMapper).
  */
 #ifndef vtkPlumeTextureHandOver_h
 #define vtkPlumeTextureHandOver_h

@@ -36,6 +36,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkTimeStamp.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -116,7 +117,8 @@ public:
   vtkNew<vtkPlumeLookupTexture> Table; // colour + extinction per world unit over the scalar range
   vtkNew<vtkTextureObject> Occupancy;   // 1 byte per 8^3 block: 0 = transparent
   vtkNew<vtkTextureObject> BlockRanges; // RG32F per 8^3 block: min, max of u (MIP, isosurface)
-  int RangesUpload = -1;
+  int RangesUpload = -1;     // data version of the block-range texture
+  double RangesScaleBias[2] = { 0, 0 }; // and the mapping to u it was made with
   int OccupancyUpload = -1;
   int OccupancyTable = -1;
   size_t OccupiedBlocks = 0;
@@ -129,7 +131,64 @@ public:
   vtkNew<vtkPlumeShaderProgramCache> Programs;
   vtkOpenGLRenderWindow* Window = nullptr;
   double AutomaticBudgetMB = 0; // of Window
-  int Frame = 0;
+  int FrameCount = 0; // frames drawn (animated jitter)
+  double TableUnit = 0; // opacity unit distance of the table
+  vtkTimeStamp TableUnitTime;
+
+  // Everything one Render() call derives (the per-frame record the steps pass on).
+  struct Frame
+  {
+    vtkRenderer* Renderer = nullptr;
+    vtkVolume* Volume = nullptr;
+    vtkOpenGLRenderWindow* Window = nullptr;
+    vtkImageData* Image = nullptr;
+    vtkDataArray* Scalars = nullptr;
+    vtkDataArray* Mask = nullptr; // valid-point mask (one component) or null
+    vtkVolumeProperty* Property = nullptr;
+    bool Shade = false;           // shaded composite
+    double Range[2] = { 0, 0 };   // the transfer functions' range (data units)
+    double ScaleBias[2] = { 0, 0 }; // texel -> u over Range
+    double InvUnit = 1.0;         // 1 / scalar opacity unit distance
+    // empty-space skipping
+    bool Skipping = false;        // composite: occupancy summary
+    bool RangeSkipping = false;   // MIP / isosurface: block ranges
+    bool SkipTransparent = false; // composite: per-block look-ups in the shader
+    // opaque depth
+    vtkPlumeOpaqueDepthTexture* Depth = nullptr;
+    bool UseDepth = false;
+    // index -> world -> clip, composed in double
+    int Dims[3] = { 0, 0, 0 };
+    double IndexToClip[16];
+    double ClipToIndex[16];
+    double Linear[9]; // linear part of index -> world
+    double Normal[9]; // its inverse transpose
+    double Det = 1.0;
+    float BoxMin[3], BoxMax[3], FDims[3], DrawMin[3], DrawMax[3];
+    // lights and mode
+    std::vector<std::array<double, 3>> LightDirs, LightColors;
+    std::string Mode; // shader feature: COMPOSITE, MIP, ISO or SMOKE
+    bool Lit = false;
+    int NLights = 0;
+    // ray lattice and programs
+    int Viewport[4] = { 0, 0, 0, 0 }; // width, height, x, y
+    int Lattice = 1;
+    int LatticeSize[2] = { 0, 0 };
+    vtkPlumeShaderFeatures Features;
+    vtkPlumeShaderFeatures CoarseFeatures;
+    vtkShaderProgram* Program = nullptr;
+    vtkShaderProgram* Coarse = nullptr; // lattice rays (Lattice > 1)
+  };
+
+  // The render steps, in order (Render() calls them); false: stop (an error
+  // was reported, or there is nothing to draw).
+  bool UpdateResources(vtkPlumeVolumeMapper* self, Frame& frame);
+  bool UpdateBlocks(vtkPlumeVolumeMapper* self, Frame& frame);
+  void AcquireDepth(vtkPlumeVolumeMapper* self, Frame& frame);
+  bool ComputeFrame(vtkPlumeVolumeMapper* self, Frame& frame);
+  void GatherLights(vtkPlumeVolumeMapper* self, Frame& frame);
+  bool ReadyPrograms(vtkPlumeVolumeMapper* self, Frame& frame);
+  void SetUniforms(vtkPlumeVolumeMapper* self, Frame& frame, vtkShaderProgram* program);
+  void Draw(vtkPlumeVolumeMapper* self, Frame& frame);
 
 
   void ReleaseGraphicsResources(vtkWindow* window)
@@ -163,6 +222,11 @@ vtkPlumeVolumeMapper::~vtkPlumeVolumeMapper() = default;
 int vtkPlumeVolumeMapper::GetUploadCount()
 {
   return this->Impl->Scalars->GetUploadCount();
+}
+
+int vtkPlumeVolumeMapper::GetHandOverCount()
+{
+  return this->Impl->Scalars->GetHandOverCount();
 }
 
 //------------------------------------------------------------------------------
@@ -264,6 +328,11 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Advanced()
       .Doc("Early ray termination: the most a stopped ray may change a pixel, of full scale (0: never stop).")
       .Bind(&T::SetTerminationError, &T::GetTerminationError);
+    t.Real("opacity_unit_distance", "OpacityUnitDistance", 0.0)
+      .Between(0.0, 1e30)
+      .Units("world units")
+      .Doc("Length over which a sample's opacity applies (opacity is corrected for the actual step); 0: the volume property's if set, else the mean voxel spacing.")
+      .Bind(&T::SetOpacityUnitDistance, &T::GetOpacityUnitDistance);
     t.Real("shadow_sample_distance", "ShadowSampleDistance", 1.0)
       .Between(0.05, 100.0)
       .Units("voxels")
@@ -297,6 +366,38 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
     return t;
   }();
   return table;
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeVolumeMapper::GetAutomaticOpacityUnitDistance(vtkImageData* image)
+{
+  double spacing[3] = { 1, 1, 1 };
+  if (image)
+  {
+    image->GetSpacing(spacing);
+  }
+  const double mean = (std::fabs(spacing[0]) + std::fabs(spacing[1]) + std::fabs(spacing[2])) / 3;
+  return mean > 0 && std::isfinite(mean) ? mean : 1.0;
+}
+
+double vtkPlumeVolumeMapper::GetAutomaticIsoValue(vtkVolumeProperty* property, const double range[2])
+{
+  // the middle of the colour map (what the user sees coloured), else of the range
+  double r[2] = { 0, 0 };
+  if (property && property->GetColorChannels(0) == 1 && property->GetGrayTransferFunction(0))
+  {
+    property->GetGrayTransferFunction(0)->GetRange(r);
+  }
+  else if (property && property->GetRGBTransferFunction(0))
+  {
+    property->GetRGBTransferFunction(0)->GetRange(r);
+  }
+  if (!(r[0] < r[1]) || !std::isfinite(r[1] - r[0]))
+  {
+    r[0] = range[0];
+    r[1] = range[1];
+  }
+  return r[0] + 0.5 * (r[1] - r[0]);
 }
 
 //------------------------------------------------------------------------------
@@ -419,61 +520,125 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   impl.Window = renWin;
 
-  // ---- texture-memory budget: refuse (never crop) what does not fit
-  if (!(impl.AutomaticBudgetMB > 0))
+  Internals::Frame frame;
+  frame.Renderer = ren;
+  frame.Volume = vol;
+  frame.Window = renWin;
+  frame.Image = image;
+  frame.Scalars = scalars;
+  if (!impl.UpdateResources(this, frame) || !impl.UpdateBlocks(this, frame))
   {
-    impl.AutomaticBudgetMB = AutomaticBudgetMB(renWin); // once per window
+    return;
   }
-  this->EffectiveTextureMemoryBudgetMB =
-    this->TextureMemoryBudgetMB > 0 ? this->TextureMemoryBudgetMB : impl.AutomaticBudgetMB;
+  impl.AcquireDepth(this, frame);
+  if (!impl.ComputeFrame(this, frame))
+  {
+    return;
+  }
+  impl.GatherLights(this, frame);
+  if (!impl.ReadyPrograms(this, frame))
+  {
+    return;
+  }
+  impl.Draw(this, frame);
+  ++impl.FrameCount;
+}
+
+
+//------------------------------------------------------------------------------
+// Step 1: the scalars on the GPU (upload or hand-over, only when they changed;
+// refused over the texture budget) and the transfer-function table over the
+// transfer functions' range (only when the property or the range changed).
+bool vtkPlumeVolumeMapper::Internals::UpdateResources(vtkPlumeVolumeMapper* self, Frame& frame)
+{
+  vtkImageData* image = frame.Image;
+  vtkVolume* vol = frame.Volume;
+  vtkOpenGLRenderWindow* renWin = frame.Window;
+  // ---- texture-memory budget: refuse (never crop) what does not fit
+  if (!(this->AutomaticBudgetMB > 0))
+  {
+    this->AutomaticBudgetMB = ::AutomaticBudgetMB(renWin); // once per window
+  }
+  self->EffectiveTextureMemoryBudgetMB =
+    self->TextureMemoryBudgetMB > 0 ? self->TextureMemoryBudgetMB : this->AutomaticBudgetMB;
   // nodes outside the data (valid-point mask, one component): a (u w, w)
   // texture; shaded composite: the gradient comes with the value, one
   // look-up per sample (RGBA). See vtkPlumeScalarTexture3D.
-  vtkDataArray* mask = this->ValidMaskArrayName.empty()
+  vtkDataArray* mask = self->ValidMaskArrayName.empty()
     ? nullptr
-    : image->GetPointData()->GetArray(this->ValidMaskArrayName.c_str());
+    : image->GetPointData()->GetArray(self->ValidMaskArrayName.c_str());
   if (mask && mask->GetNumberOfComponents() != 1)
   {
     mask = nullptr;
   }
   // (the composite mode also serves blend modes the mapper has no mode of its own for)
-  const bool shade = this->BlendMode != MAXIMUM_INTENSITY_BLEND && this->BlendMode != ISOSURFACE_BLEND &&
-    !this->Smoke && vol->GetProperty()->GetShade(0) != 0;
+  frame.Mask = mask;
+  const bool shade = self->BlendMode != MAXIMUM_INTENSITY_BLEND && self->BlendMode != ISOSURFACE_BLEND &&
+    !self->Smoke && vol->GetProperty()->GetShade(0) != 0;
   {
     int dims[3];
     image->GetDimensions(dims);
     // masked: the mask's (cached) range includes 0
     const bool maybeMasked = mask && mask->GetRange(0)[0] <= 0.0 && mask->GetRange(0)[1] >= 0.0;
     const std::string over =
-      CheckTextureBudget(dims, maybeMasked, shade, this->EffectiveTextureMemoryBudgetMB);
+      CheckTextureBudget(dims, maybeMasked, shade, self->EffectiveTextureMemoryBudgetMB);
     if (!over.empty())
     {
-      vtkErrorMacro(<< over << " (SetTextureMemoryBudgetMB)");
-      return;
+      vtkErrorWithObjectMacro(self, << over << " (SetTextureMemoryBudgetMB)");
+      return false;
     }
   }
 
   // ---- 3D texture (only when the data changed)
-  impl.Scalars->SetGradients(shade);
-  if (!impl.Scalars->Update(renWin, image, scalars, this->ScalarComponent, mask))
+  this->Scalars->SetGradients(shade);
+  frame.Shade = shade;
+  if (!this->Scalars->Update(renWin, image, frame.Scalars, self->ScalarComponent, mask))
   {
-    vtkErrorMacro(<< impl.Scalars->GetLastError());
-    return;
+    vtkErrorWithObjectMacro(self, << this->Scalars->GetLastError());
+    return false;
   }
-  const double* range = impl.Scalars->GetScalarRange();
+  // the transfer functions' range: the data's unless set; the texture's raw
+  // values are mapped to it by a scale and bias (a range change uploads nothing)
+  double* range = frame.Range;
+  range[0] = this->Scalars->GetScalarRange()[0];
+  range[1] = this->Scalars->GetScalarRange()[1];
+  if (self->TransferFunctionRange[0] < self->TransferFunctionRange[1])
+  {
+    range[0] = self->TransferFunctionRange[0];
+    range[1] = self->TransferFunctionRange[1];
+  }
+  this->Scalars->GetScaleBias(range, frame.ScaleBias);
 
   // ---- transfer-function table (only when the property or range changed)
   vtkVolumeProperty* property = vol->GetProperty();
+  frame.Property = property;
   vtkColorTransferFunction* color = property->GetRGBTransferFunction(0);
   vtkPiecewiseFunction* gray =
     property->GetColorChannels(0) == 1 ? property->GetGrayTransferFunction(0) : nullptr;
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  // the opacity unit distance: ours if set, else the property's if set (VTK's
+  // default is 1), else one voxel (the image's mean spacing)
+  double unit = self->OpacityUnitDistance;
+  if (!(unit > 0))
+  {
+    unit = property->GetScalarOpacityUnitDistance(0);
+    if (unit == 1.0)
+    {
+      unit = vtkPlumeVolumeMapper::GetAutomaticOpacityUnitDistance(image);
+    }
+  }
+  self->EffectiveOpacityUnitDistance = unit;
+  if (unit != this->TableUnit)
+  {
+    this->TableUnit = unit; // the table's extinction depends on it
+    this->TableUnitTime.Modified();
+  }
   const vtkMTimeType tfTime = std::max({ property->GetMTime(), color->GetMTime(),
-    opacity->GetMTime(), gray ? gray->GetMTime() : vtkMTimeType(0) });
-  const double unit = property->GetScalarOpacityUnitDistance(0);
+    opacity->GetMTime(), gray ? gray->GetMTime() : vtkMTimeType(0), this->TableUnitTime.GetMTime() });
   const double invUnit = unit > 0 ? 1.0 / unit : 1.0;
-  const int uploads = impl.Table->GetUploadCount();
-  if (!impl.Table->Update(renWin, property, tfTime, range, TableSize, [&](double v, float rgba[4]) {
+  frame.InvUnit = invUnit;
+  const int uploads = this->Table->GetUploadCount();
+  if (!this->Table->Update(renWin, property, tfTime, range, TableSize, [&](double v, float rgba[4]) {
         double rgb[3];
         if (gray)
         {
@@ -493,51 +658,71 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
         rgba[3] = static_cast<float>(-std::log(1.0 - alpha) * invUnit);
       }))
   {
-    vtkErrorMacro(<< "could not create the transfer-function texture");
-    return;
+    vtkErrorWithObjectMacro(self, << "could not create the transfer-function texture");
+    return false;
   }
-  if (impl.Table->GetUploadCount() != uploads)
+  if (this->Table->GetUploadCount() != uploads)
   {
-    ++this->TableCount; // the occupancy summary depends on it
+    ++self->TableCount; // the occupancy summary depends on it
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Step 2: the empty-space summaries derived from the block ranges and the
+// table (only when either changed): composite, the occupancy of each block and
+// the box around the occupied ones; MIP and isosurface, the block ranges in u.
+bool vtkPlumeVolumeMapper::Internals::UpdateBlocks(vtkPlumeVolumeMapper* self, Frame& frame)
+{
   // ---- empty-space skipping: blocks whose value range has zero opacity everywhere
-  const bool skipping = this->EmptySpaceSkipping && this->BlendMode == COMPOSITE_BLEND;
-  if (skipping && (impl.OccupancyUpload != impl.Scalars->GetUploadCount() ||
-                    impl.OccupancyTable != this->TableCount || !impl.Occupancy->GetHandle()))
+  vtkOpenGLRenderWindow* renWin = frame.Window;
+  const double* scaleBias = frame.ScaleBias;
+  const bool skipping = self->EmptySpaceSkipping && self->BlendMode == COMPOSITE_BLEND;
+  if (skipping && (this->OccupancyUpload != this->Scalars->GetDataVersion() ||
+                    this->OccupancyTable != self->TableCount || !this->Occupancy->GetHandle()))
   {
     // prefix count of table entries with non-zero extinction
     std::vector<int> prefix(TableSize + 1, 0);
     for (int i = 0; i < TableSize; ++i)
     {
-      prefix[i + 1] = prefix[i] + (impl.Table->GetTable()[4 * i + 3] > 0.0f ? 1 : 0);
+      prefix[i + 1] = prefix[i] + (this->Table->GetTable()[4 * i + 3] > 0.0f ? 1 : 0);
     }
-    const int* bd = impl.Scalars->GetBlockDimensions();
-    const std::vector<float>& ranges = impl.Scalars->GetBlockRanges();
+    const int* bd = this->Scalars->GetBlockDimensions();
+    const std::vector<float>& ranges = this->Scalars->GetBlockRanges();
     std::vector<unsigned char> occupied(ranges.size() / 2);
     size_t empty = 0;
     for (size_t b = 0; b < occupied.size(); ++b)
     {
+      if (ranges[2 * b] > ranges[2 * b + 1])
+      {
+        occupied[b] = 0; // no valid node
+        ++empty;
+        continue;
+      }
       // table entries touched by linear interpolation of u in [min, max]
-      const int i0 = std::max(0, static_cast<int>(std::floor(ranges[2 * b] * (TableSize - 1))));
-      const int i1 = std::min(TableSize - 1, static_cast<int>(std::ceil(ranges[2 * b + 1] * (TableSize - 1))));
+      // (u beyond [0, 1] reads the end entries: the table is clamped)
+      const double u0 = ranges[2 * b] * scaleBias[0] + scaleBias[1];
+      const double u1 = ranges[2 * b + 1] * scaleBias[0] + scaleBias[1];
+      const int i0 = static_cast<int>(std::min(double(TableSize - 1), std::max(0.0, std::floor(std::min(u0, u1) * (TableSize - 1)))));
+      const int i1 = static_cast<int>(std::min(double(TableSize - 1), std::max(0.0, std::ceil(std::max(u0, u1) * (TableSize - 1)))));
       occupied[b] = prefix[i1 + 1] - prefix[i0] > 0 ? 255 : 0;
       empty += occupied[b] ? 0 : 1;
     }
-    impl.Occupancy->SetContext(renWin);
-    impl.Occupancy->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.Occupancy->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.Occupancy->SetWrapR(vtkTextureObject::ClampToEdge);
-    impl.Occupancy->SetMinificationFilter(vtkTextureObject::Nearest);
-    impl.Occupancy->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Occupancy->SetContext(renWin);
+    this->Occupancy->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->Occupancy->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->Occupancy->SetWrapR(vtkTextureObject::ClampToEdge);
+    this->Occupancy->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Occupancy->SetMagnificationFilter(vtkTextureObject::Nearest);
     if (occupied.empty() ||
-      !impl.Occupancy->Create3DFromRaw(bd[0], bd[1], bd[2], 1, VTK_UNSIGNED_CHAR, occupied.data()))
+      !this->Occupancy->Create3DFromRaw(bd[0], bd[1], bd[2], 1, VTK_UNSIGNED_CHAR, occupied.data()))
     {
-      vtkErrorMacro(<< "could not create the empty-space texture");
-      return;
+      vtkErrorWithObjectMacro(self, << "could not create the empty-space texture");
+      return false;
     }
     // index-space bounds of the non-transparent blocks
-    impl.OccupiedBlocks = occupied.size() - empty;
+    this->OccupiedBlocks = occupied.size() - empty;
     int lo[3] = { bd[0], bd[1], bd[2] }, hi[3] = { -1, -1, -1 };
     for (int k = 0; k < bd[2]; ++k)
     {
@@ -557,69 +742,110 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
         }
       }
     }
-    const double b = impl.Scalars->GetBlockSize();
+    const double b = this->Scalars->GetBlockSize();
     for (int a = 0; a < 3; ++a)
     {
-      impl.OccupiedMin[a] = hi[a] >= 0 ? lo[a] * b : 0.0;
-      impl.OccupiedMax[a] = hi[a] >= 0 ? (hi[a] + 1) * b : 0.0;
+      this->OccupiedMin[a] = hi[a] >= 0 ? lo[a] * b : 0.0;
+      this->OccupiedMax[a] = hi[a] >= 0 ? (hi[a] + 1) * b : 0.0;
     }
-    impl.OccupancyUpload = impl.Scalars->GetUploadCount();
-    impl.OccupancyTable = this->TableCount;
-    impl.EmptyFraction = occupied.empty() ? 0.0 : double(empty) / occupied.size();
+    this->OccupancyUpload = this->Scalars->GetDataVersion();
+    this->OccupancyTable = self->TableCount;
+    this->EmptyFraction = occupied.empty() ? 0.0 : double(empty) / occupied.size();
   }
   // MIP and isosurface skip by value range (decided per ray in the shader against
   // the running maximum or the iso value): upload the block ranges
-  const bool rangeSkipping = this->EmptySpaceSkipping &&
-    ((this->BlendMode == MAXIMUM_INTENSITY_BLEND && this->MIPSkipping) || this->BlendMode == ISOSURFACE_BLEND);
-  if (rangeSkipping && (impl.RangesUpload != impl.Scalars->GetUploadCount() || !impl.BlockRanges->GetHandle()))
+  const bool rangeSkipping = self->EmptySpaceSkipping &&
+    ((self->BlendMode == MAXIMUM_INTENSITY_BLEND && self->MIPSkipping) || self->BlendMode == ISOSURFACE_BLEND);
+  if (rangeSkipping && (this->RangesUpload != this->Scalars->GetDataVersion() || !this->BlockRanges->GetHandle() ||
+                         this->RangesScaleBias[0] != scaleBias[0] || this->RangesScaleBias[1] != scaleBias[1]))
   {
-    const int* bd = impl.Scalars->GetBlockDimensions();
-    std::vector<float> ranges = impl.Scalars->GetBlockRanges();
-    impl.BlockRanges->SetContext(renWin);
-    impl.BlockRanges->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.BlockRanges->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.BlockRanges->SetWrapR(vtkTextureObject::ClampToEdge);
-    impl.BlockRanges->SetMinificationFilter(vtkTextureObject::Nearest);
-    impl.BlockRanges->SetMagnificationFilter(vtkTextureObject::Nearest);
-    if (ranges.empty() ||
-      !impl.BlockRanges->Create3DFromRaw(bd[0], bd[1], bd[2], 2, VTK_FLOAT, ranges.data()))
+    const int* bd = this->Scalars->GetBlockDimensions();
+    // in u, as the shader's samples are (a block with no valid node: (1, 0), never entered)
+    std::vector<float> ranges = this->Scalars->GetBlockRanges();
+    for (size_t b = 0; 2 * b + 1 < ranges.size(); ++b)
     {
-      vtkErrorMacro(<< "could not create the block-range texture");
-      return;
+      if (ranges[2 * b] > ranges[2 * b + 1])
+      {
+        ranges[2 * b] = 1.0f;
+        ranges[2 * b + 1] = 0.0f;
+        continue;
+      }
+      const float u0 = static_cast<float>(ranges[2 * b] * scaleBias[0] + scaleBias[1]);
+      const float u1 = static_cast<float>(ranges[2 * b + 1] * scaleBias[0] + scaleBias[1]);
+      ranges[2 * b] = std::min(u0, u1);
+      ranges[2 * b + 1] = std::max(u0, u1);
     }
-    impl.RangesUpload = impl.Scalars->GetUploadCount();
+    this->BlockRanges->SetContext(renWin);
+    this->BlockRanges->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->BlockRanges->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->BlockRanges->SetWrapR(vtkTextureObject::ClampToEdge);
+    this->BlockRanges->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->BlockRanges->SetMagnificationFilter(vtkTextureObject::Nearest);
+    if (ranges.empty() ||
+      !this->BlockRanges->Create3DFromRaw(bd[0], bd[1], bd[2], 2, VTK_FLOAT, ranges.data()))
+    {
+      vtkErrorWithObjectMacro(self, << "could not create the block-range texture");
+      return false;
+    }
+    this->RangesUpload = this->Scalars->GetDataVersion();
+    this->RangesScaleBias[0] = scaleBias[0];
+    this->RangesScaleBias[1] = scaleBias[1];
   }
   // MIP decides per ray (0 here); the isosurface's fraction is set with its iso value below
-  this->EmptyBlockFraction = skipping ? impl.EmptyFraction : 0.0;
+  self->EmptyBlockFraction = skipping ? this->EmptyFraction : 0.0;
   // (almost) no transparent block, a dense field: the in-shader look-up per block
   // costs more than it saves (measured on the bench's dense field, 0.1 % empty:
   // +25 % time; sparse smoke, 67 % empty: -40 %), so below 10 % the shader leaves
   // it out (only the box around the non-transparent blocks is drawn); same image
-  const bool skipTransparent = skipping && impl.EmptyFraction >= MinSkipFraction;
+  const bool skipTransparent = skipping && this->EmptyFraction >= MinSkipFraction;
+  frame.Skipping = skipping;
+  frame.RangeSkipping = rangeSkipping;
+  frame.SkipTransparent = skipTransparent;
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Step 3: the opaque scene's depth (the frame's shared copy under a
+// vtkPlumeCompositingPass, else our own copy of the depth buffer).
+void vtkPlumeVolumeMapper::Internals::AcquireDepth(vtkPlumeVolumeMapper* self, Frame& frame)
+{
   // ---- opaque depth
   // (the frame's shared copy under a vtkPlumeCompositingPass, else our own)
   vtkPlumeOpaqueDepthTexture* depth =
-    this->UseOpaqueDepth ? vtkPlumeCompositingPass::AcquireDepth(ren, impl.Depth) : nullptr;
+    self->UseOpaqueDepth ? vtkPlumeCompositingPass::AcquireDepth(frame.Renderer, this->Depth) : nullptr;
   const bool useDepth = depth != nullptr;
-  if (this->UseOpaqueDepth)
+  frame.Depth = depth;
+  frame.UseDepth = useDepth;
+  if (self->UseOpaqueDepth)
   {
     if (!useDepth)
     {
-      vtkWarningMacro(<< "rays will not stop at opaque geometry: "
-                      << (impl.Depth->GetLastError().empty() ? std::string("the compositing pass has no depth")
-                                                             : impl.Depth->GetLastError()));
+      vtkWarningWithObjectMacro(self, << "rays will not stop at opaque geometry: "
+                      << (this->Depth->GetLastError().empty() ? std::string("the compositing pass has no depth")
+                                                             : this->Depth->GetLastError()));
     }
   }
 
+}
+
+//------------------------------------------------------------------------------
+// Step 4: index -> data -> world -> clip in double (the image's direction
+// matrix and the volume's transform honoured), the box and the part of it drawn.
+bool vtkPlumeVolumeMapper::Internals::ComputeFrame(vtkPlumeVolumeMapper* self, Frame& frame)
+{
   // ---- matrices, in double: index -> data -> world -> clip
-  int dims[3], extent[6];
+  vtkImageData* image = frame.Image;
+  vtkRenderer* ren = frame.Renderer;
+  const bool skipping = frame.Skipping;
+  int* dims = frame.Dims;
+  int extent[6];
   image->GetDimensions(dims);
   image->GetExtent(extent);
   double indexToData[16];
   plume::IndexToPhysical(image, indexToData);
   double indexToWorld[16];
-  vtkMatrix4x4::Multiply4x4(vol->GetMatrix()->GetData(), indexToData, indexToWorld);
+  vtkMatrix4x4::Multiply4x4(frame.Volume->GetMatrix()->GetData(), indexToData, indexToWorld);
   double aspect[2];
   const double tiledAspect = ren->GetTiledAspectRatio();
   aspect[0] = tiledAspect;
@@ -630,18 +856,20 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(aspect[0], -1, 1);
     std::copy(m->GetData(), m->GetData() + 16, worldToClip);
   }
-  double indexToClip[16], clipToIndex[16];
+  double* indexToClip = frame.IndexToClip;
+  double* clipToIndex = frame.ClipToIndex;
   vtkMatrix4x4::Multiply4x4(worldToClip, indexToWorld, indexToClip);
   vtkMatrix4x4::Invert(indexToClip, clipToIndex);
-  for (double v : clipToIndex)
+  for (int i = 0; i < 16; ++i)
   {
-    if (!std::isfinite(v))
+    if (!std::isfinite(clipToIndex[i]))
     {
-      vtkErrorMacro(<< "degenerate volume or camera transform (not invertible)");
-      return;
+      vtkErrorWithObjectMacro(self, << "degenerate volume or camera transform (not invertible)");
+      return false;
     }
   }
-  double linear[9], normal[9];
+  double* linear = frame.Linear;
+  double* normal = frame.Normal;
   for (int r = 0; r < 3; ++r)
   {
     for (int c = 0; c < 3; ++c)
@@ -649,36 +877,49 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       linear[3 * r + c] = indexToWorld[4 * r + c];
     }
   }
-  const double det = vtkMatrix3x3::Determinant(linear);
+  frame.Det = vtkMatrix3x3::Determinant(linear);
   {
     double inv[9];
     vtkMatrix3x3::Invert(linear, inv);
     vtkMatrix3x3::Transpose(inv, normal);
   }
-  float boxMin[3], boxMax[3], fdims[3], drawMin[3], drawMax[3];
+  float* boxMin = frame.BoxMin;
+  float* boxMax = frame.BoxMax;
+  float* fdims = frame.FDims;
+  float* drawMin = frame.DrawMin;
+  float* drawMax = frame.DrawMax;
   for (int a = 0; a < 3; ++a)
   {
     boxMin[a] = dims[a] > 1 ? 0.0f : -0.5f;
     boxMax[a] = dims[a] > 1 ? static_cast<float>(dims[a] - 1) : 0.5f;
     fdims[a] = static_cast<float>(dims[a]);
     // with skipping, only the bounds of the non-transparent blocks are drawn
-    drawMin[a] = skipping ? std::max(boxMin[a], static_cast<float>(impl.OccupiedMin[a])) : boxMin[a];
-    drawMax[a] = skipping ? std::min(boxMax[a], static_cast<float>(impl.OccupiedMax[a])) : boxMax[a];
+    drawMin[a] = skipping ? std::max(boxMin[a], static_cast<float>(this->OccupiedMin[a])) : boxMin[a];
+    drawMax[a] = skipping ? std::min(boxMax[a], static_cast<float>(this->OccupiedMax[a])) : boxMax[a];
     if (skipping && dims[a] == 1)
     {
       drawMin[a] = boxMin[a];
       drawMax[a] = boxMax[a];
     }
   }
-  if (skipping && impl.OccupiedBlocks == 0)
+  if (skipping && this->OccupiedBlocks == 0)
   {
-    return; // everything is transparent: nothing to draw
+    return false; // everything is transparent: nothing to draw
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Step 5: the shader mode and the renderer's lights (up to MaxLights; lit
+// modes with none switched on are lit from the camera).
+void vtkPlumeVolumeMapper::Internals::GatherLights(vtkPlumeVolumeMapper* self, Frame& frame)
+{
   // ---- lights (world directions towards the light)
-  std::vector<std::array<double, 3>> lightDirs, lightColors;
+  std::vector<std::array<double, 3>>& lightDirs = frame.LightDirs;
+  std::vector<std::array<double, 3>>& lightColors = frame.LightColors;
   {
-    vtkLightCollection* lights = ren->GetLights();
+    vtkLightCollection* lights = frame.Renderer->GetLights();
     vtkCollectionSimpleIterator it;
     lights->InitTraversal(it);
     while (vtkLight* light = lights->GetNextLight(it))
@@ -707,116 +948,164 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       lightColors.push_back({ rgb[0] * k, rgb[1] * k, rgb[2] * k });
     }
   }
-  const int blend = this->BlendMode;
-  std::string mode = "PLUME_COMPOSITE";
+  const int blend = self->BlendMode;
+  std::string& mode = frame.Mode;
+  mode = "COMPOSITE";
   if (blend == MAXIMUM_INTENSITY_BLEND)
   {
-    mode = "PLUME_MIP";
+    mode = "MIP";
   }
   else if (blend == ISOSURFACE_BLEND)
   {
-    mode = "PLUME_ISO";
+    mode = "ISO";
   }
-  else if (this->Smoke)
+  else if (self->Smoke)
   {
-    mode = "PLUME_SMOKE";
+    mode = "SMOKE";
   }
-  const bool lit = mode == "PLUME_ISO" || mode == "PLUME_SMOKE" || shade;
+  const bool lit = mode == "ISO" || mode == "SMOKE" || frame.Shade;
+  frame.Lit = lit;
   if (lit && lightDirs.empty())
   {
     // no light switched on: light from the camera so lit modes are not black
     double p[3], f[3];
-    camera->GetPosition(p);
-    camera->GetFocalPoint(f);
+    frame.Renderer->GetActiveCamera()->GetPosition(p);
+    frame.Renderer->GetActiveCamera()->GetFocalPoint(f);
     std::array<double, 3> l = { p[0] - f[0], p[1] - f[1], p[2] - f[2] };
     vtkMath::Normalize(l.data());
     lightDirs.push_back(l);
     lightColors.push_back({ 1, 1, 1 });
   }
-  const int nLights = lit ? static_cast<int>(lightDirs.size()) : 0;
+  frame.NLights = lit ? static_cast<int>(lightDirs.size()) : 0;
 
+}
+
+//------------------------------------------------------------------------------
+// Step 6: the shader programs (only the features in use are compiled) and,
+// with a ray lattice, its texture.
+bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, Frame& frame)
+{
   // ---- program (only the features in use are compiled: vtkPlumeShaderVariants keeps
   // the shader's //PLUME::IF blocks of the enabled features)
-  vtkPlumeShaderFeatures features;
-  features.Enable(mode.substr(6)); // COMPOSITE, MIP, ISO or SMOKE
-  features.Enable("JITTER", this->Jitter);
-  features.Enable("DEPTH", useDepth);
+  vtkOpenGLRenderWindow* renWin = frame.Window;
+  const std::string& mode = frame.Mode;
+  const bool shade = frame.Shade;
+  const bool skipTransparent = frame.SkipTransparent;
+  const bool rangeSkipping = frame.RangeSkipping;
+  vtkPlumeShaderFeatures& features = frame.Features;
+  features.Enable(mode); // COMPOSITE, MIP, ISO or SMOKE
+  features.Enable("JITTER", self->Jitter);
+  features.Enable("DEPTH", frame.UseDepth);
   // masked data: blocks such as SMOKE+MASK combine the mode with the mask
-  features.Enable(impl.Scalars->GetMasked() ? "MASK" : "NOMASK");
-  if (!impl.Scalars->GetMasked())
+  features.Enable(this->Scalars->GetMasked() ? "MASK" : "NOMASK");
+  if (!this->Scalars->GetMasked())
   {
-    features.Enable(impl.Scalars->GetHasGradients() ? "GRADIENT" : "PLAIN");
+    features.Enable(this->Scalars->GetHasGradients() ? "GRADIENT" : "PLAIN");
   }
-  features.Enable("SHADE_NOGRADIENT", shade && !impl.Scalars->GetHasGradients());
+  features.Enable("SHADE_NOGRADIENT", shade && !this->Scalars->GetHasGradients());
   if (skipTransparent || rangeSkipping)
   {
     features.Enable("SKIP");
-    features.Enable(skipTransparent ? "SKIP_TRANSPARENT" : (mode == "PLUME_MIP" ? "SKIP_MIP" : "SKIP_ISO"));
+    features.Enable(skipTransparent ? "SKIP_TRANSPARENT" : (mode == "MIP" ? "SKIP_MIP" : "SKIP_ISO"));
   }
-  if (rangeSkipping && mode == "PLUME_ISO")
+  if (rangeSkipping && mode == "ISO")
   {
     std::ostringstream margin;
     margin << IsoMargin;
     features.Define("PLUME_ISO_MARGIN", margin.str());
   }
   features.Enable("SHADE", shade);
-  if (lit)
+  if (frame.Lit)
   {
-    features.Define("PLUME_LIGHTS", nLights);
+    features.Define("PLUME_LIGHTS", frame.NLights);
   }
 
   // ---- ray lattice: one ray per lattice x lattice pixels first (into a small
   // texture), then every pixel interpolates its four nearest lattice rays where
   // they agree and casts its own ray where they do not (VTK's conventions: the
   // interactive lattice while the volume's allocated render time is below 1 s)
-  int vpWidth = 0, vpHeight = 0, vpX = 0, vpY = 0;
-  ren->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &vpX, &vpY);
-  const bool interactive = this->AutoAdjustSampleDistances && vol->GetAllocatedRenderTime() < 1.0;
-  int lattice = interactive ? this->InteractiveImageSampleDistance : this->ImageSampleDistance;
+  int& vpWidth = frame.Viewport[0];
+  int& vpHeight = frame.Viewport[1];
+  frame.Renderer->GetTiledSizeAndOrigin(&vpWidth, &vpHeight, &frame.Viewport[2], &frame.Viewport[3]);
+  const bool interactive = self->AutoAdjustSampleDistances && frame.Volume->GetAllocatedRenderTime() < 1.0;
+  int& lattice = frame.Lattice;
+  lattice = interactive ? self->InteractiveImageSampleDistance : self->ImageSampleDistance;
   lattice = std::max(1, std::min(lattice, std::min(vpWidth, vpHeight) / 2));
-  this->LastImageSampleDistance = lattice;
-  const int latticeSize[2] = { (vpWidth + lattice - 1) / std::max(lattice, 1),
-    (vpHeight + lattice - 1) / std::max(lattice, 1) };
+  self->LastImageSampleDistance = lattice;
+  int* latticeSize = frame.LatticeSize;
+  latticeSize[0] = (vpWidth + lattice - 1) / std::max(lattice, 1);
+  latticeSize[1] = (vpHeight + lattice - 1) / std::max(lattice, 1);
   if (lattice > 1)
   {
-    if (!impl.Lattice->GetHandle() || impl.Lattice->GetContext() != renWin)
+    if (!this->Lattice->GetHandle() || this->Lattice->GetContext() != renWin)
     {
-      impl.Lattice->SetContext(renWin);
-      impl.Lattice->SetMinificationFilter(vtkTextureObject::Nearest);
-      impl.Lattice->SetMagnificationFilter(vtkTextureObject::Nearest);
-      impl.Lattice->SetWrapS(vtkTextureObject::ClampToEdge);
-      impl.Lattice->SetWrapT(vtkTextureObject::ClampToEdge);
-      impl.Lattice->Allocate2D(latticeSize[0], latticeSize[1], 4, VTK_FLOAT);
-      impl.LatticeFBO->SetContext(renWin);
+      this->Lattice->SetContext(renWin);
+      this->Lattice->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->Lattice->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->Lattice->SetWrapS(vtkTextureObject::ClampToEdge);
+      this->Lattice->SetWrapT(vtkTextureObject::ClampToEdge);
+      this->Lattice->Allocate2D(latticeSize[0], latticeSize[1], 4, VTK_FLOAT);
+      this->LatticeFBO->SetContext(renWin);
     }
-    else if (static_cast<int>(impl.Lattice->GetWidth()) != latticeSize[0] ||
-      static_cast<int>(impl.Lattice->GetHeight()) != latticeSize[1])
+    else if (static_cast<int>(this->Lattice->GetWidth()) != latticeSize[0] ||
+      static_cast<int>(this->Lattice->GetHeight()) != latticeSize[1])
     {
-      impl.Lattice->Resize(latticeSize[0], latticeSize[1]);
+      this->Lattice->Resize(latticeSize[0], latticeSize[1]);
     }
   }
-  vtkPlumeShaderFeatures coarseFeatures = features;
+  vtkPlumeShaderFeatures& coarseFeatures = frame.CoarseFeatures;
+  coarseFeatures = features;
   coarseFeatures.Enable("COARSE");
   features.Enable("REFINE", lattice > 1);
-  vtkShaderProgram* coarse = nullptr;
+  vtkShaderProgram*& coarse = frame.Coarse;
   if (lattice > 1)
   {
-    coarse = impl.Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, coarseFeatures);
+    coarse = this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, coarseFeatures);
     if (!coarse)
     {
-      vtkErrorMacro(<< "could not build the volume shader program (ray lattice)");
-      return;
+      vtkErrorWithObjectMacro(self, << "could not build the volume shader program (ray lattice)");
+      return false;
     }
   }
-  vtkShaderProgram* program = impl.Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, features);
+  vtkShaderProgram*& program = frame.Program;
+  program = this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, features);
   if (!program)
   {
-    vtkErrorMacro(<< "could not build the volume shader program");
-    return;
+    vtkErrorWithObjectMacro(self, << "could not build the volume shader program");
+    return false;
   }
 
-  auto setUniforms = [&](vtkShaderProgram* program) {
-  // ---- uniforms
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Step 7: a program's uniforms and textures (the lattice and the full-resolution
+// programs get the same ones).
+void vtkPlumeVolumeMapper::Internals::SetUniforms(
+  vtkPlumeVolumeMapper* self, Frame& frame, vtkShaderProgram* program)
+{
+  const double* indexToClip = frame.IndexToClip;
+  const double* clipToIndex = frame.ClipToIndex;
+  const double* linear = frame.Linear;
+  const double* normal = frame.Normal;
+  const float* boxMin = frame.BoxMin;
+  const float* boxMax = frame.BoxMax;
+  const float* drawMin = frame.DrawMin;
+  const float* drawMax = frame.DrawMax;
+  const float* fdims = frame.FDims;
+  const int* dims = frame.Dims;
+  const double* range = frame.Range;
+  const double* scaleBias = frame.ScaleBias;
+  const double invUnit = frame.InvUnit;
+  const std::string& mode = frame.Mode;
+  const bool shade = frame.Shade;
+  const bool lit = frame.Lit;
+  const int nLights = frame.NLights;
+  const auto& lightDirs = frame.LightDirs;
+  const auto& lightColors = frame.LightColors;
+  vtkVolumeProperty* property = frame.Property;
+  const bool rangeSkipping = frame.RangeSkipping;
+  const bool skipTransparent = frame.SkipTransparent;
   plume::SetUniformMatrix4x4(program, "IndexToClip", indexToClip);
   plume::SetUniformMatrix4x4(program, "ClipToIndex", clipToIndex);
   program->SetUniform3f("BoxMin", boxMin);
@@ -825,25 +1114,25 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniform3f("DrawMax", drawMax);
   program->SetUniform3f("Dims", fdims);
   plume::SetUniformMatrix3x3(program, "IndexToWorld", linear);
-  const float vpOrigin[2] = { float(vpX), float(vpY) };
-  const float vpSize[2] = { float(vpWidth), float(vpHeight) };
+  const float vpOrigin[2] = { float(frame.Viewport[2]), float(frame.Viewport[3]) };
+  const float vpSize[2] = { float(frame.Viewport[0]), float(frame.Viewport[1]) };
   program->SetUniform2f("ViewportOrigin", vpOrigin);
   program->SetUniform2f("ViewportSize", vpSize);
-  program->SetUniformf("StepIndex", static_cast<float>(this->SampleDistance));
+  program->SetUniformf("StepIndex", static_cast<float>(self->SampleDistance));
   // enough steps to cross the box diagonal at the requested distance, capped
   const double diagonal = std::sqrt(double(dims[0]) * dims[0] + double(dims[1]) * dims[1] +
                             double(dims[2]) * dims[2]) + 2.0;
-  const int maxSteps = static_cast<int>(std::min(16384.0, std::ceil(diagonal / this->SampleDistance) + 2));
+  const int maxSteps = static_cast<int>(std::min(16384.0, std::ceil(diagonal / self->SampleDistance) + 2));
   program->SetUniformi("MaxSteps", maxSteps);
   program->SetUniformf("UnitDistance", static_cast<float>(1.0 / invUnit));
   // early termination from the error budget: what the rest of a ray with
   // transmittance T adds is T (L - a B), L <= R a its radiance, a its opacity
   // and B <= 1 what lies behind, so |error| <= T max(R, 1)
-  this->EffectiveOpacityThreshold = 1.0;
-  if (this->TerminationError > 0 && (mode == "PLUME_COMPOSITE" || mode == "PLUME_SMOKE"))
+  self->EffectiveOpacityThreshold = 1.0;
+  if (self->TerminationError > 0 && (mode == "COMPOSITE" || mode == "SMOKE"))
   {
     double brightest = 0; // of the table entries with extinction
-    const std::vector<float>& table = impl.Table->GetTable();
+    const std::vector<float>& table = this->Table->GetTable();
     for (size_t i = 0; 4 * i + 3 < table.size(); ++i)
     {
       if (table[4 * i + 3] > 0.0f)
@@ -857,7 +1146,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       lights += std::max({ lightColors[l][0], lightColors[l][1], lightColors[l][2], 0.0 });
     }
     double radiance = brightest;
-    if (mode == "PLUME_SMOKE")
+    if (mode == "SMOKE")
     {
       radiance = brightest * (std::abs(property->GetAmbient(0)) + std::abs(property->GetDiffuse(0)) * lights);
     }
@@ -867,45 +1156,54 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
         std::abs(property->GetSpecular(0)) * lights;
     }
     const double bound = std::isfinite(radiance) ? std::max(radiance, 1.0) : VTK_DOUBLE_MAX;
-    this->EffectiveOpacityThreshold = std::max(0.0, 1.0 - this->TerminationError / bound);
+    self->EffectiveOpacityThreshold = std::max(0.0, 1.0 - self->TerminationError / bound);
   }
   // (a float just below 1 would round to 1: 1 - 2^-24 is the largest below it)
   program->SetUniformf("OpacityThreshold",
-    this->EffectiveOpacityThreshold >= 1.0 ? 2.0f : std::min(static_cast<float>(this->EffectiveOpacityThreshold), 1.0f - 6e-8f));
+    self->EffectiveOpacityThreshold >= 1.0 ? 2.0f : std::min(static_cast<float>(self->EffectiveOpacityThreshold), 1.0f - 6e-8f));
   program->SetUniformf("TFSize", static_cast<float>(TableSize));
-  if (this->Jitter)
+  if (self->Jitter)
   {
-    program->SetUniformi("JitterSeed", this->AnimatedJitter ? this->JitterSeed + impl.Frame : this->JitterSeed);
+    program->SetUniformi("JitterSeed", self->AnimatedJitter ? self->JitterSeed + this->FrameCount : self->JitterSeed);
   }
   const double span = range[1] - range[0];
-  if (mode == "PLUME_ISO")
+  if (mode == "ISO")
   {
-    double iso = this->IsoValue;
+    double iso = self->IsoValue;
     vtkContourValues* values = property->GetIsoSurfaceValues();
-    if (!std::isfinite(iso) && values && values->GetNumberOfContours() > 0)
+    // the property's, unless it holds VTK's default (one value, 0: not set)
+    const bool propertySet = values && values->GetNumberOfContours() > 0 &&
+      !(values->GetNumberOfContours() == 1 && values->GetValue(0) == 0.0);
+    if (!std::isfinite(iso) && propertySet)
     {
       iso = values->GetValue(0);
     }
     if (!std::isfinite(iso))
     {
-      iso = range[0] + 0.5 * span;
+      iso = vtkPlumeVolumeMapper::GetAutomaticIsoValue(property, range);
     }
+    self->EffectiveIsoValue = iso;
     const double u = span > 0 ? (iso - range[0]) / span : (iso > range[0] ? 2.0 : -1.0);
     const float isoU = static_cast<float>(std::min(2.0, std::max(-1.0, u)));
     program->SetUniformf("IsoValue", isoU);
     if (rangeSkipping)
     {
-      // blocks whose range does not contain the iso value (as the shader tests them)
-      const std::vector<float>& ranges = impl.Scalars->GetBlockRanges();
+      // blocks whose range does not contain the iso value (as the shader tests them, in u)
+      const std::vector<float>& ranges = this->Scalars->GetBlockRanges();
       size_t outside = 0;
       for (size_t b = 0; 2 * b + 1 < ranges.size(); ++b)
       {
-        outside += ranges[2 * b + 1] < isoU - IsoMargin || ranges[2 * b] > isoU + IsoMargin ? 1 : 0;
+        const float u0 = static_cast<float>(ranges[2 * b] * scaleBias[0] + scaleBias[1]);
+        const float u1 = static_cast<float>(ranges[2 * b + 1] * scaleBias[0] + scaleBias[1]);
+        outside += ranges[2 * b] > ranges[2 * b + 1] || std::max(u0, u1) < isoU - IsoMargin ||
+            std::min(u0, u1) > isoU + IsoMargin
+          ? 1
+          : 0;
       }
-      this->EmptyBlockFraction = ranges.empty() ? 0.0 : double(outside) / (ranges.size() / 2);
+      self->EmptyBlockFraction = ranges.empty() ? 0.0 : double(outside) / (ranges.size() / 2);
     }
   }
-  if (mode == "PLUME_ISO" || shade)
+  if (mode == "ISO" || shade)
   {
     plume::SetUniformMatrix3x3(program, "NormalToWorld", normal);
     program->SetUniformf("Specular", static_cast<float>(property->GetSpecular(0)));
@@ -927,9 +1225,9 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     program->SetUniform3fv("LightDirection", nLights, reinterpret_cast<float(*)[3]>(dirs.data()));
     program->SetUniform3fv("LightColor", nLights, reinterpret_cast<float(*)[3]>(cols.data()));
   }
-  if (mode == "PLUME_SMOKE")
+  if (mode == "SMOKE")
   {
-    program->SetUniformf("ShadowStepIndex", static_cast<float>(this->ShadowSampleDistance));
+    program->SetUniformf("ShadowStepIndex", static_cast<float>(self->ShadowSampleDistance));
     std::vector<float> idxDirs, perIndex;
     double inv[9];
     vtkMatrix3x3::Invert(linear, inv);
@@ -953,31 +1251,45 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const int filter = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
     ? vtkTextureObject::Nearest
     : vtkTextureObject::Linear;
-  impl.Scalars->GetTextureObject()->SetMinificationFilter(filter);
-  impl.Scalars->GetTextureObject()->SetMagnificationFilter(filter);
-  impl.Scalars->GetTextureObject()->Activate();
-  program->SetUniformi("Volume", impl.Scalars->GetTextureObject()->GetTextureUnit());
-  impl.Table->GetTextureObject()->Activate();
-  program->SetUniformi("TransferFunction", impl.Table->GetTextureObject()->GetTextureUnit());
-  if (useDepth)
+  this->Scalars->GetTextureObject()->SetMinificationFilter(filter);
+  this->Scalars->GetTextureObject()->SetMagnificationFilter(filter);
+  this->Scalars->GetTextureObject()->Activate();
+  program->SetUniformi("Volume", this->Scalars->GetTextureObject()->GetTextureUnit());
+  const float fScaleBias[2] = { static_cast<float>(scaleBias[0]), static_cast<float>(scaleBias[1]) };
+  program->SetUniform2f("ValueScaleBias", fScaleBias);
+  this->Table->GetTextureObject()->Activate();
+  program->SetUniformi("TransferFunction", this->Table->GetTextureObject()->GetTextureUnit());
+  if (frame.UseDepth)
   {
-    depth->GetTextureObject()->Activate();
-    program->SetUniformi("OpaqueDepth", depth->GetTextureObject()->GetTextureUnit());
+    frame.Depth->GetTextureObject()->Activate();
+    program->SetUniformi("OpaqueDepth", frame.Depth->GetTextureObject()->GetTextureUnit());
   }
   if (skipTransparent || rangeSkipping)
   {
-    vtkTextureObject* blocks = skipTransparent ? impl.Occupancy.GetPointer() : impl.BlockRanges.GetPointer();
+    vtkTextureObject* blocks = skipTransparent ? this->Occupancy.GetPointer() : this->BlockRanges.GetPointer();
     blocks->Activate();
     program->SetUniformi(skipTransparent ? "Occupancy" : "BlockRanges", blocks->GetTextureUnit());
-    program->SetUniformf("BlockSize", static_cast<float>(impl.Scalars->GetBlockSize()));
-    const int* bd = impl.Scalars->GetBlockDimensions();
+    program->SetUniformf("BlockSize", static_cast<float>(this->Scalars->GetBlockSize()));
+    const int* bd = this->Scalars->GetBlockDimensions();
     const float fbd[3] = { float(bd[0]), float(bd[1]), float(bd[2]) };
     program->SetUniform3f("BlockDims", fbd);
   }
-  };
+}
 
+//------------------------------------------------------------------------------
+// Step 8: draw the box's back faces (the lattice rays first, into their
+// texture), under premultiplied blending, no depth test or write.
+void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& frame)
+{
   // ---- state: back faces only (front faces if the transform mirrors), no depth test/write,
   // premultiplied blending, depth clamp so the far plane never clips the box
+  vtkOpenGLRenderWindow* renWin = frame.Window;
+  const int lattice = frame.Lattice;
+  const int* latticeSize = frame.LatticeSize;
+  const int vpWidth = frame.Viewport[0];
+  const int vpHeight = frame.Viewport[1];
+  vtkShaderProgram* coarse = frame.Coarse;
+  vtkShaderProgram* program = frame.Program;
   vtkOpenGLState* state = renWin->GetState();
   vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
@@ -989,16 +1301,16 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   state->vtkglEnable(GL_CULL_FACE);
-  state->vtkglCullFace(det < 0 ? GL_BACK : GL_FRONT);
+  state->vtkglCullFace(frame.Det < 0 ? GL_BACK : GL_FRONT);
   const bool depthClampWasOn = glIsEnabled(GL_DEPTH_CLAMP) == GL_TRUE;
   glEnable(GL_DEPTH_CLAMP);
 
-  impl.EmptyVAO->Bind();
+  this->EmptyVAO->Bind();
   if (lattice > 1)
   {
     // the lattice rays into their texture: premultiplied colour, no blending
-    impl.Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, coarseFeatures);
-    setUniforms(coarse);
+    this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.CoarseFeatures);
+    this->SetUniforms(self, frame, coarse);
     const float clipScale[2] = { float(vpWidth) / float(lattice * latticeSize[0]),
       float(vpHeight) / float(lattice * latticeSize[1]) };
     coarse->SetUniform2f("ClipScale", clipScale);
@@ -1006,9 +1318,9 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     GLint viewport[4];
     glGetIntegerv(GL_VIEWPORT, viewport);
     state->PushFramebufferBindings();
-    impl.LatticeFBO->Bind();
-    impl.LatticeFBO->AddColorAttachment(0, impl.Lattice);
-    impl.LatticeFBO->ActivateDrawBuffers(1);
+    this->LatticeFBO->Bind();
+    this->LatticeFBO->AddColorAttachment(0, this->Lattice);
+    this->LatticeFBO->ActivateDrawBuffers(1);
     {
       vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
       vtkOpenGLState::ScopedglClearColor clearSaver(state);
@@ -1020,25 +1332,25 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       glDrawArrays(GL_TRIANGLES, 0, 36);
       state->vtkglEnable(GL_BLEND);
     }
-    impl.LatticeFBO->RemoveColorAttachment(0);
+    this->LatticeFBO->RemoveColorAttachment(0);
     state->PopFramebufferBindings();
     state->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    impl.Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, features);
-    impl.Lattice->Activate();
-    program->SetUniformi("LatticeColor", impl.Lattice->GetTextureUnit());
+    this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.Features);
+    this->Lattice->Activate();
+    program->SetUniformi("LatticeColor", this->Lattice->GetTextureUnit());
     program->SetUniformf("Lattice", static_cast<float>(lattice));
     const float latticeDims[2] = { float(latticeSize[0]), float(latticeSize[1]) };
     program->SetUniform2f("LatticeSize", latticeDims);
-    program->SetUniformf("LatticeTolerance", static_cast<float>(this->LatticeTolerance));
+    program->SetUniformf("LatticeTolerance", static_cast<float>(self->LatticeTolerance));
   }
-  setUniforms(program);
+  this->SetUniforms(self, frame, program);
   const float unitScale[2] = { 1.0f, 1.0f };
   program->SetUniform2f("ClipScale", unitScale);
   glDrawArrays(GL_TRIANGLES, 0, 36);
-  impl.EmptyVAO->Release();
+  this->EmptyVAO->Release();
   if (lattice > 1)
   {
-    impl.Lattice->Deactivate();
+    this->Lattice->Deactivate();
   }
 
   if (!depthClampWasOn)
@@ -1046,21 +1358,20 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     glDisable(GL_DEPTH_CLAMP);
   }
   state->vtkglCullFace(GL_BACK);
-  impl.Scalars->GetTextureObject()->Deactivate();
-  impl.Table->GetTextureObject()->Deactivate();
-  if (useDepth)
+  this->Scalars->GetTextureObject()->Deactivate();
+  this->Table->GetTextureObject()->Deactivate();
+  if (frame.UseDepth)
   {
-    depth->GetTextureObject()->Deactivate();
+    frame.Depth->GetTextureObject()->Deactivate();
   }
-  if (skipTransparent)
+  if (frame.SkipTransparent)
   {
-    impl.Occupancy->Deactivate();
+    this->Occupancy->Deactivate();
   }
-  if (rangeSkipping)
+  if (frame.RangeSkipping)
   {
-    impl.BlockRanges->Deactivate();
+    this->BlockRanges->Deactivate();
   }
-  ++impl.Frame;
 }
 
 //------------------------------------------------------------------------------
@@ -1083,7 +1394,11 @@ void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutoAdjustSampleDistances: " << this->AutoAdjustSampleDistances << "\n";
   os << indent << "LatticeTolerance: " << this->LatticeTolerance << "\n";
   os << indent << "EffectiveOpacityThreshold: " << this->EffectiveOpacityThreshold << "\n";
-  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "IsoValue: " << this->IsoValue << " (in effect " << this->EffectiveIsoValue << ")\n";
+  os << indent << "OpacityUnitDistance: " << this->OpacityUnitDistance << " (in effect "
+     << this->EffectiveOpacityUnitDistance << ")\n";
+  os << indent << "TransferFunctionRange: " << this->TransferFunctionRange[0] << " "
+     << this->TransferFunctionRange[1] << "\n";
   os << indent << "ValidMaskArrayName: " << this->ValidMaskArrayName << "\n";
   os << indent << "Smoke: " << this->Smoke << "\n";
   os << indent << "ShadowSampleDistance: " << this->ShadowSampleDistance << "\n";

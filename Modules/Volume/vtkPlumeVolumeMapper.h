@@ -29,9 +29,13 @@
  * property's interpolation type is nearest.
  *
  * Transfer functions (vtkVolumeProperty, component 0): colour c(s) from the
- * RGB transfer function, scalar opacity α(s) per ScalarOpacityUnitDistance u
- * (world units). They are tabulated with 1024 entries over the data range and
- * re-tabulated only when the property or the data range changes. The
+ * RGB transfer function, scalar opacity α(s) per unit distance u (world
+ * units: OpacityUnitDistance if set, else the property's
+ * ScalarOpacityUnitDistance if set, else the mean voxel spacing). They are tabulated with 1024 entries over the data's finite
+ * range, or over TransferFunctionRange when it is set, and re-tabulated only
+ * when the property or that range changes. The 3D texture holds the raw
+ * values (vtkPlumeScalarTexture3D), mapped to the table by a scale and bias:
+ * a range change re-tabulates 1024 entries and uploads no volume. The
  * extinction coefficient is σ(s) = -ln(1 - min(α(s), 1 - 1e-6)) / u, so the
  * opacity of a segment of world length L is 1 - exp(-σ L): the correction for
  * the actual step length.
@@ -43,7 +47,8 @@
  *    isosurface below (central-difference normal at the sample).
  *  - MAXIMUM_INTENSITY_BLEND: s_max along the ray, output (c α, α)(s_max).
  *  - ISOSURFACE_BLEND: the first crossing of the iso value (IsoValue if set,
- *    else the property's first IsoSurfaceValues entry, else mid-range) between two
+ *    else the property's first IsoSurfaceValues entry if set, else the middle of the
+ *    colour transfer function's range, GetAutomaticIsoValue) between two
  *    samples, refined by 8 bisection steps; normal from central differences
  *    (one voxel) of the trilinear field, Phong lighting with the property's
  *    ambient/diffuse/specular/specular power and the renderer's lights; opaque.
@@ -77,6 +82,7 @@
 #include <string> // For std::string
 
 class vtkImageData;
+class vtkVolumeProperty;
 class vtkPlumeParameterTable;
 
 class PLUMEVOLUME_EXPORT vtkPlumeVolumeMapper : public vtkVolumeMapper
@@ -223,10 +229,56 @@ public:
   vtkGetMacro(EffectiveOpacityThreshold, double);
 
   ///@{
-  /** Iso value (data units) for ISOSURFACE_BLEND. Default NaN = the property's first iso value (VTK's default 0), or mid-range if it has none. */
+  /**
+   * The scalar range (data units) the transfer functions are tabulated over:
+   * values below it read the table's first entry, above it its last. Unset
+   * (default {0, 0}, or any range with min >= max): the data's finite range
+   * (of the valid nodes). A change re-tabulates the table and uploads no
+   * volume (the texture's raw values are mapped by a scale and bias).
+   */
+  vtkSetVector2Macro(TransferFunctionRange, double);
+  vtkGetVector2Macro(TransferFunctionRange, double);
+  ///@}
+
+  ///@{
+  /**
+   * Iso value (data units) for ISOSURFACE_BLEND. Default NaN = the property's
+   * first iso value if it was set (anything but VTK's default, a single 0),
+   * else GetAutomaticIsoValue (the middle of the colour transfer function's
+   * range).
+   */
   vtkSetMacro(IsoValue, double);
   vtkGetMacro(IsoValue, double);
   ///@}
+
+  /** The iso value used at the last isosurface render (data units). */
+  vtkGetMacro(EffectiveIsoValue, double);
+
+  /**
+   * The automatic iso value: the middle of the property's colour (or grey)
+   * transfer function's range, the part of the data the user sees coloured;
+   * the middle of `range` if that function has no extent.
+   */
+  static double GetAutomaticIsoValue(vtkVolumeProperty* property, const double range[2]);
+
+  ///@{
+  /**
+   * World length over which the transfer function's opacity applies (the
+   * opacity of a step of another length is corrected for it). 0 (default):
+   * the vtkVolumeProperty's ScalarOpacityUnitDistance if it was set, i.e. is
+   * not VTK's default 1, else GetAutomaticOpacityUnitDistance (one voxel: the
+   * same look on a fine and a coarse grid of the same data). > 0: this value,
+   * whatever the property says. Scene key opacity_unit_distance.
+   */
+  vtkSetClampMacro(OpacityUnitDistance, double, 0.0, 1e30);
+  vtkGetMacro(OpacityUnitDistance, double);
+  ///@}
+
+  /** The opacity unit distance used at the last render (world units). */
+  vtkGetMacro(EffectiveOpacityUnitDistance, double);
+
+  /** The automatic opacity unit distance: the image's mean absolute spacing (1 if it has none). */
+  static double GetAutomaticOpacityUnitDistance(vtkImageData* image);
 
   ///@{
   /** Smoke: emission–absorption with single-scattered, self-shadowed light. Default off. */
@@ -330,6 +382,9 @@ public:
   /** Number of 3D-texture uploads so far (tests check re-renders do not upload). */
   int GetUploadCount();
 
+  /** Number of data versions bound from a producer's hand-over (vtkPlumeTextureHandOver) instead of uploaded. */
+  int GetHandOverCount();
+
   /** Number of transfer-function tabulations so far. */
   vtkGetMacro(TableCount, int);
 
@@ -367,6 +422,10 @@ protected:
   double TextureMemoryBudgetMB = 0.0;
   double EffectiveTextureMemoryBudgetMB = 0.0;
   int TableCount = 0;
+  double TransferFunctionRange[2] = { 0.0, 0.0 };
+  double OpacityUnitDistance = 0.0;
+  double EffectiveOpacityUnitDistance = 1.0;
+  double EffectiveIsoValue = 0.0;
 
 private:
   vtkPlumeVolumeMapper(const vtkPlumeVolumeMapper&) = delete;

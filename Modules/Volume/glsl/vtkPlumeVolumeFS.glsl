@@ -32,7 +32,8 @@
 
 //PLUME::Defines
 
-uniform sampler3D Volume;           // normalised scalar u in [0, 1] (MASK: u w, w)
+uniform sampler3D Volume;           // raw scalar t (MASK: t w, w; GRADIENT: t, central differences)
+uniform vec2 ValueScaleBias;        // u = t scale + bias: 0..1 over the transfer functions' range
 uniform sampler2D TransferFunction; // 1 row: rgb = colour, a = extinction per world unit, over u
 uniform float TFSize;
 uniform vec3 Dims;
@@ -101,7 +102,7 @@ uniform vec3 LightColor[PLUME_LIGHTS];     // colour x intensity
 //PLUME::IF NOMASK
 float sampleU(vec3 p)
 {
-  return textureLod(Volume, (p + 0.5) / Dims, 0.0).r;
+  return textureLod(Volume, (p + 0.5) / Dims, 0.0).r * ValueScaleBias.x + ValueScaleBias.y;
 }
 //PLUME::ENDIF
 //PLUME::IF MASK
@@ -109,7 +110,7 @@ float sampleU(vec3 p)
 vec2 sampleUW(vec3 p)
 {
   vec2 s = textureLod(Volume, (p + 0.5) / Dims, 0.0).rg;
-  return vec2(s.g > 0.0 ? s.r / s.g : 0.0, s.g);
+  return vec2(s.g > 0.0 ? (s.r / s.g) * ValueScaleBias.x + ValueScaleBias.y : 0.0, s.g);
 }
 
 float sampleU(vec3 p)
@@ -200,7 +201,8 @@ float lightTransmittance(vec3 p, int l)
 // (u, its central differences along x, y, z) at index-space point p
 vec4 sampleUG(vec3 p)
 {
-  return textureLod(Volume, (p + 0.5) / Dims, 0.0);
+  vec4 s = textureLod(Volume, (p + 0.5) / Dims, 0.0);
+  return vec4(s.r * ValueScaleBias.x + ValueScaleBias.y, s.gba * ValueScaleBias.x);
 }
 //PLUME::ENDIF
 //PLUME::IF ISO SHADE_NOGRADIENT

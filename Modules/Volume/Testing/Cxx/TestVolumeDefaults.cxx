@@ -1,0 +1,117 @@
+// The volume's defaults live in the library (vtkPlumeVolumeMapper), so C++,
+// Python, ParaView and the plume command line get the same ones:
+//  - opacity unit distance: a property left at VTK's default 1 means one voxel
+//    (the image's mean |spacing|, here (0.02 + 0.01 + 0.03) / 3 = 0.02), and
+//    draws exactly what the property set to that value draws; a property set
+//    to something else is honoured; the mapper's OpacityUnitDistance wins over
+//    both; changing the automatic value re-tabulates (the table holds it);
+//  - iso value: unset (the property at VTK's default, one value 0), the
+//    middle of the colour transfer function's range,
+//    drawing exactly what that value set explicitly draws;
+//  - the unit distance declared in the parameter table with its default.
+#include "plumeVolumeTestUtil.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
+#include "vtkPlumeParameterTable.h"
+
+#include <limits>
+
+int TestVolumeDefaults(int, char*[])
+{
+  using namespace plumevolumetest;
+  int failures = 0;
+  auto fail = [&](const char* what) {
+    std::printf("FAIL: %s\n", what);
+    ++failures;
+  };
+  auto field = SmokeField(32);
+  field->SetSpacing(0.02, 0.01, 0.03);
+  Scene s = MakeScene(field, 96, 96);
+  vtkVolumeProperty* property = s.Volume->GetProperty();
+
+  // ---- opacity unit distance
+  property->SetScalarOpacityUnitDistance(1.0); // VTK's default: "not set"
+  const plume::test::FloatImage automatic = plume::test::ReadBack(s.Window);
+  std::printf("automatic unit distance %.6g (want 0.02)\n", s.Mapper->GetEffectiveOpacityUnitDistance());
+  if (std::abs(s.Mapper->GetEffectiveOpacityUnitDistance() - 0.02) > 1e-12 ||
+    std::abs(vtkPlumeVolumeMapper::GetAutomaticOpacityUnitDistance(field) - 0.02) > 1e-12)
+  {
+    fail("the automatic opacity unit distance is not the mean spacing");
+  }
+  property->SetScalarOpacityUnitDistance(0.02);
+  const plume::test::FloatImage explicitProperty = plume::test::ReadBack(s.Window);
+  const double sameRMS = plume::test::Compare(automatic, explicitProperty).RMS;
+  property->SetScalarOpacityUnitDistance(0.2);
+  const plume::test::FloatImage thinner = plume::test::ReadBack(s.Window);
+  const double propertyUnit = s.Mapper->GetEffectiveOpacityUnitDistance();
+  s.Mapper->SetOpacityUnitDistance(0.02); // the mapper's wins over the property's
+  const plume::test::FloatImage mapperUnit = plume::test::ReadBack(s.Window);
+  const double overrideRMS = plume::test::Compare(automatic, mapperUnit).RMS;
+  const double thinnerRMS = plume::test::Compare(automatic, thinner).RMS;
+  std::printf("automatic vs property 0.02: RMS %.3g; vs mapper 0.02: %.3g; vs property 0.2: %.3g (unit %.3g)\n",
+    sameRMS, overrideRMS, thinnerRMS, propertyUnit);
+  if (sameRMS > 0 || overrideRMS > 0)
+  {
+    fail("the automatic unit distance does not draw as the same value set explicitly");
+  }
+  if (propertyUnit != 0.2 || thinnerRMS < 1e-3)
+  {
+    fail("a property's own unit distance is not honoured");
+  }
+  // a new spacing changes the automatic value: the table follows without any data upload
+  s.Mapper->SetOpacityUnitDistance(0.0);
+  property->SetScalarOpacityUnitDistance(1.0);
+  s.Window->Render();
+  const int tables = s.Mapper->GetTableCount();
+  const int uploads = s.Mapper->GetUploadCount();
+  field->SetSpacing(0.04, 0.02, 0.06);
+  s.Window->Render();
+  std::printf("spacing doubled: unit %.3g, tables +%d\n", s.Mapper->GetEffectiveOpacityUnitDistance(),
+    s.Mapper->GetTableCount() - tables);
+  if (std::abs(s.Mapper->GetEffectiveOpacityUnitDistance() - 0.04) > 1e-12 || s.Mapper->GetTableCount() != tables + 1)
+  {
+    fail("the automatic unit distance does not follow the spacing");
+  }
+  field->SetSpacing(0.02, 0.01, 0.03);
+  (void)uploads;
+
+  // ---- iso value: the middle of the colour map
+  s.Mapper->SetBlendModeToIsoSurface();
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.2, 0.1, 0.3, 0.9);
+  color->AddRGBPoint(0.6, 1.0, 0.6, 0.1);
+  property->SetColor(color);
+  const plume::test::FloatImage autoIso = plume::test::ReadBack(s.Window);
+  std::printf("automatic iso value %.6g (want 0.4)\n", s.Mapper->GetEffectiveIsoValue());
+  if (std::abs(s.Mapper->GetEffectiveIsoValue() - 0.4) > 1e-12)
+  {
+    fail("the automatic iso value is not the middle of the colour map");
+  }
+  s.Mapper->SetIsoValue(0.4);
+  const double isoRMS = plume::test::Compare(autoIso, plume::test::ReadBack(s.Window)).RMS;
+  s.Mapper->SetIsoValue(0.25);
+  const double otherRMS = plume::test::Compare(autoIso, plume::test::ReadBack(s.Window)).RMS;
+  std::printf("automatic iso vs 0.4 set: RMS %.3g; vs 0.25: %.3g\n", isoRMS, otherRMS);
+  if (isoRMS > 0 || otherRMS < 1e-3)
+  {
+    fail("the automatic iso value does not draw as the same value set explicitly");
+  }
+
+  // a property's own iso value is honoured
+  s.Mapper->SetIsoValue(std::numeric_limits<double>::quiet_NaN());
+  property->GetIsoSurfaceValues()->SetValue(0, 0.3);
+  s.Window->Render();
+  if (s.Mapper->GetEffectiveIsoValue() != 0.3)
+  {
+    fail("the property's iso value is not honoured");
+  }
+
+  // ---- declared once, in the parameter table
+  const auto* unit = vtkPlumeVolumeMapper::GetParameterTable().Find("opacity_unit_distance");
+  if (!unit || unit->Property != "OpacityUnitDistance" || std::get<double>(unit->Default) != 0.0)
+  {
+    fail("opacity_unit_distance is not in the parameter table with default 0 (automatic)");
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
