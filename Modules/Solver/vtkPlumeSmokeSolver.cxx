@@ -4,11 +4,13 @@
 #include "vtkPlumePressureSolver.h"
 
 #include "vtkPlumeQuietExecutive.h"
+#include "vtkAlgorithmOutput.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
@@ -255,6 +257,13 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
       .Doc("Point array (3 components) of the optional velocity image on input port 1, in which smoke is "
            "released passively (the velocity does not evolve); \"\" = its active vectors.")
       .Bind(&T::SetVelocityArrayName, &T::GetVelocityArrayName);
+    t.Real("velocity_time_offset", "VelocityTimeOffset", 0.0)
+      .Between(-1e30, 1e30)
+      .Units("s")
+      .Panel("Boundaries")
+      .Doc("For a velocity time series: the flow's time at simulation time 0 (the smoke at time t moves with "
+           "the flow of time t + offset, linear between written times).")
+      .Bind(&T::SetVelocityTimeOffset, &T::GetVelocityTimeOffset);
     t.Boolean("project_velocity", "ProjectExternalVelocity", true)
       .Panel("Boundaries")
       .Advanced()
@@ -274,6 +283,7 @@ vtkPlumeSmokeSolver::vtkPlumeSmokeSolver()
   : Pressure(vtkSmartPointer<vtkPlumePressureSolver>::New())
   , LastRequestedTime(std::numeric_limits<double>::quiet_NaN())
 {
+  this->HeldVelocityTime = std::numeric_limits<double>::quiet_NaN();
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
   GetParameterTable().ApplyDefaults(this);
@@ -533,9 +543,22 @@ bool vtkPlumeSmokeSolver::EnsureState()
       return false;
     }
     valid = this->VelocityInput->GetPointData()->GetArray("vtkValidPointMask");
-    signature.push_back(double(this->VelocityInput->GetMTime()));
-    signature.push_back(double(external->GetMTime()));
-    signature.push_back(double(reinterpret_cast<uintptr_t>(external)));
+    if (this->IsVelocityTimeSeries())
+    {
+      // the input's data changes with every written time fetched: a new
+      // simulation only when the series (its algorithm or its times) does
+      vtkAlgorithm* upstream = this->GetNumberOfInputConnections(1) > 0 ? this->GetInputAlgorithm(1, 0) : nullptr;
+      signature.push_back(double(reinterpret_cast<uintptr_t>(upstream)));
+      signature.push_back(upstream ? double(upstream->GetMTime()) : 0.0);
+      signature.insert(signature.end(), this->VelocityTimes.begin(), this->VelocityTimes.end());
+      signature.push_back(this->VelocityTimeOffset);
+    }
+    else
+    {
+      signature.push_back(double(this->VelocityInput->GetMTime()));
+      signature.push_back(double(external->GetMTime()));
+      signature.push_back(double(reinterpret_cast<uintptr_t>(external)));
+    }
   }
   if (signature == this->Signature)
   {
@@ -618,24 +641,46 @@ bool vtkPlumeSmokeSolver::EnsureState()
   {
     u.clear();
   }
-  if (external && !this->SampleExternalVelocity(external))
+  for (VelocityFrame& frame : this->Frames)
   {
-    this->Signature.clear();
-    return false;
+    frame.Index = -1;
+  }
+  if (external)
+  {
+    if (!this->SampleExternalVelocity(this->VelocityInput, external, this->ExternalU))
+    {
+      this->Signature.clear();
+      return false;
+    }
+    if (this->IsVelocityTimeSeries())
+    {
+      // the frame the input holds now is kept (no second read of it)
+      const double held = this->HeldVelocityTime;
+      const auto at = std::find(this->VelocityTimes.begin(), this->VelocityTimes.end(), held);
+      if (at != this->VelocityTimes.end())
+      {
+        this->Frames[0].Index = int(at - this->VelocityTimes.begin());
+        for (int d = 0; d < 3; ++d)
+        {
+          this->Frames[0].U[d] = this->ExternalU[d];
+        }
+        ++this->NumberOfVelocityFramesRead;
+      }
+    }
   }
   this->Signature = signature;
   this->Reset();
   return true;
 }
 
-bool vtkPlumeSmokeSolver::SampleExternalVelocity(vtkDataArray* velocity)
+bool vtkPlumeSmokeSolver::SampleExternalVelocity(
+  vtkImageData* image, vtkDataArray* velocity, std::vector<double> faces[3])
 {
   // Each face takes its component of the velocity image, trilinear between
   // the image's points (zero outside the image); walls stay zero. The field
   // is then projected once: resampling leaves some divergence, which would
   // make passive smoke gather or thin out.
   const int* n = this->Cells;
-  vtkImageData* image = this->VelocityInput;
   const double* io = image->GetOrigin();
   const double* is = image->GetSpacing();
   const int* ext = image->GetExtent();
@@ -697,9 +742,113 @@ bool vtkPlumeSmokeSolver::SampleExternalVelocity(vtkDataArray* velocity)
   }
   for (int d = 0; d < 3; ++d)
   {
-    this->ExternalU[d] = this->U[d];
+    faces[d] = this->U[d];
   }
   std::fill(this->Q.begin(), this->Q.end(), 0.0);
+  return true;
+}
+
+const vtkPlumeSmokeSolver::VelocityFrame* vtkPlumeSmokeSolver::GetVelocityFrame(int index, int keep)
+{
+  for (const VelocityFrame& frame : this->Frames)
+  {
+    if (frame.Index == index)
+    {
+      return &frame;
+    }
+  }
+  VelocityFrame& slot = this->Frames[0].Index == keep ? this->Frames[1] : this->Frames[0];
+  vtkAlgorithmOutput* connection =
+    this->GetNumberOfInputConnections(1) > 0 ? this->GetInputConnection(1, 0) : nullptr;
+  if (!connection || !connection->GetProducer())
+  {
+    this->LastError = "smoke solver: the velocity time series has no input connection to read time " +
+      Text(this->VelocityTimes[size_t(index)]) + " from";
+    return nullptr;
+  }
+  // An update of the upstream algorithm at that time: the pipeline asks our
+  // input for one time per request, a step may need another one.
+  vtkAlgorithm* upstream = connection->GetProducer();
+  const int port = connection->GetIndex();
+  const double time = this->VelocityTimes[size_t(index)];
+  vtkNew<vtkInformationVector> requests;
+  requests->SetNumberOfInformationObjects(port + 1);
+  requests->GetInformationObject(port)->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), time);
+  vtkImageData* image = upstream->Update(port, requests) ? vtkImageData::SafeDownCast(upstream->GetOutputDataObject(port)) : nullptr;
+  vtkDataArray* velocity = !image ? nullptr
+    : this->VelocityArrayName.empty() ? image->GetPointData()->GetVectors()
+                                      : image->GetPointData()->GetArray(this->VelocityArrayName.c_str());
+  if (!velocity || velocity->GetNumberOfComponents() != 3)
+  {
+    this->LastError = "smoke solver: the velocity time series gave no image with a 3-component point array '" +
+      (this->VelocityArrayName.empty() ? std::string("(active vectors)") : this->VelocityArrayName) +
+      "' at time " + Text(time);
+    return nullptr;
+  }
+  this->HeldVelocityTime = time;
+  // sampling projects through U and Q: keep the state
+  std::vector<double> saved[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    saved[d] = this->U[d];
+  }
+  const std::vector<double> savedQ = this->Q;
+  const bool ok = this->SampleExternalVelocity(image, velocity, slot.U);
+  for (int d = 0; d < 3; ++d)
+  {
+    this->U[d].swap(saved[d]);
+  }
+  this->Q = savedQ;
+  if (!ok)
+  {
+    slot.Index = -1;
+    return nullptr;
+  }
+  slot.Index = index;
+  ++this->NumberOfVelocityFramesRead;
+  return &slot;
+}
+
+bool vtkPlumeSmokeSolver::SetVelocityAtTime(double t)
+{
+  const std::vector<double>& times = this->VelocityTimes;
+  const double flowTime = t + this->VelocityTimeOffset;
+  // the written times around flowTime (held before the first, after the last)
+  const auto upper = std::upper_bound(times.begin(), times.end(), flowTime);
+  int hi = int(upper - times.begin());
+  int lo = hi - 1;
+  double w = 0;
+  if (lo < 0)
+  {
+    lo = hi = 0;
+  }
+  else if (hi >= int(times.size()))
+  {
+    hi = lo = int(times.size()) - 1;
+  }
+  else
+  {
+    w = (flowTime - times[size_t(lo)]) / (times[size_t(hi)] - times[size_t(lo)]);
+  }
+  const VelocityFrame* a = this->GetVelocityFrame(lo, hi);
+  const VelocityFrame* b = a ? this->GetVelocityFrame(hi, lo) : nullptr;
+  if (!a || !b)
+  {
+    return false;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    std::vector<double>& u = this->U[d];
+    const std::vector<double>& ua = a->U[d];
+    const std::vector<double>& ub = b->U[d];
+    vtkSMPTools::For(0, vtkIdType(u.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        u[f] = (1 - w) * ua[f] + w * ub[f];
+      }
+    });
+    this->ExternalU[d] = u;
+  }
   return true;
 }
 
@@ -715,6 +864,10 @@ void vtkPlumeSmokeSolver::Reset()
     {
       std::fill(this->U[d].begin(), this->U[d].end(), 0.0);
     }
+  }
+  if (this->IsVelocityTimeSeries() && this->HasExternalVelocity())
+  {
+    this->SetVelocityAtTime(0.0); // a failure shows at the next step
   }
   std::fill(this->Density.begin(), this->Density.end(), 0.0);
   std::fill(this->Temperature.begin(), this->Temperature.end(), this->AmbientTemperature);
@@ -1292,6 +1445,11 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
     this->LastError = "smoke solver: a step must be positive and finite, got " + Text(dt);
     return false;
   }
+  const bool series = this->HasExternalVelocity() && this->IsVelocityTimeSeries();
+  if (series && !this->SetVelocityAtTime(this->SimulationTime + 0.5 * dt))
+  {
+    return false; // the flow of the step's middle
+  }
   // All advected quantities move with the velocity of the start of the step
   // (the scalars first: the velocity advection replaces it).
   std::vector<double> next;
@@ -1328,13 +1486,29 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
   ++this->CurrentStep;
   ++this->StepsTaken;
   this->Modified();
-  return true;
+  // the output shows the flow of the new time
+  return !series || this->SetVelocityAtTime(this->SimulationTime);
 }
 
 //------------------------------------------------------------------------------
 int vtkPlumeSmokeSolver::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  // a velocity input with written times is a time series
+  std::vector<double> times;
+  if (vtkInformation* inInfo = inputVector[1]->GetInformationObject(0))
+  {
+    if (inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+    {
+      const double* t = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+      times.assign(t, t + inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+    }
+  }
+  if (times != this->VelocityTimes)
+  {
+    this->VelocityTimes = times;
+    this->HeldVelocityTime = std::numeric_limits<double>::quiet_NaN();
+  }
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int extent[6] = { 0, std::max(this->Dimensions[0], 1) - 1, 0, std::max(this->Dimensions[1], 1) - 1, 0,
     std::max(this->Dimensions[2], 1) - 1 };
@@ -1362,7 +1536,9 @@ int vtkPlumeSmokeSolver::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // The obstacle and velocity images are read whole, whatever part of the
-  // output is asked for; a static field (no time request upstream).
+  // output is asked for; a static field (no time request upstream). A
+  // velocity time series is asked for the written time it holds already
+  // (the first at the start): the steps fetch the others they need.
   for (int port = 0; port < 2; ++port)
   {
     if (vtkInformation* inInfo = inputVector[port]->GetInformationObject(0))
@@ -1372,7 +1548,19 @@ int vtkPlumeSmokeSolver::RequestUpdateExtent(
         inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
           inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
       }
-      inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      if (port == 1 && this->IsVelocityTimeSeries())
+      {
+        if (std::find(this->VelocityTimes.begin(), this->VelocityTimes.end(), this->HeldVelocityTime) ==
+          this->VelocityTimes.end())
+        {
+          this->HeldVelocityTime = this->VelocityTimes.front();
+        }
+        inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), this->HeldVelocityTime);
+      }
+      else
+      {
+        inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      }
     }
   }
   return 1;
@@ -1389,6 +1577,11 @@ int vtkPlumeSmokeSolver::RequestData(
   this->VelocityInput = inputVector[1]->GetNumberOfInformationObjects() > 0
     ? vtkImageData::GetData(inputVector[1]->GetInformationObject(0))
     : nullptr;
+  if (this->VelocityInput && this->IsVelocityTimeSeries() &&
+    this->VelocityInput->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
+  {
+    this->HeldVelocityTime = this->VelocityInput->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
+  }
   if (!this->EnsureState())
   {
     vtkErrorMacro(<< this->LastError);

@@ -201,8 +201,19 @@ public:
    * true), and then never evolves: density and temperature are advected
    * passively and sources emit, but buoyancy, confinement and the pressure
    * solve are skipped. Points whose vtkValidPointMask is 0 (a CFD mesh
-   * resampled onto an image) are solid. The field is static: the input is
-   * asked for no time.
+   * resampled onto an image) are solid.
+   *
+   * A time series: if the input advertises TIME_STEPS (a reader of a .pvd
+   * or an OpenFOAM case, through a resampling to an image), the smoke moves
+   * with the flow of the matching time: each step of dt from t uses the
+   * field at t + dt/2 (exact for a field linear in time, like the midpoint
+   * rule in space), linear in time between the two written times around it;
+   * before the first and after the last written time the field is held.
+   * Simulation time t is the flow's time t + VelocityTimeOffset. Each
+   * written time is fetched from the input (an update of the upstream
+   * algorithm at that time), sampled and projected when a step first needs
+   * it; two are kept. Obstacles from vtkValidPointMask come from the first
+   * frame read. A static field (one time or none) is asked for no time.
    */
   void SetVelocityConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void SetVelocityData(vtkDataObject* image) { this->SetInputData(1, image); }
@@ -212,6 +223,15 @@ public:
   vtkGetMacro(ProjectExternalVelocity, bool);
   /** Whether the velocity comes from input port 1 (after Initialize() or an update). */
   bool HasExternalVelocity() const { return !this->ExternalU[0].empty(); }
+  /** Flow time at simulation time 0, for a time series on port 1 (default 0). */
+  vtkSetMacro(VelocityTimeOffset, double);
+  vtkGetMacro(VelocityTimeOffset, double);
+  /** Written times of the velocity input (after an update; empty for a static field). */
+  const std::vector<double>& GetVelocityTimes() const { return this->VelocityTimes; }
+  /** Whether the velocity input is a time series (more than one written time). */
+  bool IsVelocityTimeSeries() const { return this->VelocityTimes.size() > 1; }
+  /** How many written times of a velocity time series were fetched and sampled so far. */
+  vtkGetMacro(NumberOfVelocityFramesRead, int);
   ///@}
 
   ///@{
@@ -372,7 +392,24 @@ protected:
   std::string VelocityArrayName;
   bool ProjectExternalVelocity = true;
   std::vector<double> ExternalU[3];
-  bool SampleExternalVelocity(vtkDataArray* velocity);
+  /** Samples `velocity` of `image` onto the faces (projected if asked) into `faces`. */
+  bool SampleExternalVelocity(vtkImageData* image, vtkDataArray* velocity, std::vector<double> faces[3]);
+  // A time series on port 1: its written times, the two frames kept
+  // (sampled faces of written time Index), the time the input holds.
+  double VelocityTimeOffset = 0;
+  std::vector<double> VelocityTimes;
+  struct VelocityFrame
+  {
+    int Index = -1;
+    std::vector<double> U[3];
+  };
+  VelocityFrame Frames[2];
+  double HeldVelocityTime;
+  int NumberOfVelocityFramesRead = 0;
+  /** The frame of written time `index` (fetched from the input if not kept; the frame `keep` stays). */
+  const VelocityFrame* GetVelocityFrame(int index, int keep);
+  /** Sets the faces (U and ExternalU) to the time series' velocity at simulation time t. */
+  bool SetVelocityAtTime(double t);
 
   vtkSmartPointer<vtkPlumePressureSolver> Pressure;
 
