@@ -13,6 +13,9 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataToImageStencil.h"
+#include "vtkImageStencilData.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
@@ -242,6 +245,12 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
       .Panel("Dissipation")
       .Doc("Decay rate of the velocity.")
       .Bind(&T::SetVelocityDissipation, &T::GetVelocityDissipation);
+    t.Boolean("conserve_mass", "ConserveMass", false)
+      .Panel("Advection")
+      .Doc("Scale the density after advection so that the smoke's total stays what it was (times the "
+           "dissipation's decay): semi-Lagrangian and MacCormack advection are not conservative. Closed domains "
+           "only (no open sides).")
+      .Bind(&T::SetConserveMass, &T::GetConserveMass);
     t.Text("open_faces", "OpenFaces", "")
       .Panel("Boundaries")
       .Doc("Open domain sides (free outflow), e.g. \"zmax\" or \"xmin,xmax,zmax\" (names xmin xmax ymin ymax "
@@ -381,20 +390,54 @@ void vtkPlumeSmokeSolver::RemoveAllSources()
   }
 }
 
-void vtkPlumeSmokeSolver::AddObstacleSphere(const double center[3], double radius)
+void vtkPlumeSmokeSolver::AddObstacleSphere(const double center[3], double radius, const double velocity[3])
 {
-  Obstacle o{ true, { center[0], center[1], center[2], radius, 0, 0 } };
+  Obstacle o{ SPHERE, { center[0], center[1], center[2], radius, 0, 0 }, { 0, 0, 0 }, nullptr };
+  if (velocity)
+  {
+    std::copy(velocity, velocity + 3, o.Velocity);
+  }
   this->Obstacles.push_back(o);
   ++this->ObstacleVersion;
   this->Modified();
 }
 
-void vtkPlumeSmokeSolver::AddObstacleBox(const double bounds[6])
+void vtkPlumeSmokeSolver::AddObstacleBox(const double bounds[6], const double velocity[3])
 {
-  Obstacle o{ false, { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] } };
+  Obstacle o{ BOX, { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] }, { 0, 0, 0 }, nullptr };
+  if (velocity)
+  {
+    std::copy(velocity, velocity + 3, o.Velocity);
+  }
   this->Obstacles.push_back(o);
   ++this->ObstacleVersion;
   this->Modified();
+}
+
+void vtkPlumeSmokeSolver::AddObstacleSurface(vtkPolyData* surface, const double velocity[3])
+{
+  Obstacle o{ SURFACE, { 0, 0, 0, 0, 0, 0 }, { 0, 0, 0 }, vtkSmartPointer<vtkPolyData>::New() };
+  if (surface)
+  {
+    o.Surface->DeepCopy(surface); // later edits of the caller's surface do not move it
+  }
+  else
+  {
+    o.Surface = nullptr; // refused by Validate()
+  }
+  if (velocity)
+  {
+    std::copy(velocity, velocity + 3, o.Velocity);
+  }
+  this->Obstacles.push_back(o);
+  ++this->ObstacleVersion;
+  this->Modified();
+}
+
+bool vtkPlumeSmokeSolver::HasMovingObstacles() const
+{
+  return std::any_of(this->Obstacles.begin(), this->Obstacles.end(),
+    [](const Obstacle& o) { return o.Velocity[0] != 0 || o.Velocity[1] != 0 || o.Velocity[2] != 0; });
 }
 
 void vtkPlumeSmokeSolver::RemoveAllObstacles()
@@ -482,12 +525,31 @@ std::string vtkPlumeSmokeSolver::Validate() const
   }
   for (size_t o = 0; o < this->Obstacles.size(); ++o)
   {
-    for (int v = 0; v < 6; ++v)
+    const Obstacle& ob = this->Obstacles[o];
+    for (double v : { ob.Values[0], ob.Values[1], ob.Values[2], ob.Values[3], ob.Values[4], ob.Values[5],
+           ob.Velocity[0], ob.Velocity[1], ob.Velocity[2] })
     {
-      if (!std::isfinite(this->Obstacles[o].Values[v]))
+      if (!std::isfinite(v))
       {
-        return "smoke solver: obstacle " + std::to_string(o) + " has a non-finite value (" +
-          Text(this->Obstacles[o].Values[v]) + ")";
+        return "smoke solver: obstacle " + std::to_string(o) + " has a non-finite value (" + Text(v) + ")";
+      }
+    }
+    if (ob.Kind == SURFACE && (!ob.Surface || ob.Surface->GetNumberOfPolys() + ob.Surface->GetNumberOfStrips() == 0))
+    {
+      return "smoke solver: obstacle " + std::to_string(o) + " is a surface without polygons (" +
+        std::to_string(ob.Surface ? ob.Surface->GetNumberOfPolys() : 0) + ")";
+    }
+    if (ob.Kind == SURFACE)
+    {
+      double bounds[6];
+      ob.Surface->GetBounds(bounds);
+      for (double b : bounds)
+      {
+        if (!std::isfinite(b))
+        {
+          return "smoke solver: obstacle " + std::to_string(o) + " is a surface with a non-finite point (" +
+            Text(b) + ")";
+        }
       }
     }
   }
@@ -572,25 +634,13 @@ bool vtkPlumeSmokeSolver::EnsureState()
   std::copy(open, open + 6, this->Open);
   const int* n = this->Cells;
   const size_t count = size_t(n[0]) * n[1] * n[2];
-  this->Solid.assign(count, 0);
+  // the input images' solid cells (static); the obstacles are added by VoxeliseObstacles
+  this->StaticSolid.assign(count, 0);
   ForRows(n, [&](int j, int k) {
     for (int i = 0; i < n[0]; ++i)
     {
       const glm::dvec3 p(this->O[0] + i * this->H[0], this->O[1] + j * this->H[1], this->O[2] + k * this->H[2]);
       bool solid = false;
-      for (const Obstacle& o : this->Obstacles)
-      {
-        if (o.IsSphere)
-        {
-          const glm::dvec3 c(o.Values[0], o.Values[1], o.Values[2]);
-          solid = solid || glm::length(p - c) <= o.Values[3];
-        }
-        else
-        {
-          solid = solid || (p.x >= o.Values[0] && p.x <= o.Values[1] && p.y >= o.Values[2] && p.y <= o.Values[3] &&
-                             p.z >= o.Values[4] && p.z <= o.Values[5]);
-        }
-      }
       if (!solid && valid)
       {
         // points a resampled CFD field marks as outside its mesh are solid
@@ -617,9 +667,14 @@ bool vtkPlumeSmokeSolver::EnsureState()
           solid = mask->GetComponent(id, 0) > 0.5;
         }
       }
-      this->Solid[i + size_t(n[0]) * (j + size_t(n[1]) * k)] = solid ? 1 : 0;
+      this->StaticSolid[i + size_t(n[0]) * (j + size_t(n[1]) * k)] = solid ? 1 : 0;
     }
   });
+  if (!this->VoxeliseObstacles(0.0))
+  {
+    this->Signature.clear();
+    return false;
+  }
   if (std::all_of(this->Solid.begin(), this->Solid.end(), [](unsigned char s) { return s != 0; }))
   {
     this->LastError = "smoke solver: the obstacles cover every one of the " + std::to_string(count) +
@@ -671,6 +726,105 @@ bool vtkPlumeSmokeSolver::EnsureState()
   this->Signature = signature;
   this->Reset();
   return true;
+}
+
+bool vtkPlumeSmokeSolver::VoxeliseObstacles(double t)
+{
+  const int* n = this->Cells;
+  this->Solid = this->StaticSolid;
+  this->SolidOwner.assign(this->Solid.size(), 0);
+  for (size_t o = 0; o < this->Obstacles.size(); ++o)
+  {
+    const Obstacle& ob = this->Obstacles[o];
+    const glm::dvec3 shift = t * glm::dvec3(ob.Velocity[0], ob.Velocity[1], ob.Velocity[2]);
+    const int owner = int(o) + 1;
+    auto mark = [&](size_t c) {
+      this->Solid[c] = 1;
+      this->SolidOwner[c] = owner; // the last obstacle listed wins where they overlap
+    };
+    if (ob.Kind == SURFACE)
+    {
+      // the surface at rest, sampled at the cell centres moved back by the shift
+      vtkNew<vtkPolyDataToImageStencil> stencil;
+      stencil->SetInputData(ob.Surface);
+      stencil->SetOutputOrigin(this->O[0] - shift.x, this->O[1] - shift.y, this->O[2] - shift.z);
+      stencil->SetOutputSpacing(this->H);
+      stencil->SetOutputWholeExtent(0, n[0] - 1, 0, n[1] - 1, 0, n[2] - 1);
+      stencil->SetTolerance(0); // a cell centre on the surface is not solid
+      stencil->Update();
+      vtkImageStencilData* data = stencil->GetOutput();
+      for (int k = 0; k < n[2]; ++k)
+        for (int j = 0; j < n[1]; ++j)
+        {
+          int iter = 0, r1 = 0, r2 = 0;
+          while (data->GetNextExtent(r1, r2, 0, n[0] - 1, j, k, iter))
+          {
+            for (int i = r1; i <= r2; ++i)
+            {
+              mark(i + size_t(n[0]) * (j + size_t(n[1]) * k));
+            }
+          }
+        }
+      continue;
+    }
+    ForRows(n, [&](int j, int k) {
+      for (int i = 0; i < n[0]; ++i)
+      {
+        const glm::dvec3 p =
+          glm::dvec3(this->O[0] + i * this->H[0], this->O[1] + j * this->H[1], this->O[2] + k * this->H[2]) - shift;
+        const bool inside = ob.Kind == SPHERE
+          ? glm::length(p - glm::dvec3(ob.Values[0], ob.Values[1], ob.Values[2])) <= ob.Values[3]
+          : (p.x >= ob.Values[0] && p.x <= ob.Values[1] && p.y >= ob.Values[2] && p.y <= ob.Values[3] &&
+              p.z >= ob.Values[4] && p.z <= ob.Values[5]);
+        if (inside)
+        {
+          mark(i + size_t(n[0]) * (j + size_t(n[1]) * k));
+        }
+      }
+    });
+  }
+  return true;
+}
+
+void vtkPlumeSmokeSolver::ApplyObstacleVelocity()
+{
+  const int* n = this->Cells;
+  for (int d = 0; d < 3; ++d)
+  {
+    int m[3] = { n[0], n[1], n[2] };
+    ++m[d];
+    ForRows(m, [&](int j, int k) {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (!this->IsWallFace(d, i, j, k))
+        {
+          continue;
+        }
+        int idx[3] = { i, j, k };
+        double value = 0;
+        // a closed domain side stays 0; else the velocity of a moving neighbour's obstacle
+        const bool side = (idx[d] == 0 && !this->Open[2 * d]) || (idx[d] == n[d] && !this->Open[2 * d + 1]);
+        if (!side)
+        {
+          for (int s = 0; s < 2; ++s)
+          {
+            int c[3] = { idx[0], idx[1], idx[2] };
+            c[d] -= s;
+            if (c[d] < 0 || c[d] >= n[d])
+            {
+              continue;
+            }
+            const size_t cell = c[0] + size_t(n[0]) * (c[1] + size_t(n[1]) * c[2]);
+            if (this->Solid[cell] && this->SolidOwner[cell] > 0)
+            {
+              value = this->Obstacles[size_t(this->SolidOwner[cell] - 1)].Velocity[d];
+            }
+          }
+        }
+        this->U[d][i + size_t(m[0]) * (j + size_t(m[1]) * k)] = value;
+      }
+    });
+  }
 }
 
 bool vtkPlumeSmokeSolver::SampleExternalVelocity(
@@ -868,6 +1022,12 @@ void vtkPlumeSmokeSolver::Reset()
   if (this->IsVelocityTimeSeries() && this->HasExternalVelocity())
   {
     this->SetVelocityAtTime(0.0); // a failure shows at the next step
+  }
+  if (this->HasMovingObstacles() && !this->HasExternalVelocity() && !this->StaticSolid.empty())
+  {
+    this->VoxeliseObstacles(0.0);
+    this->Pressure->SetProblem(this->Cells, this->H, this->Solid.data(), this->Open);
+    this->ApplyObstacleVelocity();
   }
   std::fill(this->Density.begin(), this->Density.end(), 0.0);
   std::fill(this->Temperature.begin(), this->Temperature.end(), this->AmbientTemperature);
@@ -1408,10 +1568,22 @@ bool vtkPlumeSmokeSolver::ReadCheckpoint(const char* path)
     this->LastError = "smoke solver: the checkpoint '" + name + "' is truncated";
     return false;
   }
+  if (this->HasMovingObstacles() && !this->HasExternalVelocity())
+  {
+    this->VoxeliseObstacles(time); // where they were at the checkpoint
+  }
   if (solid != this->Solid)
   {
+    if (this->HasMovingObstacles() && !this->HasExternalVelocity())
+    {
+      this->VoxeliseObstacles(this->SimulationTime);
+    }
     this->LastError = "smoke solver: the checkpoint '" + name + "' has other obstacles than this solver";
     return false;
+  }
+  if (this->HasMovingObstacles() && !this->HasExternalVelocity())
+  {
+    this->Pressure->SetProblem(this->Cells, this->H, this->Solid.data(), this->Open);
   }
   for (int d = 0; d < 3; ++d)
   {
@@ -1453,7 +1625,31 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
   // All advected quantities move with the velocity of the start of the step
   // (the scalars first: the velocity advection replaces it).
   std::vector<double> next;
+  const bool closed = std::none_of(this->Open, this->Open + 6, [](bool o) { return o; });
+  const bool conserve = this->ConserveMass && closed;
+  // sums in a fixed order: the same bits whatever the number of threads
+  auto total = [](const std::vector<double>& v) {
+    double sum = 0;
+    for (double x : v)
+    {
+      sum += x;
+    }
+    return sum;
+  };
+  const double massBefore = conserve ? total(this->Density) * std::exp(-this->DensityDissipation * dt) : 0.0;
   this->Advect(this->Density, -1, dt, this->DensityDissipation, 0.0, next);
+  if (conserve)
+  {
+    const double massAfter = total(next);
+    if (massAfter > 0 && massBefore > 0)
+    {
+      const double scale = massBefore / massAfter;
+      for (double& v : next)
+      {
+        v *= scale;
+      }
+    }
+  }
   this->Density.swap(next);
   this->Advect(this->Temperature, -1, dt, this->TemperatureDissipation, this->AmbientTemperature, next);
   this->Temperature.swap(next);
@@ -1472,6 +1668,28 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
     for (int d = 0; d < 3; ++d)
     {
       this->U[d].swap(velocity[d]);
+    }
+    if (this->HasMovingObstacles())
+    {
+      // the obstacles at the end of the step: the cells they cover hold no
+      // smoke, their faces move with them, the pressure sees the new walls
+      this->VoxeliseObstacles(this->SimulationTime + dt);
+      if (std::all_of(this->Solid.begin(), this->Solid.end(), [](unsigned char s) { return s != 0; }))
+      {
+        this->LastError = "smoke solver: at t = " + Text(this->SimulationTime + dt) +
+          " the moving obstacles cover every cell: there is no fluid to simulate";
+        return false;
+      }
+      for (size_t c = 0; c < this->Solid.size(); ++c)
+      {
+        if (this->Solid[c])
+        {
+          this->Density[c] = 0;
+          this->Temperature[c] = this->AmbientTemperature;
+        }
+      }
+      this->ApplyObstacleVelocity();
+      this->Pressure->SetProblem(this->Cells, this->H, this->Solid.data(), this->Open);
     }
     this->ApplyBuoyancy(dt);
     this->ApplyVorticityConfinement(dt);

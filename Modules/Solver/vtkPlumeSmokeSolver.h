@@ -75,6 +75,7 @@ class vtkDataObject;
 class vtkImageData;
 class vtkPlumeParameterTable;
 class vtkPlumePressureSolver;
+class vtkPolyData;
 
 class PLUMESOLVER_EXPORT vtkPlumeSmokeSolver : public vtkImageAlgorithm
 {
@@ -178,6 +179,21 @@ public:
 
   ///@{
   /**
+   * Keep the smoke's total mass through advection (default false, as the
+   * seed): semi-Lagrangian and MacCormack advection are not conservative
+   * (measured over 1000 steps of a hot blob mixing in a closed 16x16x20 box:
+   * −18 % and +99 %); with this on, density after advection is scaled so
+   * that its sum is the sum before it (times the dissipation's decay). Only
+   * in a closed domain (no open sides), where advection can neither bring
+   * smoke in nor carry it out.
+   */
+  vtkSetMacro(ConserveMass, bool);
+  vtkGetMacro(ConserveMass, bool);
+  vtkBooleanMacro(ConserveMass, bool);
+  ///@}
+
+  ///@{
+  /**
    * Domain sides that are open (free outflow), e.g. "zmax" or "xmin,xmax,zmax";
    * names: xmin xmax ymin ymax zmin zmax, or "all" (default "": a closed box).
    */
@@ -264,10 +280,25 @@ public:
   ///@}
 
   ///@{
-  /** Solid obstacles (restart the simulation). A box is [xmin, xmax, ymin, ymax, zmin, zmax]. */
-  void AddObstacleSphere(const double center[3], double radius);
-  void AddObstacleBox(const double bounds[6]);
+  /**
+   * Solid obstacles (restart the simulation): a cell whose centre is inside
+   * is solid. A box is [xmin, xmax, ymin, ymax, zmin, zmax]. A surface is a
+   * closed polygonal surface (a vtkPolyData, copied), voxelised with
+   * vtkPolyDataToImageStencil. With a velocity (default none = at rest) the
+   * obstacle translates: at time t it lies at its given place + velocity·t,
+   * the solid cells are voxelised again every step (and the pressure solve
+   * set up again), and the faces between its solid cells and the fluid take
+   * its velocity (the boundary condition that drags the fluid; the
+   * projection then makes the flow go around it). Cells it leaves are
+   * fluid with no smoke, ambient temperature and the velocity the advection
+   * brings. Obstacles only move in the solver's own flow; in a given flow
+   * (port 1) they stay at their place.
+   */
+  void AddObstacleSphere(const double center[3], double radius, const double velocity[3] = nullptr);
+  void AddObstacleBox(const double bounds[6], const double velocity[3] = nullptr);
+  void AddObstacleSurface(vtkPolyData* surface, const double velocity[3] = nullptr);
   void RemoveAllObstacles();
+  int GetNumberOfObstacles() const { return static_cast<int>(this->Obstacles.size()); }
   ///@}
 
   ///@{
@@ -368,6 +399,7 @@ protected:
   double DensityDissipation = 0;
   double TemperatureDissipation = 0;
   double VelocityDissipation = 0;
+  bool ConserveMass = false;
   std::string OpenFaces;
   std::string ObstacleArrayName = "obstacle";
 
@@ -380,12 +412,27 @@ protected:
     double Velocity[3];
   };
   std::vector<Source> Sources;
+  enum ObstacleKind
+  {
+    SPHERE,
+    BOX,
+    SURFACE
+  };
   struct Obstacle
   {
-    bool IsSphere;
+    ObstacleKind Kind;
     double Values[6]; // sphere: centre, radius; box: bounds
+    double Velocity[3];
+    vtkSmartPointer<vtkPolyData> Surface;
   };
   std::vector<Obstacle> Obstacles;
+  bool HasMovingObstacles() const;
+  /** Solid = StaticSolid (the input images' cells) + the obstacles at time t; SolidOwner = obstacle + 1. */
+  bool VoxeliseObstacles(double t);
+  /** Faces between a moving obstacle's cells and the fluid take its velocity; other walls 0. */
+  void ApplyObstacleVelocity();
+  std::vector<unsigned char> StaticSolid;
+  std::vector<int> SolidOwner;
   unsigned long ObstacleVersion = 0;
   vtkSmartPointer<vtkImageData> ObstacleInput;
   vtkSmartPointer<vtkImageData> VelocityInput;
