@@ -14,8 +14,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataToImageStencil.h"
-#include "vtkImageStencilData.h"
+#include "vtkSelectEnclosedPoints.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
@@ -744,27 +743,32 @@ bool vtkPlumeSmokeSolver::VoxeliseObstacles(double t)
     };
     if (ob.Kind == SURFACE)
     {
-      // the surface at rest, sampled at the cell centres moved back by the shift
-      vtkNew<vtkPolyDataToImageStencil> stencil;
-      stencil->SetInputData(ob.Surface);
-      stencil->SetOutputOrigin(this->O[0] - shift.x, this->O[1] - shift.y, this->O[2] - shift.z);
-      stencil->SetOutputSpacing(this->H);
-      stencil->SetOutputWholeExtent(0, n[0] - 1, 0, n[1] - 1, 0, n[2] - 1);
-      stencil->SetTolerance(0); // a cell centre on the surface is not solid
-      stencil->Update();
-      vtkImageStencilData* data = stencil->GetOutput();
-      for (int k = 0; k < n[2]; ++k)
-        for (int j = 0; j < n[1]; ++j)
-        {
-          int iter = 0, r1 = 0, r2 = 0;
-          while (data->GetNextExtent(r1, r2, 0, n[0] - 1, j, k, iter))
+      // the surface at rest, tested at the cell centres moved back by the
+      // shift (vtkSelectEnclosedPoints' ray casting; only the cells within
+      // its bounds, serially: the test is not thread-safe)
+      double bounds[6];
+      ob.Surface->GetBounds(bounds);
+      int lo[3], hi[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::max(0, int(std::floor((bounds[2 * a] + shift[a] - this->O[a]) / this->H[a])));
+        hi[a] = std::min(n[a] - 1, int(std::ceil((bounds[2 * a + 1] + shift[a] - this->O[a]) / this->H[a])));
+      }
+      vtkNew<vtkSelectEnclosedPoints> enclosed;
+      enclosed->SetTolerance(1e-6);
+      enclosed->Initialize(ob.Surface);
+      for (int k = lo[2]; k <= hi[2]; ++k)
+        for (int j = lo[1]; j <= hi[1]; ++j)
+          for (int i = lo[0]; i <= hi[0]; ++i)
           {
-            for (int i = r1; i <= r2; ++i)
+            double p[3] = { this->O[0] + i * this->H[0] - shift.x, this->O[1] + j * this->H[1] - shift.y,
+              this->O[2] + k * this->H[2] - shift.z };
+            if (enclosed->IsInsideSurface(p))
             {
               mark(i + size_t(n[0]) * (j + size_t(n[1]) * k));
             }
           }
-        }
+      enclosed->Complete();
       continue;
     }
     ForRows(n, [&](int j, int k) {

@@ -284,7 +284,7 @@ public:
    * Solid obstacles (restart the simulation): a cell whose centre is inside
    * is solid. A box is [xmin, xmax, ymin, ymax, zmin, zmax]. A surface is a
    * closed polygonal surface (a vtkPolyData, copied), voxelised with
-   * vtkPolyDataToImageStencil. With a velocity (default none = at rest) the
+   * vtkSelectEnclosedPoints (in VTK 9.1 and ParaView 5.11's VTK alike). With a velocity (default none = at rest) the
    * obstacle translates: at time t it lies at its given place + velocity·t,
    * the solid cells are voxelised again every step (and the pressure solve
    * set up again), and the faces between its solid cells and the fluid take
