@@ -206,6 +206,13 @@ int Simulate(const SimulateOptions& options, std::ostream& out)
     out << " and checkpoint " << options.Checkpoint;
   }
   out << "\n";
+  if (solver->IsVelocityTimeSeries())
+  {
+    const std::vector<double>& times = solver->GetVelocityTimes();
+    out << "plume: the flow is a time series of " << times.size() << " written times (t = " << times.front()
+        << " to " << times.back() << ", offset " << solver->GetVelocityTimeOffset() << "); "
+        << solver->GetNumberOfVelocityFramesRead() << " read\n";
+  }
   return 0;
 }
 }

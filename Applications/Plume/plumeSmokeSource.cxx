@@ -10,10 +10,17 @@
 #include "plumeScene.h"
 #include "plumeSceneError.h"
 
+#include "vtkPlumeDatasetReader.h"
 #include "vtkPlumeParameterTable.h"
+#include "vtkPlumeResampleToImage.h"
 #include "vtkPlumeSmokeSolver.h"
 
 #include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkInformation.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtksys/SystemTools.hxx"
 
 #include <cmath>
 
@@ -52,6 +59,49 @@ vtkSmartPointer<vtkPlumeSmokeSolver> ConfigureSmokeSolver(
       solver->SetSpacing(image->GetSpacing());
     }
     solver->SetVelocityData(image);
+  }
+
+  // Virtual smoke in a time-varying flow: a series file read at the times
+  // the steps need (its image grid by default), linear between written times.
+  if (p.Has("velocity_series"))
+  {
+    if (p.Has("velocity_dataset"))
+    {
+      throw SceneError(where + ": give 'velocity_dataset' (a static flow) or 'velocity_series' (a time series), not both");
+    }
+    const std::string path = p.String("velocity_series", "");
+    const std::string resolved = datasets.Resolve(path);
+    if (!vtksys::SystemTools::FileExists(resolved))
+    {
+      throw SceneError(where + ": velocity_series: file not found: '" + path + "'");
+    }
+    auto reader = vtkSmartPointer<vtkPlumeDatasetReader>::New();
+    reader->SetFileName(resolved.c_str());
+    auto resample = vtkSmartPointer<vtkPlumeResampleToImage>::New();
+    resample->SetInputConnection(reader->GetOutputPort());
+    resample->SetMaximumDimension(p.Integer("velocity_series_dimension", 64, 2, 1024));
+    resample->UpdateInformation();
+    if (!reader->GetLastError().empty() || !resample->GetLastError().empty())
+    {
+      throw SceneError(where + ": velocity_series '" + path + "': " +
+        (!reader->GetLastError().empty() ? reader->GetLastError() : resample->GetLastError()));
+    }
+    vtkInformation* info = resample->GetOutputInformation(0);
+    if (!info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) ||
+      info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) < 2)
+    {
+      throw SceneError(where + ": velocity_series '" + path +
+        "' has fewer than 2 written times; give a static flow with 'velocity_dataset'");
+    }
+    if (!p.Has("dimensions") && !p.Has("origin") && !p.Has("spacing"))
+    {
+      int extent[6];
+      info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+      solver->SetDimensions(extent[1] - extent[0] + 1, extent[3] - extent[2] + 1, extent[5] - extent[4] + 1);
+      solver->SetOrigin(info->Get(vtkDataObject::ORIGIN()));
+      solver->SetSpacing(info->Get(vtkDataObject::SPACING()));
+    }
+    solver->SetVelocityConnection(resample->GetOutputPort());
   }
 
   // Sources: default one at the bottom centre of the grid.
@@ -106,7 +156,9 @@ vtkSmartPointer<vtkPlumeSmokeSolver> ConfigureSmokeSolver(
         throw SceneError(at + ": an obstacle must be an object, got " + (*obstacles)[o].dump());
       }
       Parameters op((*obstacles)[o], at);
-      const std::string type = op.Choice("type", "sphere", { "sphere", "box" });
+      const std::string type = op.Choice("type", "sphere", { "sphere", "box", "surface" });
+      // a moving obstacle: its velocity (model units / s), imposed on the fluid at its faces
+      const auto velocity = op.Vector<3>("velocity", { 0, 0, 0 });
       if (type == "sphere")
       {
         if (!op.Has("center"))
@@ -116,9 +168,9 @@ vtkSmartPointer<vtkPlumeSmokeSolver> ConfigureSmokeSolver(
         const auto center = op.Vector<3>("center", { 0, 0, 0 });
         const double radius = op.Number("radius", 0.1, 0.0, 1e30);
         op.RejectUnknown();
-        solver->AddObstacleSphere(center.data(), radius);
+        solver->AddObstacleSphere(center.data(), radius, velocity.data());
       }
-      else
+      else if (type == "box")
       {
         if (!op.Has("bounds"))
         {
@@ -126,7 +178,32 @@ vtkSmartPointer<vtkPlumeSmokeSolver> ConfigureSmokeSolver(
         }
         const auto bounds = op.Vector<6>("bounds", { 0, 0, 0, 0, 0, 0 });
         op.RejectUnknown();
-        solver->AddObstacleBox(bounds.data());
+        solver->AddObstacleBox(bounds.data(), velocity.data());
+      }
+      else
+      {
+        // a closed surface read from a file (.vtp, .stl, .obj, .ply, legacy .vtk ...), voxelised
+        const std::string path = op.String("path", "");
+        if (path.empty())
+        {
+          throw SceneError(op.Where() + ": 'path' is required (a closed polygonal surface)");
+        }
+        op.RejectUnknown();
+        const std::string resolved = datasets.Resolve(path);
+        if (!vtksys::SystemTools::FileExists(resolved))
+        {
+          throw SceneError(op.Where() + ": file not found: '" + path + "'");
+        }
+        vtkNew<vtkPlumeDatasetReader> reader;
+        reader->SetFileName(resolved.c_str());
+        reader->Update();
+        auto* surface = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+        if (!reader->GetLastError().empty() || !surface)
+        {
+          throw SceneError(op.Where() + ": '" + path + "' is not a polygonal surface" +
+            (reader->GetLastError().empty() ? std::string() : ": " + reader->GetLastError()));
+        }
+        solver->AddObstacleSurface(surface, velocity.data());
       }
     }
   }

@@ -4,13 +4,17 @@
 #include "vtkPlumePressureSolver.h"
 
 #include "vtkPlumeQuietExecutive.h"
+#include "vtkAlgorithmOutput.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSelectEnclosedPoints.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
@@ -240,6 +244,12 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
       .Panel("Dissipation")
       .Doc("Decay rate of the velocity.")
       .Bind(&T::SetVelocityDissipation, &T::GetVelocityDissipation);
+    t.Boolean("conserve_mass", "ConserveMass", false)
+      .Panel("Advection")
+      .Doc("Scale the density after advection so that the smoke's total stays what it was (times the "
+           "dissipation's decay): semi-Lagrangian and MacCormack advection are not conservative. Closed domains "
+           "only (no open sides).")
+      .Bind(&T::SetConserveMass, &T::GetConserveMass);
     t.Text("open_faces", "OpenFaces", "")
       .Panel("Boundaries")
       .Doc("Open domain sides (free outflow), e.g. \"zmax\" or \"xmin,xmax,zmax\" (names xmin xmax ymin ymax "
@@ -255,6 +265,13 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
       .Doc("Point array (3 components) of the optional velocity image on input port 1, in which smoke is "
            "released passively (the velocity does not evolve); \"\" = its active vectors.")
       .Bind(&T::SetVelocityArrayName, &T::GetVelocityArrayName);
+    t.Real("velocity_time_offset", "VelocityTimeOffset", 0.0)
+      .Between(-1e30, 1e30)
+      .Units("s")
+      .Panel("Boundaries")
+      .Doc("For a velocity time series: the flow's time at simulation time 0 (the smoke at time t moves with "
+           "the flow of time t + offset, linear between written times).")
+      .Bind(&T::SetVelocityTimeOffset, &T::GetVelocityTimeOffset);
     t.Boolean("project_velocity", "ProjectExternalVelocity", true)
       .Panel("Boundaries")
       .Advanced()
@@ -274,6 +291,7 @@ vtkPlumeSmokeSolver::vtkPlumeSmokeSolver()
   : Pressure(vtkSmartPointer<vtkPlumePressureSolver>::New())
   , LastRequestedTime(std::numeric_limits<double>::quiet_NaN())
 {
+  this->HeldVelocityTime = std::numeric_limits<double>::quiet_NaN();
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
   GetParameterTable().ApplyDefaults(this);
@@ -371,20 +389,54 @@ void vtkPlumeSmokeSolver::RemoveAllSources()
   }
 }
 
-void vtkPlumeSmokeSolver::AddObstacleSphere(const double center[3], double radius)
+void vtkPlumeSmokeSolver::AddObstacleSphere(const double center[3], double radius, const double velocity[3])
 {
-  Obstacle o{ true, { center[0], center[1], center[2], radius, 0, 0 } };
+  Obstacle o{ SPHERE, { center[0], center[1], center[2], radius, 0, 0 }, { 0, 0, 0 }, nullptr };
+  if (velocity)
+  {
+    std::copy(velocity, velocity + 3, o.Velocity);
+  }
   this->Obstacles.push_back(o);
   ++this->ObstacleVersion;
   this->Modified();
 }
 
-void vtkPlumeSmokeSolver::AddObstacleBox(const double bounds[6])
+void vtkPlumeSmokeSolver::AddObstacleBox(const double bounds[6], const double velocity[3])
 {
-  Obstacle o{ false, { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] } };
+  Obstacle o{ BOX, { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] }, { 0, 0, 0 }, nullptr };
+  if (velocity)
+  {
+    std::copy(velocity, velocity + 3, o.Velocity);
+  }
   this->Obstacles.push_back(o);
   ++this->ObstacleVersion;
   this->Modified();
+}
+
+void vtkPlumeSmokeSolver::AddObstacleSurface(vtkPolyData* surface, const double velocity[3])
+{
+  Obstacle o{ SURFACE, { 0, 0, 0, 0, 0, 0 }, { 0, 0, 0 }, vtkSmartPointer<vtkPolyData>::New() };
+  if (surface)
+  {
+    o.Surface->DeepCopy(surface); // later edits of the caller's surface do not move it
+  }
+  else
+  {
+    o.Surface = nullptr; // refused by Validate()
+  }
+  if (velocity)
+  {
+    std::copy(velocity, velocity + 3, o.Velocity);
+  }
+  this->Obstacles.push_back(o);
+  ++this->ObstacleVersion;
+  this->Modified();
+}
+
+bool vtkPlumeSmokeSolver::HasMovingObstacles() const
+{
+  return std::any_of(this->Obstacles.begin(), this->Obstacles.end(),
+    [](const Obstacle& o) { return o.Velocity[0] != 0 || o.Velocity[1] != 0 || o.Velocity[2] != 0; });
 }
 
 void vtkPlumeSmokeSolver::RemoveAllObstacles()
@@ -472,12 +524,31 @@ std::string vtkPlumeSmokeSolver::Validate() const
   }
   for (size_t o = 0; o < this->Obstacles.size(); ++o)
   {
-    for (int v = 0; v < 6; ++v)
+    const Obstacle& ob = this->Obstacles[o];
+    for (double v : { ob.Values[0], ob.Values[1], ob.Values[2], ob.Values[3], ob.Values[4], ob.Values[5],
+           ob.Velocity[0], ob.Velocity[1], ob.Velocity[2] })
     {
-      if (!std::isfinite(this->Obstacles[o].Values[v]))
+      if (!std::isfinite(v))
       {
-        return "smoke solver: obstacle " + std::to_string(o) + " has a non-finite value (" +
-          Text(this->Obstacles[o].Values[v]) + ")";
+        return "smoke solver: obstacle " + std::to_string(o) + " has a non-finite value (" + Text(v) + ")";
+      }
+    }
+    if (ob.Kind == SURFACE && (!ob.Surface || ob.Surface->GetNumberOfPolys() + ob.Surface->GetNumberOfStrips() == 0))
+    {
+      return "smoke solver: obstacle " + std::to_string(o) + " is a surface without polygons (" +
+        std::to_string(ob.Surface ? ob.Surface->GetNumberOfPolys() : 0) + ")";
+    }
+    if (ob.Kind == SURFACE)
+    {
+      double bounds[6];
+      ob.Surface->GetBounds(bounds);
+      for (double b : bounds)
+      {
+        if (!std::isfinite(b))
+        {
+          return "smoke solver: obstacle " + std::to_string(o) + " is a surface with a non-finite point (" +
+            Text(b) + ")";
+        }
       }
     }
   }
@@ -533,9 +604,22 @@ bool vtkPlumeSmokeSolver::EnsureState()
       return false;
     }
     valid = this->VelocityInput->GetPointData()->GetArray("vtkValidPointMask");
-    signature.push_back(double(this->VelocityInput->GetMTime()));
-    signature.push_back(double(external->GetMTime()));
-    signature.push_back(double(reinterpret_cast<uintptr_t>(external)));
+    if (this->IsVelocityTimeSeries())
+    {
+      // the input's data changes with every written time fetched: a new
+      // simulation only when the series (its algorithm or its times) does
+      vtkAlgorithm* upstream = this->GetNumberOfInputConnections(1) > 0 ? this->GetInputAlgorithm(1, 0) : nullptr;
+      signature.push_back(double(reinterpret_cast<uintptr_t>(upstream)));
+      signature.push_back(upstream ? double(upstream->GetMTime()) : 0.0);
+      signature.insert(signature.end(), this->VelocityTimes.begin(), this->VelocityTimes.end());
+      signature.push_back(this->VelocityTimeOffset);
+    }
+    else
+    {
+      signature.push_back(double(this->VelocityInput->GetMTime()));
+      signature.push_back(double(external->GetMTime()));
+      signature.push_back(double(reinterpret_cast<uintptr_t>(external)));
+    }
   }
   if (signature == this->Signature)
   {
@@ -549,25 +633,13 @@ bool vtkPlumeSmokeSolver::EnsureState()
   std::copy(open, open + 6, this->Open);
   const int* n = this->Cells;
   const size_t count = size_t(n[0]) * n[1] * n[2];
-  this->Solid.assign(count, 0);
+  // the input images' solid cells (static); the obstacles are added by VoxeliseObstacles
+  this->StaticSolid.assign(count, 0);
   ForRows(n, [&](int j, int k) {
     for (int i = 0; i < n[0]; ++i)
     {
       const glm::dvec3 p(this->O[0] + i * this->H[0], this->O[1] + j * this->H[1], this->O[2] + k * this->H[2]);
       bool solid = false;
-      for (const Obstacle& o : this->Obstacles)
-      {
-        if (o.IsSphere)
-        {
-          const glm::dvec3 c(o.Values[0], o.Values[1], o.Values[2]);
-          solid = solid || glm::length(p - c) <= o.Values[3];
-        }
-        else
-        {
-          solid = solid || (p.x >= o.Values[0] && p.x <= o.Values[1] && p.y >= o.Values[2] && p.y <= o.Values[3] &&
-                             p.z >= o.Values[4] && p.z <= o.Values[5]);
-        }
-      }
       if (!solid && valid)
       {
         // points a resampled CFD field marks as outside its mesh are solid
@@ -594,9 +666,14 @@ bool vtkPlumeSmokeSolver::EnsureState()
           solid = mask->GetComponent(id, 0) > 0.5;
         }
       }
-      this->Solid[i + size_t(n[0]) * (j + size_t(n[1]) * k)] = solid ? 1 : 0;
+      this->StaticSolid[i + size_t(n[0]) * (j + size_t(n[1]) * k)] = solid ? 1 : 0;
     }
   });
+  if (!this->VoxeliseObstacles(0.0))
+  {
+    this->Signature.clear();
+    return false;
+  }
   if (std::all_of(this->Solid.begin(), this->Solid.end(), [](unsigned char s) { return s != 0; }))
   {
     this->LastError = "smoke solver: the obstacles cover every one of the " + std::to_string(count) +
@@ -618,24 +695,150 @@ bool vtkPlumeSmokeSolver::EnsureState()
   {
     u.clear();
   }
-  if (external && !this->SampleExternalVelocity(external))
+  for (VelocityFrame& frame : this->Frames)
   {
-    this->Signature.clear();
-    return false;
+    frame.Index = -1;
+  }
+  if (external)
+  {
+    if (!this->SampleExternalVelocity(this->VelocityInput, external, this->ExternalU))
+    {
+      this->Signature.clear();
+      return false;
+    }
+    if (this->IsVelocityTimeSeries())
+    {
+      // the frame the input holds now is kept (no second read of it)
+      const double held = this->HeldVelocityTime;
+      const auto at = std::find(this->VelocityTimes.begin(), this->VelocityTimes.end(), held);
+      if (at != this->VelocityTimes.end())
+      {
+        this->Frames[0].Index = int(at - this->VelocityTimes.begin());
+        for (int d = 0; d < 3; ++d)
+        {
+          this->Frames[0].U[d] = this->ExternalU[d];
+        }
+        ++this->NumberOfVelocityFramesRead;
+      }
+    }
   }
   this->Signature = signature;
   this->Reset();
   return true;
 }
 
-bool vtkPlumeSmokeSolver::SampleExternalVelocity(vtkDataArray* velocity)
+bool vtkPlumeSmokeSolver::VoxeliseObstacles(double t)
+{
+  const int* n = this->Cells;
+  this->Solid = this->StaticSolid;
+  this->SolidOwner.assign(this->Solid.size(), 0);
+  for (size_t o = 0; o < this->Obstacles.size(); ++o)
+  {
+    const Obstacle& ob = this->Obstacles[o];
+    const glm::dvec3 shift = t * glm::dvec3(ob.Velocity[0], ob.Velocity[1], ob.Velocity[2]);
+    const int owner = int(o) + 1;
+    auto mark = [&](size_t c) {
+      this->Solid[c] = 1;
+      this->SolidOwner[c] = owner; // the last obstacle listed wins where they overlap
+    };
+    if (ob.Kind == SURFACE)
+    {
+      // the surface at rest, tested at the cell centres moved back by the
+      // shift (vtkSelectEnclosedPoints' ray casting; only the cells within
+      // its bounds, serially: the test is not thread-safe)
+      double bounds[6];
+      ob.Surface->GetBounds(bounds);
+      int lo[3], hi[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::max(0, int(std::floor((bounds[2 * a] + shift[a] - this->O[a]) / this->H[a])));
+        hi[a] = std::min(n[a] - 1, int(std::ceil((bounds[2 * a + 1] + shift[a] - this->O[a]) / this->H[a])));
+      }
+      vtkNew<vtkSelectEnclosedPoints> enclosed;
+      enclosed->SetTolerance(1e-6);
+      enclosed->Initialize(ob.Surface);
+      for (int k = lo[2]; k <= hi[2]; ++k)
+        for (int j = lo[1]; j <= hi[1]; ++j)
+          for (int i = lo[0]; i <= hi[0]; ++i)
+          {
+            double p[3] = { this->O[0] + i * this->H[0] - shift.x, this->O[1] + j * this->H[1] - shift.y,
+              this->O[2] + k * this->H[2] - shift.z };
+            if (enclosed->IsInsideSurface(p))
+            {
+              mark(i + size_t(n[0]) * (j + size_t(n[1]) * k));
+            }
+          }
+      enclosed->Complete();
+      continue;
+    }
+    ForRows(n, [&](int j, int k) {
+      for (int i = 0; i < n[0]; ++i)
+      {
+        const glm::dvec3 p =
+          glm::dvec3(this->O[0] + i * this->H[0], this->O[1] + j * this->H[1], this->O[2] + k * this->H[2]) - shift;
+        const bool inside = ob.Kind == SPHERE
+          ? glm::length(p - glm::dvec3(ob.Values[0], ob.Values[1], ob.Values[2])) <= ob.Values[3]
+          : (p.x >= ob.Values[0] && p.x <= ob.Values[1] && p.y >= ob.Values[2] && p.y <= ob.Values[3] &&
+              p.z >= ob.Values[4] && p.z <= ob.Values[5]);
+        if (inside)
+        {
+          mark(i + size_t(n[0]) * (j + size_t(n[1]) * k));
+        }
+      }
+    });
+  }
+  return true;
+}
+
+void vtkPlumeSmokeSolver::ApplyObstacleVelocity()
+{
+  const int* n = this->Cells;
+  for (int d = 0; d < 3; ++d)
+  {
+    int m[3] = { n[0], n[1], n[2] };
+    ++m[d];
+    ForRows(m, [&](int j, int k) {
+      for (int i = 0; i < m[0]; ++i)
+      {
+        if (!this->IsWallFace(d, i, j, k))
+        {
+          continue;
+        }
+        int idx[3] = { i, j, k };
+        double value = 0;
+        // a closed domain side stays 0; else the velocity of a moving neighbour's obstacle
+        const bool side = (idx[d] == 0 && !this->Open[2 * d]) || (idx[d] == n[d] && !this->Open[2 * d + 1]);
+        if (!side)
+        {
+          for (int s = 0; s < 2; ++s)
+          {
+            int c[3] = { idx[0], idx[1], idx[2] };
+            c[d] -= s;
+            if (c[d] < 0 || c[d] >= n[d])
+            {
+              continue;
+            }
+            const size_t cell = c[0] + size_t(n[0]) * (c[1] + size_t(n[1]) * c[2]);
+            if (this->Solid[cell] && this->SolidOwner[cell] > 0)
+            {
+              value = this->Obstacles[size_t(this->SolidOwner[cell] - 1)].Velocity[d];
+            }
+          }
+        }
+        this->U[d][i + size_t(m[0]) * (j + size_t(m[1]) * k)] = value;
+      }
+    });
+  }
+}
+
+bool vtkPlumeSmokeSolver::SampleExternalVelocity(
+  vtkImageData* image, vtkDataArray* velocity, std::vector<double> faces[3])
 {
   // Each face takes its component of the velocity image, trilinear between
   // the image's points (zero outside the image); walls stay zero. The field
   // is then projected once: resampling leaves some divergence, which would
   // make passive smoke gather or thin out.
   const int* n = this->Cells;
-  vtkImageData* image = this->VelocityInput;
   const double* io = image->GetOrigin();
   const double* is = image->GetSpacing();
   const int* ext = image->GetExtent();
@@ -697,9 +900,113 @@ bool vtkPlumeSmokeSolver::SampleExternalVelocity(vtkDataArray* velocity)
   }
   for (int d = 0; d < 3; ++d)
   {
-    this->ExternalU[d] = this->U[d];
+    faces[d] = this->U[d];
   }
   std::fill(this->Q.begin(), this->Q.end(), 0.0);
+  return true;
+}
+
+const vtkPlumeSmokeSolver::VelocityFrame* vtkPlumeSmokeSolver::GetVelocityFrame(int index, int keep)
+{
+  for (const VelocityFrame& frame : this->Frames)
+  {
+    if (frame.Index == index)
+    {
+      return &frame;
+    }
+  }
+  VelocityFrame& slot = this->Frames[0].Index == keep ? this->Frames[1] : this->Frames[0];
+  vtkAlgorithmOutput* connection =
+    this->GetNumberOfInputConnections(1) > 0 ? this->GetInputConnection(1, 0) : nullptr;
+  if (!connection || !connection->GetProducer())
+  {
+    this->LastError = "smoke solver: the velocity time series has no input connection to read time " +
+      Text(this->VelocityTimes[size_t(index)]) + " from";
+    return nullptr;
+  }
+  // An update of the upstream algorithm at that time: the pipeline asks our
+  // input for one time per request, a step may need another one.
+  vtkAlgorithm* upstream = connection->GetProducer();
+  const int port = connection->GetIndex();
+  const double time = this->VelocityTimes[size_t(index)];
+  vtkNew<vtkInformationVector> requests;
+  requests->SetNumberOfInformationObjects(port + 1);
+  requests->GetInformationObject(port)->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), time);
+  vtkImageData* image = upstream->Update(port, requests) ? vtkImageData::SafeDownCast(upstream->GetOutputDataObject(port)) : nullptr;
+  vtkDataArray* velocity = !image ? nullptr
+    : this->VelocityArrayName.empty() ? image->GetPointData()->GetVectors()
+                                      : image->GetPointData()->GetArray(this->VelocityArrayName.c_str());
+  if (!velocity || velocity->GetNumberOfComponents() != 3)
+  {
+    this->LastError = "smoke solver: the velocity time series gave no image with a 3-component point array '" +
+      (this->VelocityArrayName.empty() ? std::string("(active vectors)") : this->VelocityArrayName) +
+      "' at time " + Text(time);
+    return nullptr;
+  }
+  this->HeldVelocityTime = time;
+  // sampling projects through U and Q: keep the state
+  std::vector<double> saved[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    saved[d] = this->U[d];
+  }
+  const std::vector<double> savedQ = this->Q;
+  const bool ok = this->SampleExternalVelocity(image, velocity, slot.U);
+  for (int d = 0; d < 3; ++d)
+  {
+    this->U[d].swap(saved[d]);
+  }
+  this->Q = savedQ;
+  if (!ok)
+  {
+    slot.Index = -1;
+    return nullptr;
+  }
+  slot.Index = index;
+  ++this->NumberOfVelocityFramesRead;
+  return &slot;
+}
+
+bool vtkPlumeSmokeSolver::SetVelocityAtTime(double t)
+{
+  const std::vector<double>& times = this->VelocityTimes;
+  const double flowTime = t + this->VelocityTimeOffset;
+  // the written times around flowTime (held before the first, after the last)
+  const auto upper = std::upper_bound(times.begin(), times.end(), flowTime);
+  int hi = int(upper - times.begin());
+  int lo = hi - 1;
+  double w = 0;
+  if (lo < 0)
+  {
+    lo = hi = 0;
+  }
+  else if (hi >= int(times.size()))
+  {
+    hi = lo = int(times.size()) - 1;
+  }
+  else
+  {
+    w = (flowTime - times[size_t(lo)]) / (times[size_t(hi)] - times[size_t(lo)]);
+  }
+  const VelocityFrame* a = this->GetVelocityFrame(lo, hi);
+  const VelocityFrame* b = a ? this->GetVelocityFrame(hi, lo) : nullptr;
+  if (!a || !b)
+  {
+    return false;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    std::vector<double>& u = this->U[d];
+    const std::vector<double>& ua = a->U[d];
+    const std::vector<double>& ub = b->U[d];
+    vtkSMPTools::For(0, vtkIdType(u.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        u[f] = (1 - w) * ua[f] + w * ub[f];
+      }
+    });
+    this->ExternalU[d] = u;
+  }
   return true;
 }
 
@@ -715,6 +1022,16 @@ void vtkPlumeSmokeSolver::Reset()
     {
       std::fill(this->U[d].begin(), this->U[d].end(), 0.0);
     }
+  }
+  if (this->IsVelocityTimeSeries() && this->HasExternalVelocity())
+  {
+    this->SetVelocityAtTime(0.0); // a failure shows at the next step
+  }
+  if (this->HasMovingObstacles() && !this->HasExternalVelocity() && !this->StaticSolid.empty())
+  {
+    this->VoxeliseObstacles(0.0);
+    this->Pressure->SetProblem(this->Cells, this->H, this->Solid.data(), this->Open);
+    this->ApplyObstacleVelocity();
   }
   std::fill(this->Density.begin(), this->Density.end(), 0.0);
   std::fill(this->Temperature.begin(), this->Temperature.end(), this->AmbientTemperature);
@@ -1255,10 +1572,22 @@ bool vtkPlumeSmokeSolver::ReadCheckpoint(const char* path)
     this->LastError = "smoke solver: the checkpoint '" + name + "' is truncated";
     return false;
   }
+  if (this->HasMovingObstacles() && !this->HasExternalVelocity())
+  {
+    this->VoxeliseObstacles(time); // where they were at the checkpoint
+  }
   if (solid != this->Solid)
   {
+    if (this->HasMovingObstacles() && !this->HasExternalVelocity())
+    {
+      this->VoxeliseObstacles(this->SimulationTime);
+    }
     this->LastError = "smoke solver: the checkpoint '" + name + "' has other obstacles than this solver";
     return false;
+  }
+  if (this->HasMovingObstacles() && !this->HasExternalVelocity())
+  {
+    this->Pressure->SetProblem(this->Cells, this->H, this->Solid.data(), this->Open);
   }
   for (int d = 0; d < 3; ++d)
   {
@@ -1292,10 +1621,39 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
     this->LastError = "smoke solver: a step must be positive and finite, got " + Text(dt);
     return false;
   }
+  const bool series = this->HasExternalVelocity() && this->IsVelocityTimeSeries();
+  if (series && !this->SetVelocityAtTime(this->SimulationTime + 0.5 * dt))
+  {
+    return false; // the flow of the step's middle
+  }
   // All advected quantities move with the velocity of the start of the step
   // (the scalars first: the velocity advection replaces it).
   std::vector<double> next;
+  const bool closed = std::none_of(this->Open, this->Open + 6, [](bool o) { return o; });
+  const bool conserve = this->ConserveMass && closed;
+  // sums in a fixed order: the same bits whatever the number of threads
+  auto total = [](const std::vector<double>& v) {
+    double sum = 0;
+    for (double x : v)
+    {
+      sum += x;
+    }
+    return sum;
+  };
+  const double massBefore = conserve ? total(this->Density) * std::exp(-this->DensityDissipation * dt) : 0.0;
   this->Advect(this->Density, -1, dt, this->DensityDissipation, 0.0, next);
+  if (conserve)
+  {
+    const double massAfter = total(next);
+    if (massAfter > 0 && massBefore > 0)
+    {
+      const double scale = massBefore / massAfter;
+      for (double& v : next)
+      {
+        v *= scale;
+      }
+    }
+  }
   this->Density.swap(next);
   this->Advect(this->Temperature, -1, dt, this->TemperatureDissipation, this->AmbientTemperature, next);
   this->Temperature.swap(next);
@@ -1315,6 +1673,28 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
     {
       this->U[d].swap(velocity[d]);
     }
+    if (this->HasMovingObstacles())
+    {
+      // the obstacles at the end of the step: the cells they cover hold no
+      // smoke, their faces move with them, the pressure sees the new walls
+      this->VoxeliseObstacles(this->SimulationTime + dt);
+      if (std::all_of(this->Solid.begin(), this->Solid.end(), [](unsigned char s) { return s != 0; }))
+      {
+        this->LastError = "smoke solver: at t = " + Text(this->SimulationTime + dt) +
+          " the moving obstacles cover every cell: there is no fluid to simulate";
+        return false;
+      }
+      for (size_t c = 0; c < this->Solid.size(); ++c)
+      {
+        if (this->Solid[c])
+        {
+          this->Density[c] = 0;
+          this->Temperature[c] = this->AmbientTemperature;
+        }
+      }
+      this->ApplyObstacleVelocity();
+      this->Pressure->SetProblem(this->Cells, this->H, this->Solid.data(), this->Open);
+    }
     this->ApplyBuoyancy(dt);
     this->ApplyVorticityConfinement(dt);
     this->ApplySources();
@@ -1328,13 +1708,29 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
   ++this->CurrentStep;
   ++this->StepsTaken;
   this->Modified();
-  return true;
+  // the output shows the flow of the new time
+  return !series || this->SetVelocityAtTime(this->SimulationTime);
 }
 
 //------------------------------------------------------------------------------
 int vtkPlumeSmokeSolver::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  // a velocity input with written times is a time series
+  std::vector<double> times;
+  if (vtkInformation* inInfo = inputVector[1]->GetInformationObject(0))
+  {
+    if (inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+    {
+      const double* t = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+      times.assign(t, t + inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+    }
+  }
+  if (times != this->VelocityTimes)
+  {
+    this->VelocityTimes = times;
+    this->HeldVelocityTime = std::numeric_limits<double>::quiet_NaN();
+  }
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int extent[6] = { 0, std::max(this->Dimensions[0], 1) - 1, 0, std::max(this->Dimensions[1], 1) - 1, 0,
     std::max(this->Dimensions[2], 1) - 1 };
@@ -1362,7 +1758,9 @@ int vtkPlumeSmokeSolver::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // The obstacle and velocity images are read whole, whatever part of the
-  // output is asked for; a static field (no time request upstream).
+  // output is asked for; a static field (no time request upstream). A
+  // velocity time series is asked for the written time it holds already
+  // (the first at the start): the steps fetch the others they need.
   for (int port = 0; port < 2; ++port)
   {
     if (vtkInformation* inInfo = inputVector[port]->GetInformationObject(0))
@@ -1372,7 +1770,19 @@ int vtkPlumeSmokeSolver::RequestUpdateExtent(
         inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
           inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
       }
-      inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      if (port == 1 && this->IsVelocityTimeSeries())
+      {
+        if (std::find(this->VelocityTimes.begin(), this->VelocityTimes.end(), this->HeldVelocityTime) ==
+          this->VelocityTimes.end())
+        {
+          this->HeldVelocityTime = this->VelocityTimes.front();
+        }
+        inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), this->HeldVelocityTime);
+      }
+      else
+      {
+        inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      }
     }
   }
   return 1;
@@ -1389,6 +1799,11 @@ int vtkPlumeSmokeSolver::RequestData(
   this->VelocityInput = inputVector[1]->GetNumberOfInformationObjects() > 0
     ? vtkImageData::GetData(inputVector[1]->GetInformationObject(0))
     : nullptr;
+  if (this->VelocityInput && this->IsVelocityTimeSeries() &&
+    this->VelocityInput->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
+  {
+    this->HeldVelocityTime = this->VelocityInput->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
+  }
   if (!this->EnsureState())
   {
     vtkErrorMacro(<< this->LastError);
