@@ -20,6 +20,7 @@
 #include "vtkCellData.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkPointData.h"
+#include "vtkPropCollection.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -388,6 +389,7 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
       std::ostringstream label;
       label << "t = " << reader->GetTimeValueAt(step);
       this->TimeLabel = label.str();
+      this->TimeStepShown = step;
     }
     if (SolutionIsUniform(entry.Data))
     {
@@ -793,7 +795,16 @@ void Scene::Build(
     }
     Parameters p(item, where + " (" + type + ")");
     p.String("type", type);
+    // the props this representation adds are the ones after those already there
+    const int before = renderer->GetViewProps()->GetNumberOfItems();
     builder->second(p, datasets, renderer);
+    std::vector<vtkSmartPointer<vtkProp>> added;
+    vtkPropCollection* props = renderer->GetViewProps();
+    for (int i = before; i < props->GetNumberOfItems(); ++i)
+    {
+      added.emplace_back(vtkProp::SafeDownCast(props->GetItemAsObject(i)));
+    }
+    options.RepresentationProps.push_back(std::move(added));
   }
   if (!title.empty())
   {
@@ -809,6 +820,7 @@ void Scene::Build(
     renderer->AddActor2D(text);
   }
   options.NumberOfTimeSteps = datasets.GetNumberOfTimeSteps();
+  options.TimeStepShown = datasets.GetTimeStepShown();
   if (timeLabel && !datasets.GetTimeLabel().empty())
   {
     // the time of the step shown, bottom left, in the overlay like the title
