@@ -2,6 +2,7 @@
 
 #include "plumeParameters.h"
 #include "plumeProgress.h"
+#include "plumeRepresentationHelpers.h"
 #include "plumeSceneError.h"
 
 #include "vtkPlumeAirlightPass.h"
@@ -877,7 +878,7 @@ void Scene::Build(
     text->GetTextProperty()->SetJustificationToCentered();
     text->GetTextProperty()->SetVerticalJustificationToTop();
     text->GetTextProperty()->SetFontSize(std::max(12, std::min(options.Width, options.Height) / 22));
-    text->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+    text->GetTextProperty()->SetColor(TextColorOn(BackgroundAt(renderer, 0.95).data()).data());
     text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     text->GetPositionCoordinate()->SetValue(0.5, 0.97);
     renderer->AddActor2D(text);
@@ -892,7 +893,7 @@ void Scene::Build(
     text->GetTextProperty()->SetJustificationToLeft();
     text->GetTextProperty()->SetVerticalJustificationToBottom();
     text->GetTextProperty()->SetFontSize(std::max(12, std::min(options.Width, options.Height) / 26));
-    text->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+    text->GetTextProperty()->SetColor(TextColorOn(BackgroundAt(renderer, 0.03).data()).data());
     text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     text->GetPositionCoordinate()->SetValue(0.02, 0.02);
     renderer->AddActor2D(text);
