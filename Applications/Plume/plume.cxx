@@ -9,6 +9,7 @@
 #include "plumeScene.h"
 #include "plumeSceneError.h"
 #include "plumeSimulate.h"
+#include "plumeView.h"
 
 #include "vtkPlumeDatasetReader.h"
 #include "vtkPlumeParameterTable.h"
@@ -220,6 +221,39 @@ std::string QuickLookSummary(const nlohmann::json& scene)
   return what + " and the outline";
 }
 
+/** A scene file, or a quick look's scene for a dataset file (stated; printed with --print-scene). */
+nlohmann::json LoadScene(const std::string& scenePath, bool printScene)
+{
+  // a folder is not a quick look: the scene reader says it is a directory
+  const bool quickLook = !vtksys::SystemTools::FileIsDirectory(scenePath) &&
+    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(scenePath)) != ".json";
+  const nlohmann::json scene = quickLook ? QuickLookScene(scenePath) : plume::Scene::ReadFile(scenePath);
+  if (printScene)
+  {
+    // the scene chosen, for the user to edit (stderr keeps stdout for --print-scene)
+    std::cout << scene.dump(2) << "\n";
+  }
+  if (quickLook)
+  {
+    plume::Note("quick look at " + scenePath + ": " + QuickLookSummary(scene) +
+      " (--print-scene prints the scene to edit)");
+  }
+  return scene;
+}
+
+/** `plume view`: the scene plume render would render, in an interactive window. */
+int View(const std::string& scenePath, const std::string& size, plume::ViewOptions options, bool printScene)
+{
+  if (!size.empty() && !ParseSize(size, options.Width, options.Height))
+  {
+    throw plume::SceneError("--size must be WxH with positive integers up to 16384, got '" + size + "'");
+  }
+  const nlohmann::json scene = LoadScene(scenePath, printScene);
+  const std::string directory =
+    vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(scenePath));
+  return plume::View(scene, directory, options, std::cout);
+}
+
 int Render(const std::string& scenePath, const std::string& output, const std::string& size, plume::Backend backend,
   const std::string& timeSteps, const std::string& video, bool printScene)
 {
@@ -272,24 +306,7 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   {
     steps = ParseTimeSteps(timeSteps, 0);
   }
-  // a folder is not a quick look: the scene reader says it is a directory
-  const bool quickLook = !vtksys::SystemTools::FileIsDirectory(scenePath) &&
-    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(scenePath)) != ".json";
-  const nlohmann::json scene = quickLook ? QuickLookScene(scenePath) : plume::Scene::ReadFile(scenePath);
-  if (quickLook)
-  {
-    // the scene chosen, for the user to edit (stderr keeps stdout for --print-scene)
-    if (printScene)
-    {
-      std::cout << scene.dump(2) << "\n";
-    }
-    plume::Note("quick look at " + scenePath + ": " + QuickLookSummary(scene) +
-      " (--print-scene prints the scene to edit)");
-  }
-  else if (printScene)
-  {
-    std::cout << scene.dump(2) << "\n";
-  }
+  const nlohmann::json scene = LoadScene(scenePath, printScene);
   std::string directory = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(scenePath));
   vtkSmartPointer<vtkRenderWindow> window;
   // One frame per step: the scene is built again for each (every series read at that step).
@@ -495,6 +512,26 @@ int main(int argc, char* argv[])
     "render these time steps to numbered images OUT_0000.png ...: all, A:B or A,B,C");
   render->add_option("--video", video, "with --time-steps: also assemble the frames into this video (ffmpeg)");
 
+  auto* view = app.add_subcommand("view", "show a scene (or a dataset's quick look) in an interactive window (X display)");
+  std::string viewScene, viewSize;
+  plume::ViewOptions viewOptions;
+  bool viewPrint = false;
+  view->add_option("scene", viewScene, "scene file (JSON) or a dataset for a quick look, as plume render")->required();
+  view->add_option("--size", viewSize, "window size WxH (default: the scene's size, else 800x600)");
+  view->add_option("--screenshot-prefix", viewOptions.ScreenshotPrefix,
+    "key s writes PREFIX_0000.png, PREFIX_0001.png, ... (default plume_view)");
+  view->add_option("--update-rate", viewOptions.DesiredUpdateRate,
+      "frames per second asked for while the camera moves: VTK's DesiredUpdateRate, under which the volume "
+      "uses its interactive ray lattice (default 15)")
+    ->check(CLI::Range(0.001, 1000.0));
+  view->add_option("--scripted-moves", viewOptions.ScriptedMoves,
+      "no event loop: N scripted mouse drags with a screenshot after each, release, s, r, s, q (for tests)")
+    ->check(CLI::Range(1, 1000));
+  view->add_option("--scripted-keys", viewOptions.ScriptedKeys,
+    "with --scripted-moves: keys pressed after its r and screenshot, before q (e.g. ps1s)");
+  view->add_flag("--print-scene", viewPrint, "print the scene shown (JSON) on stdout");
+  view->footer(plume::ViewKeys());
+
   auto* info = app.add_subcommand("info", "describe what a dataset holds");
   std::string file, readerName, qFile;
   int timeStep = 0;
@@ -555,6 +592,10 @@ int main(int argc, char* argv[])
     if (*render)
     {
       status = Render(scene, output, size, backend, timeSteps, video, printScene);
+    }
+    else if (*view)
+    {
+      status = View(viewScene, viewSize, viewOptions, viewPrint);
     }
     else if (*info)
     {

@@ -309,7 +309,7 @@ void* OpenXDisplay(std::string* error)
 #endif
 }
 
-vtkSmartPointer<vtkRenderWindow> CreateXWindow(int width, int height, std::string* error)
+vtkSmartPointer<vtkRenderWindow> CreateXWindow(int width, int height, std::string* error, bool onScreen = false)
 {
   void* dpy = OpenXDisplay(error);
   if (!dpy)
@@ -331,7 +331,7 @@ vtkSmartPointer<vtkRenderWindow> CreateXWindow(int width, int height, std::strin
   win->SetDisplayId(dpy);
 #endif
   win->SetSize(width, height);
-  win->SetOffScreenRendering(1);
+  win->SetOffScreenRendering(onScreen ? 0 : 1);
   glwin->Initialize();
   if (!CheckContext(glwin, "x backend", error))
   {
@@ -442,6 +442,17 @@ vtkSmartPointer<vtkRenderWindow> RequireRenderWindow(Backend requested, int widt
   {
     throw std::runtime_error(
       "cannot create a render window (backend " + std::string(BackendName(requested)) + "): " + error);
+  }
+  return window;
+}
+
+vtkSmartPointer<vtkRenderWindow> RequireInteractiveWindow(int width, int height)
+{
+  std::string error;
+  auto window = CreateXWindow(width, height, &error, true);
+  if (!window)
+  {
+    throw std::runtime_error("plume view needs an X display for its window: " + error);
   }
   return window;
 }

@@ -42,6 +42,12 @@ vtkSmartPointer<vtkRenderWindow> CreateRenderWindow(
 
 /** CreateRenderWindow, or std::runtime_error naming the backend and the reason. */
 vtkSmartPointer<vtkRenderWindow> RequireRenderWindow(Backend requested, int width, int height);
+
+/**
+ * An on-screen X/GLX window (plume view) of width x height pixels, context
+ * initialised; std::runtime_error naming the reason without a usable $DISPLAY.
+ */
+vtkSmartPointer<vtkRenderWindow> RequireInteractiveWindow(int width, int height);
 }
 
 #endif

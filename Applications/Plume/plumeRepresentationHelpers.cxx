@@ -132,6 +132,40 @@ void Coloring::Read(Parameters& p, const std::array<double, 3>& defaultColor)
   }
 }
 
+std::array<double, 3> TextColorOn(const double background[3])
+{
+  // relative luminance of the sRGB colour (IEC 61966-2-1 transfer, Rec. 709 weights)
+  const double weights[3] = { 0.2126, 0.7152, 0.0722 };
+  double luminance = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double v = std::min(1.0, std::max(0.0, background[c]));
+    luminance += weights[c] * (v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
+  }
+  const double againstWhite = 1.05 / (luminance + 0.05);
+  const double againstBlack = (luminance + 0.05) / 0.05;
+  if (againstBlack > againstWhite)
+  {
+    return { 0.05, 0.05, 0.05 };
+  }
+  return { 0.95, 0.95, 0.95 };
+}
+
+std::array<double, 3> BackgroundAt(vtkRenderer* renderer, double y)
+{
+  const double* bottom = renderer->GetBackground();
+  std::array<double, 3> color = { bottom[0], bottom[1], bottom[2] };
+  if (renderer->GetGradientBackground())
+  {
+    const double* top = renderer->GetBackground2();
+    for (int c = 0; c < 3; ++c)
+    {
+      color[c] = (1 - y) * bottom[c] + y * top[c];
+    }
+  }
+  return color;
+}
+
 void Coloring::ReadLegend(Parameters& p)
 {
   this->Legend = p.Boolean("legend", true);
@@ -155,7 +189,19 @@ void Coloring::AddLegend(vtkRenderer* renderer, vtkScalarsToColors* table, const
   bar->SetLookupTable(table);
   bar->SetTitle(title.c_str());
   bar->SetNumberOfLabels(5);
-  bar->SetLabelFormat("%.3g");
+  // enough significant digits that the labels (a quarter of the range apart) differ:
+  // T 300-301 K is "%.5g" (300.25, ...), not "%.3g" (300, 300, 301, ...)
+  int digits = 3;
+  if (const double* range = table->GetRange())
+  {
+    const double span = range[1] - range[0];
+    const double magnitude = std::max(std::abs(range[0]), std::abs(range[1]));
+    if (span > 0 && std::isfinite(span) && magnitude > 0)
+    {
+      digits = std::max(3, std::min(8, static_cast<int>(std::ceil(std::log10(magnitude / (span / 4)))) + 1));
+    }
+  }
+  bar->SetLabelFormat(("%." + std::to_string(digits) + "g").c_str());
   // fixed, legible text at any picture size (VTK otherwise fits it to the bar)
   bar->UnconstrainedFontSizeOn();
   bar->GetTitleTextProperty()->SetFontSize(14);
@@ -165,9 +211,12 @@ void Coloring::AddLegend(vtkRenderer* renderer, vtkScalarsToColors* table, const
   bar->GetPositionCoordinate()->SetValue(0.84 - 0.15 * earlier, 0.08);
   bar->SetWidth(0.1);
   bar->SetHeight(0.78);
+  // readable on the background behind the bar (its middle, on a gradient)
+  const std::array<double, 3> background = BackgroundAt(renderer, 0.5);
+  const std::array<double, 3> ink = TextColorOn(background.data());
   for (vtkTextProperty* text : { bar->GetTitleTextProperty(), bar->GetLabelTextProperty() })
   {
-    text->SetColor(0.95, 0.95, 0.95);
+    text->SetColor(ink.data());
     text->ShadowOff();
     text->ItalicOff();
     text->BoldOff();

@@ -23,6 +23,19 @@ class Parameters;
 std::string DescribeArrays(vtkDataSet* data);
 
 /**
+ * The colour of overlay text (colour bars, title, time label) readable on
+ * `background` (RGB 0..1, sRGB): near-white or near-black, whichever has the
+ * higher contrast ratio (WCAG: (L1 + 0.05) / (L2 + 0.05) of relative luminances).
+ */
+std::array<double, 3> TextColorOn(const double background[3]);
+
+/**
+ * The background behind overlay text at height `y` (0 bottom .. 1 top) of the
+ * renderer's viewport: its background, or the gradient towards background2.
+ */
+std::array<double, 3> BackgroundAt(vtkRenderer* renderer, double y);
+
+/**
  * A point array by name (or the active vectors/scalars when `name` is empty),
  * checked for `components` (0: any). Throws SceneError naming what is wrong.
  */

@@ -2,9 +2,11 @@
 
 #include "plumeParameters.h"
 #include "plumeProgress.h"
+#include "plumeRepresentationHelpers.h"
 #include "plumeSceneError.h"
 
 #include "vtkPlumeAirlightPass.h"
+#include "vtkPlumeCellCenteredImage.h"
 #include "vtkPlumeDatasetReader.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeInputValidation.h"
@@ -20,6 +22,7 @@
 #include "vtkCellData.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkPointData.h"
+#include "vtkPropCollection.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -184,6 +187,66 @@ std::string SceneDatasets::Resolve(const std::string& path) const
   return local; // the reader reports it missing, naming the path
 }
 
+namespace
+{
+/** Whether `attributes` hold an array besides VTK's masks and ghost markers. */
+bool HasSolutionArrays(vtkDataSetAttributes* attributes)
+{
+  for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
+  {
+    const char* n = attributes->GetArray(i) ? attributes->GetArray(i)->GetName() : nullptr;
+    if (n && std::string(n) != "vtkValidPointMask" && std::string(n) != "vtkGhostType")
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/**
+ * A dataset's "association": "cell" (or "auto" on an image with cell arrays
+ * and no point arrays): its cell values on the lattice of cell centres
+ * (vtkPlumeCellCenteredImage), what every representation then samples as
+ * point data, so volumes, glyphs and contours show the cells' own values.
+ */
+vtkSmartPointer<vtkDataObject> CellCentered(
+  vtkDataObject* data, const std::string& association, int maximumDimension, const std::string& name)
+{
+  auto* ds = vtkDataSet::SafeDownCast(data);
+  const bool cellOnlyImage = vtkImageData::SafeDownCast(data) && !HasSolutionArrays(ds->GetPointData()) &&
+    HasSolutionArrays(ds->GetCellData());
+  if (association == "point" || (association == "auto" && !cellOnlyImage))
+  {
+    return data;
+  }
+  if (!ds || !HasSolutionArrays(ds->GetCellData()))
+  {
+    throw SceneError("datasets." + name + ": 'association' \"cell\" needs a dataset with cell arrays (" +
+      (ds ? "it has none" : std::string("a ") + data->GetClassName() + " is not one dataset; merge its blocks") +
+      ")");
+  }
+  vtkNew<vtkPlumeCellCenteredImage> centres;
+  centres->SetInputData(ds);
+  centres->SetMaximumDimension(maximumDimension);
+  centres->GlobalWarningDisplayOff(); // its error is reported here, once
+  centres->Update();
+  if (!centres->GetLastError().empty())
+  {
+    throw SceneError("datasets." + name + ": " + centres->GetLastError());
+  }
+  vtkImageData* image = centres->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  std::ostringstream note;
+  note << "datasets." << name << ": cell values at the " << dims[0] << "x" << dims[1] << "x" << dims[2]
+       << " cell centres" << (association == "auto" ? " (an image with cell arrays only)" : "")
+       << (centres->GetExact() ? ", every cell exactly"
+                               : ", each sample the value of the cell containing it (cells are not one box lattice)");
+  Note(note.str());
+  return image;
+}
+}
+
 vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& where)
 {
   auto it = this->Entries.find(name);
@@ -334,7 +397,8 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
     reader->AddBlockName(block.c_str());
   }
   // Checked now so typos fail before any slow reading.
-  p.Integer("image_dimension", 64, 2, 1024);
+  const int imageDimension = static_cast<int>(p.Integer("image_dimension", 64, 2, 1024));
+  const std::string association = p.Choice("association", "auto", { "auto", "point", "cell" });
   p.RejectUnknown();
   if (this->Progress)
   {
@@ -373,6 +437,7 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
   {
     throw SceneError("datasets." + name + ": the reader produced no data from '" + path + "'");
   }
+  entry.Data = CellCentered(entry.Data, association, imageDimension, name);
   const int steps = reader->GetNumberOfTimeValues();
   if (steps > 1)
   {
@@ -388,6 +453,7 @@ vtkDataObject* SceneDatasets::Get(const std::string& name, const std::string& wh
       std::ostringstream label;
       label << "t = " << reader->GetTimeValueAt(step);
       this->TimeLabel = label.str();
+      this->TimeStepShown = step;
     }
     if (SolutionIsUniform(entry.Data))
     {
@@ -793,7 +859,16 @@ void Scene::Build(
     }
     Parameters p(item, where + " (" + type + ")");
     p.String("type", type);
+    // the props this representation adds are the ones after those already there
+    const int before = renderer->GetViewProps()->GetNumberOfItems();
     builder->second(p, datasets, renderer);
+    std::vector<vtkSmartPointer<vtkProp>> added;
+    vtkPropCollection* props = renderer->GetViewProps();
+    for (int i = before; i < props->GetNumberOfItems(); ++i)
+    {
+      added.emplace_back(vtkProp::SafeDownCast(props->GetItemAsObject(i)));
+    }
+    options.RepresentationProps.push_back(std::move(added));
   }
   if (!title.empty())
   {
@@ -803,12 +878,13 @@ void Scene::Build(
     text->GetTextProperty()->SetJustificationToCentered();
     text->GetTextProperty()->SetVerticalJustificationToTop();
     text->GetTextProperty()->SetFontSize(std::max(12, std::min(options.Width, options.Height) / 22));
-    text->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+    text->GetTextProperty()->SetColor(TextColorOn(BackgroundAt(renderer, 0.95).data()).data());
     text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     text->GetPositionCoordinate()->SetValue(0.5, 0.97);
     renderer->AddActor2D(text);
   }
   options.NumberOfTimeSteps = datasets.GetNumberOfTimeSteps();
+  options.TimeStepShown = datasets.GetTimeStepShown();
   if (timeLabel && !datasets.GetTimeLabel().empty())
   {
     // the time of the step shown, bottom left, in the overlay like the title
@@ -817,7 +893,7 @@ void Scene::Build(
     text->GetTextProperty()->SetJustificationToLeft();
     text->GetTextProperty()->SetVerticalJustificationToBottom();
     text->GetTextProperty()->SetFontSize(std::max(12, std::min(options.Width, options.Height) / 26));
-    text->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+    text->GetTextProperty()->SetColor(TextColorOn(BackgroundAt(renderer, 0.03).data()).data());
     text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     text->GetPositionCoordinate()->SetValue(0.02, 0.02);
     renderer->AddActor2D(text);

@@ -4,6 +4,7 @@
 #ifndef plumeScene_h
 #define plumeScene_h
 
+#include "vtkProp.h"
 #include "vtkSmartPointer.h"
 
 #include <nlohmann/json.hpp>
@@ -17,7 +18,6 @@
 class vtkDataObject;
 class vtkImageData;
 class vtkPlumeSmokeSolver;
-class vtkProp;
 class vtkRenderer;
 
 namespace plume
@@ -58,6 +58,8 @@ public:
   int GetNumberOfTimeSteps() const { return this->TimeSteps; }
   /** "t = 2.5" for the first time series read (its step shown), "" if none is a series. */
   const std::string& GetTimeLabel() const { return this->TimeLabel; }
+  /** The step index of that first time series (-1 if none is a series). */
+  int GetTimeStepShown() const { return this->TimeStepShown; }
   /** Whether progress bars are drawn (plume render on a terminal). */
   bool ProgressEnabled() const { return this->Progress; }
 
@@ -75,6 +77,7 @@ private:
   int TimeStepOverride = -1; // --time-steps: this step of every time series, whatever the scene says
   int TimeSteps = 0;
   std::string TimeLabel;
+  int TimeStepShown = -1;
 };
 
 /** Builds one representation (`"type": ...`) into props added to the renderer. */
@@ -112,6 +115,10 @@ struct SceneOptions
   int TimeStep = -1;
   /** Out: the most time steps of a dataset the scene read (0: no series). */
   int NumberOfTimeSteps = 0;
+  /** Out: the step shown of the first time series (-1: no series). */
+  int TimeStepShown = -1;
+  /** Out: the props (actors, volumes, colour bars) each representation added, in scene order (plume view's toggles). */
+  std::vector<std::vector<vtkSmartPointer<vtkProp>>> RepresentationProps;
 };
 
 class Scene

@@ -119,6 +119,8 @@ vtkPlumeCompositingPass::vtkPlumeCompositingPass()
   , Translucent(vtkSmartPointer<vtkTranslucentPass>::New())
   , Depth(vtkSmartPointer<vtkPlumeOpaqueDepthTexture>::New())
 {
+  // the frame's shared depth: anti-aliased edges of lines stop volumes and sheets (issue 15)
+  this->Depth->SetResolveToNearestSample(true);
   auto oit = vtkSmartPointer<vtkOrderIndependentTranslucentPass>::New();
   oit->SetTranslucentPass(this->Translucent);
   this->OrderIndependent = oit;

@@ -1,12 +1,18 @@
 #include "vtkPlumeOpaqueDepthTexture.h"
 
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkShaderProgram.h"
 #include "vtkOpenGLState.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 
 #include "vtk_glew.h"
+
+#include "vtkPlumeDepthResolveFS.h"
 
 vtkStandardNewMacro(vtkPlumeOpaqueDepthTexture);
 
@@ -15,7 +21,10 @@ vtkPlumeOpaqueDepthTexture::vtkPlumeOpaqueDepthTexture()
 {
 }
 
-vtkPlumeOpaqueDepthTexture::~vtkPlumeOpaqueDepthTexture() = default;
+vtkPlumeOpaqueDepthTexture::~vtkPlumeOpaqueDepthTexture()
+{
+  delete this->Quad;
+}
 
 vtkTextureObject* vtkPlumeOpaqueDepthTexture::GetTextureObject()
 {
@@ -30,6 +39,21 @@ void vtkPlumeOpaqueDepthTexture::ReleaseGraphicsResources(vtkWindow* window)
     glDeleteFramebuffers(1, &this->ResolveFramebuffer);
   }
   this->ResolveFramebuffer = 0;
+  if (this->MultisampleFramebuffer && this->Texture->GetContext())
+  {
+    glDeleteFramebuffers(1, &this->MultisampleFramebuffer);
+  }
+  this->MultisampleFramebuffer = 0;
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(window);
+    delete this->Quad;
+    this->Quad = nullptr;
+  }
+  if (this->Multisampled)
+  {
+    this->Multisampled->ReleaseGraphicsResources(window);
+  }
   this->Texture->ReleaseGraphicsResources(window);
   this->Size[0] = this->Size[1] = 0;
 }
@@ -53,6 +77,8 @@ bool vtkPlumeOpaqueDepthTexture::Capture(vtkRenderer* renderer)
   vtkOpenGLState* state = window->GetState();
   unsigned int drawBinding = 0, drawBuffer = 0;
   state->GetCurrentDrawFramebufferState(drawBinding, drawBuffer);
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples); // of the draw framebuffer: the one VTK draws into
 
   // read from the framebuffer VTK is drawing into
   state->PushReadFramebufferBinding();
@@ -94,6 +120,20 @@ bool vtkPlumeOpaqueDepthTexture::Capture(vtkRenderer* renderer)
     {
       glGenFramebuffers(1, &this->ResolveFramebuffer);
     }
+    if (samples > 1 && this->ResolveToNearestSample &&
+      this->ResolveNearest(window, x, y, width, height, samples))
+    {
+      state->PopReadFramebufferBinding();
+      this->Origin[0] = x;
+      this->Origin[1] = y;
+      this->Size[0] = width;
+      this->Size[1] = height;
+      return true;
+    }
+    while (glGetError() != GL_NO_ERROR)
+    {
+      // a failed nearest-sample resolve: the resolving blit below instead
+    }
     // the scissor box (VTK's viewport) applies to the blit's destination,
     // which starts at (0, 0): off, or other viewports than the lower left are cut
     vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
@@ -122,6 +162,84 @@ bool vtkPlumeOpaqueDepthTexture::Capture(vtkRenderer* renderer)
   this->Size[0] = width;
   this->Size[1] = height;
   return true;
+}
+
+bool vtkPlumeOpaqueDepthTexture::ResolveNearest(
+  vtkOpenGLRenderWindow* window, int x, int y, int width, int height, int samples)
+{
+  vtkOpenGLState* state = window->GetState();
+  // 1. the source's depth, sample for sample (same size, format and sample count: a plain copy)
+  if (!this->Multisampled)
+  {
+    this->Multisampled = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  vtkTextureObject* ms = this->Multisampled;
+  if (ms->GetContext() != window || !ms->GetHandle() || static_cast<int>(ms->GetWidth()) != width ||
+    static_cast<int>(ms->GetHeight()) != height || ms->GetSamples() != samples ||
+    this->Format != this->MultisampledFormat)
+  {
+    ms->ReleaseGraphicsResources(window);
+    ms->SetContext(window);
+    ms->SetSamples(samples);
+    if (!ms->AllocateDepth(width, height, this->Format))
+    {
+      return false;
+    }
+    this->MultisampledFormat = this->Format;
+  }
+  if (!this->MultisampleFramebuffer)
+  {
+    glGenFramebuffers(1, &this->MultisampleFramebuffer);
+  }
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->PushDrawFramebufferBinding();
+  state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->MultisampleFramebuffer);
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D_MULTISAMPLE, ms->GetHandle(), 0);
+  glDrawBuffer(GL_NONE);
+  glBlitFramebuffer(x, y, x + width, y + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  bool ok = glGetError() == GL_NO_ERROR;
+
+  // 2. a full-screen pass writing each pixel's nearest sample into the depth texture
+  if (ok)
+  {
+    if (!this->Quad)
+    {
+      this->Quad = new vtkOpenGLQuadHelper(
+        window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), vtkPlumeDepthResolveFS, "");
+    }
+    else
+    {
+      window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+    }
+    vtkShaderProgram* program = this->Quad->Program;
+    ok = program && program->GetCompiled();
+    if (ok)
+    {
+      state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->ResolveFramebuffer);
+      glFramebufferTexture2D(
+        GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, this->Texture->GetHandle(), 0);
+      glDrawBuffer(GL_NONE);
+      vtkOpenGLState::ScopedglViewport viewportSaver(state);
+      vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+      vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+      vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+      vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+      state->vtkglViewport(0, 0, width, height);
+      state->vtkglEnable(GL_DEPTH_TEST);
+      state->vtkglDepthFunc(GL_ALWAYS);
+      state->vtkglDepthMask(GL_TRUE);
+      state->vtkglDisable(GL_BLEND);
+      ms->Activate();
+      program->SetUniformi("Source", ms->GetTextureUnit());
+      program->SetUniformi("Samples", samples);
+      this->Quad->Render();
+      ms->Deactivate();
+      ok = glGetError() == GL_NO_ERROR;
+    }
+  }
+  state->PopDrawFramebufferBinding();
+  return ok;
 }
 
 void vtkPlumeOpaqueDepthTexture::PrintSelf(ostream& os, vtkIndent indent)

@@ -20,9 +20,15 @@
  *
  * The texture has the depth format of the source (24-bit fixed, 32-bit float, ...).
  * A multisampled framebuffer (VTK's default windows have 8 samples) is
- * resolved by a depth blit (one sample per pixel); if even that fails,
- * Capture() returns false, GetLastError() says why and callers should behave
- * as if nothing opaque were in the scene.
+ * resolved by a depth blit (one sample per pixel), or, with
+ * ResolveToNearestSample (set on the compositing pass's shared depth, what
+ * `plume` frames use), to the NEAREST sample of each pixel: its depth is copied
+ * sample for sample into a multisampled texture and a full-screen pass writes
+ * the minimum (with the blit, anti-aliased edge pixels of thin lines whose
+ * sample missed the line got the background's depth, and volumes were drawn
+ * over them: dashed lines). If that pass is unavailable, the blit; if even
+ * that fails, Capture() returns false, GetLastError() says why and callers
+ * should behave as if nothing opaque were in the scene.
  */
 #ifndef vtkPlumeOpaqueDepthTexture_h
 #define vtkPlumeOpaqueDepthTexture_h
@@ -33,6 +39,8 @@
 
 #include <string> // For std::string
 
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkTextureObject;
 class vtkWindow;
@@ -54,6 +62,15 @@ public:
   const int* GetViewportOrigin() const { return this->Origin; }
   const int* GetViewportSize() const { return this->Size; }
 
+  ///@{
+  /**
+   * Resolve a multisampled depth buffer to each pixel's nearest sample (true)
+   * instead of a blit's one sample (false, the default).
+   */
+  vtkSetMacro(ResolveToNearestSample, bool);
+  vtkGetMacro(ResolveToNearestSample, bool);
+  ///@}
+
   /** Description of the last failure, "" after a successful Capture. */
   const std::string& GetLastError() const { return this->LastError; }
 
@@ -68,6 +85,13 @@ protected:
   int Size[2] = { 0, 0 };
   int Format = -1;
   unsigned int ResolveFramebuffer = 0; // GL name, for multisampled sources
+  // nearest-sample resolve of a multisampled source: its depth sample for sample, and the pass
+  bool ResolveNearest(vtkOpenGLRenderWindow* window, int x, int y, int width, int height, int samples);
+  vtkSmartPointer<vtkTextureObject> Multisampled;
+  unsigned int MultisampleFramebuffer = 0; // GL name
+  int MultisampledFormat = -1;
+  bool ResolveToNearestSample = false;
+  vtkOpenGLQuadHelper* Quad = nullptr;
   std::string LastError;
 
 private:

@@ -10,6 +10,8 @@
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -19,37 +21,14 @@ vtkStandardNewMacro(vtkPlumeSheetReference);
 
 namespace
 {
-using Vec = std::array<double, 3>;
+// GLM for the vector math (double precision; the shaders share nothing with this file)
+using Vec = glm::dvec3;
 const double Pi = 3.14159265358979323846;
 const double Huge = 1e300;
 // Triangles (and parts of them) farther than this many standard deviations
 // from the ray are skipped (exp(-18) ~ 1.5e-8 of the peak)
 const double Support = 6.0;
 
-Vec Sub(const Vec& a, const Vec& b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-Vec Add(const Vec& a, const Vec& b)
-{
-  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
-}
-Vec Scale(const Vec& a, double s)
-{
-  return { a[0] * s, a[1] * s, a[2] * s };
-}
-double Dot(const Vec& a, const Vec& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec Cross(const Vec& a, const Vec& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-double Norm(const Vec& a)
-{
-  return std::sqrt(Dot(a, a));
-}
 double Clean(double v)
 {
   return std::isfinite(v) && v > 0.0 ? v : 0.0;
@@ -77,9 +56,9 @@ struct Ray
 
 double RayDistance(const Ray& ray, const Vec& c)
 {
-  double t = Dot(Sub(c, ray.O), ray.V);
+  double t = glm::dot((c - ray.O), ray.V);
   t = std::min(std::max(t, ray.T0), ray.T1);
-  return Norm(Sub(Add(ray.O, Scale(ray.V, t)), c));
+  return glm::length(((ray.O + (ray.V * t)) - c));
 }
 
 // Distance from the ray's infinite line to the triangle abc: the distance
@@ -88,45 +67,45 @@ double RayDistance(const Ray& ray, const Vec& c)
 double LineTriangleDistance(const Ray& ray, const Vec& pa, const Vec& pb, const Vec& pc)
 {
   auto project = [&](const Vec& p) {
-    const Vec q = Sub(p, ray.O);
-    return Sub(q, Scale(ray.V, Dot(q, ray.V)));
+    const Vec q = (p - ray.O);
+    return (q - (ray.V * glm::dot(q, ray.V)));
   };
   const Vec a = project(pa), b = project(pb), c = project(pc);
-  const Vec ab = Sub(b, a), ac = Sub(c, a), ap = Scale(a, -1.0);
-  const double d1 = Dot(ab, ap), d2 = Dot(ac, ap);
+  const Vec ab = (b - a), ac = (c - a), ap = (a * -1.0);
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
   if (d1 <= 0 && d2 <= 0)
   {
-    return Norm(a);
+    return glm::length(a);
   }
-  const Vec bp = Scale(b, -1.0);
-  const double d3 = Dot(ab, bp), d4 = Dot(ac, bp);
+  const Vec bp = (b * -1.0);
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
   if (d3 >= 0 && d4 <= d3)
   {
-    return Norm(b);
+    return glm::length(b);
   }
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0 && d1 >= 0 && d3 <= 0)
   {
     const double v = d1 / (d1 - d3);
-    return Norm(Add(a, Scale(ab, v)));
+    return glm::length((a + (ab * v)));
   }
-  const Vec cp = Scale(c, -1.0);
-  const double d5 = Dot(ab, cp), d6 = Dot(ac, cp);
+  const Vec cp = (c * -1.0);
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
   if (d6 >= 0 && d5 <= d6)
   {
-    return Norm(c);
+    return glm::length(c);
   }
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0 && d2 >= 0 && d6 <= 0)
   {
     const double w = d2 / (d2 - d6);
-    return Norm(Add(a, Scale(ac, w)));
+    return glm::length((a + (ac * w)));
   }
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
   {
     const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return Norm(Add(b, Scale(Sub(c, b), w)));
+    return glm::length((b + ((c - b) * w)));
   }
   const double denom = va + vb + vc;
   if (!(std::fabs(denom) > 0))
@@ -134,7 +113,7 @@ double LineTriangleDistance(const Ray& ray, const Vec& pa, const Vec& pb, const 
     return 0.0; // degenerate projection (the triangle seen edge-on): do not cull
   }
   const double v = vb / denom, w = vc / denom;
-  return Norm(Add(a, Add(Scale(ab, v), Scale(ac, w))));
+  return glm::length((a + ((ab * v) + (ac * w))));
 }
 
 // Gauss-Kronrod 7/15 nodes and weights
@@ -184,7 +163,7 @@ double LineIntegral(const Ray& ray, const Vec& p, const Vec& n, double sb, doubl
   {
     return 0.0;
   }
-  const double vn = Dot(ray.V, n);
+  const double vn = glm::dot(ray.V, n);
   if (!(st > 0.0))
   {
     // surface layer: a delta across the plane; the ray crosses it once
@@ -192,24 +171,24 @@ double LineIntegral(const Ray& ray, const Vec& p, const Vec& n, double sb, doubl
     {
       return 0.0;
     }
-    const double t = Dot(Sub(p, ray.O), n) / vn;
+    const double t = glm::dot((p - ray.O), n) / vn;
     if (t < ray.T0 || t > ray.T1)
     {
       return 0.0;
     }
-    const Vec r = Sub(Add(ray.O, Scale(ray.V, t)), p);
-    return std::exp(-0.5 * Dot(r, r) / (sb * sb)) / (2.0 * Pi * sb * sb * std::fabs(vn));
+    const Vec r = ((ray.O + (ray.V * t)) - p);
+    return std::exp(-0.5 * glm::dot(r, r) / (sb * sb)) / (2.0 * Pi * sb * sb * std::fabs(vn));
   }
   // Along the ray the integrand is a Gaussian in t; its centre and width
   // only place the quadrature panels (the value itself is integrated
   // numerically): panels at +-2.5 and +-8 widths, nothing beyond.
-  const Vec r0 = Sub(ray.O, p);
-  const double z0 = Dot(r0, n);
-  const Vec r0in = Sub(r0, Scale(n, z0));
-  const Vec vin = Sub(ray.V, Scale(n, vn));
-  const double inv = Dot(vin, vin) / (sb * sb) + vn * vn / (st * st);
+  const Vec r0 = (ray.O - p);
+  const double z0 = glm::dot(r0, n);
+  const Vec r0in = (r0 - (n * z0));
+  const Vec vin = (ray.V - (n * vn));
+  const double inv = glm::dot(vin, vin) / (sb * sb) + vn * vn / (st * st);
   const double width = 1.0 / std::sqrt(inv);
-  const double centre = -(Dot(r0in, vin) / (sb * sb) + z0 * vn / (st * st)) / inv;
+  const double centre = -(glm::dot(r0in, vin) / (sb * sb) + z0 * vn / (st * st)) / inv;
   const double a = std::max(ray.T0, centre - 8.0 * width);
   const double b = std::min(ray.T1, centre + 8.0 * width);
   if (!(a < b))
@@ -218,9 +197,9 @@ double LineIntegral(const Ray& ray, const Vec& p, const Vec& n, double sb, doubl
   }
   const double norm = 1.0 / (std::pow(2.0 * Pi, 1.5) * sb * sb * st);
   auto f = [&](double t) {
-    const Vec r = Sub(Add(ray.O, Scale(ray.V, t)), p);
-    const double z = Dot(r, n);
-    const double in2 = std::max(0.0, Dot(r, r) - z * z);
+    const Vec r = ((ray.O + (ray.V * t)) - p);
+    const double z = glm::dot(r, n);
+    const double in2 = std::max(0.0, glm::dot(r, r) - z * z);
     return norm * std::exp(-0.5 * (in2 / (sb * sb) + z * z / (st * st)));
   };
   const double cuts[4] = { centre - 8.0 * width, centre - 2.5 * width, centre + 2.5 * width,
@@ -252,7 +231,7 @@ struct TriangleIntegrator
     Vec p{ 0, 0, 0 };
     for (int k = 0; k < 3; ++k)
     {
-      p = Add(p, Scale(this->T.P[k], l[k]));
+      p = (p + (this->T.P[k] * l[k]));
     }
     return p;
   }
@@ -265,9 +244,9 @@ struct TriangleIntegrator
     Vec d{ 0, 0, 0 };
     for (int k = 0; k < 3; ++k)
     {
-      d = Add(d, Scale(T.D[k], l[k]));
+      d = (d + (T.D[k] * l[k]));
     }
-    return Scale(d, L);
+    return (d * L);
   }
 
   // degree-5 7-point rule (Radon) on the sub-triangle with barycentric corners a, b, c
@@ -285,10 +264,10 @@ struct TriangleIntegrator
       }
       return this->Integrand(l);
     };
-    Vec s = Scale(at(1.0 / 3, 1.0 / 3, 1.0 / 3), W0);
-    s = Add(s, Scale(Add(Add(at(A1, A1, B1), at(A1, B1, A1)), at(B1, A1, A1)), W1));
-    s = Add(s, Scale(Add(Add(at(A2, A2, B2), at(A2, B2, A2)), at(B2, A2, A2)), W2));
-    return Scale(s, area);
+    Vec s = (at(1.0 / 3, 1.0 / 3, 1.0 / 3) * W0);
+    s = (s + (((at(A1, A1, B1) + at(A1, B1, A1)) + at(B1, A1, A1)) * W1));
+    s = (s + (((at(A2, A2, B2) + at(A2, B2, A2)) + at(B2, A2, A2)) * W2));
+    return (s * area);
   }
 
   // Both distances are lower bounds of the distance between the ray and the
@@ -298,9 +277,9 @@ struct TriangleIntegrator
   bool Culled(const Vec& a, const Vec& b, const Vec& c) const
   {
     const Vec pa = this->Point(a), pb = this->Point(b), pc = this->Point(c);
-    const Vec centre = Scale(Add(Add(pa, pb), pc), 1.0 / 3.0);
+    const Vec centre = (((pa + pb) + pc) * (1.0 / 3.0));
     const double r =
-      std::max({ Norm(Sub(pa, centre)), Norm(Sub(pb, centre)), Norm(Sub(pc, centre)) });
+      std::max({ glm::length((pa - centre)), glm::length((pb - centre)), glm::length((pc - centre)) });
     if (RayDistance(this->R, centre) > r + T.Reach)
     {
       return true;
@@ -315,13 +294,13 @@ struct TriangleIntegrator
   Vec Recurse(const Vec& a, const Vec& b, const Vec& c, const Vec& estimate, double area, int level) const
   {
     const Vec pa = this->Point(a), pb = this->Point(b), pc = this->Point(c);
-    const double lab = Norm(Sub(pa, pb)), lbc = Norm(Sub(pb, pc)), lca = Norm(Sub(pc, pa));
+    const double lab = glm::length((pa - pb)), lbc = glm::length((pb - pc)), lca = glm::length((pc - pa));
     const double diameter = std::max({ lab, lbc, lca });
     // (u, v) the longest edge, w the opposite corner
     const Vec& u = lab >= lbc && lab >= lca ? a : (lbc >= lca ? b : c);
     const Vec& v = lab >= lbc && lab >= lca ? b : (lbc >= lca ? c : a);
     const Vec& w = lab >= lbc && lab >= lca ? c : (lbc >= lca ? a : b);
-    const Vec m = Scale(Add(u, v), 0.5);
+    const Vec m = ((u + v) * 0.5);
     const Vec kids[2][3] = { { u, m, w }, { m, v, w } };
     const double q = 0.5 * area;
     Vec parts[2];
@@ -331,7 +310,7 @@ struct TriangleIntegrator
     {
       culled[k] = this->Culled(kids[k][0], kids[k][1], kids[k][2]);
       parts[k] = culled[k] ? Vec{ 0, 0, 0 } : this->Rule(kids[k][0], kids[k][1], kids[k][2], q);
-      sum = Add(sum, parts[k]);
+      sum = (sum + parts[k]);
     }
     // resolve sigma_b before trusting the error estimate
     const double sbMin = std::min({ a[0] * T.SB[0] + a[1] * T.SB[1] + a[2] * T.SB[2],
@@ -351,7 +330,7 @@ struct TriangleIntegrator
     {
       if (!culled[k])
       {
-        total = Add(total, this->Recurse(kids[k][0], kids[k][1], kids[k][2], parts[k], q, level + 1));
+        total = (total + this->Recurse(kids[k][0], kids[k][1], kids[k][2], parts[k], q, level + 1));
       }
     }
     return total;
@@ -463,7 +442,7 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
     }
     const Vec q1 = Unproject(Minv, c[0] / c[3], c[1] / c[3], c[2] / c[3]);
     const Vec q2 = Unproject(Minv, c[0] / c[3], c[1] / c[3] + 2.0 / h, c[2] / c[3]);
-    return Norm(Sub(q2, q1));
+    return glm::length((q2 - q1));
   };
   std::vector<Triangle> tris;
   auto add = [&](vtkIdType i0, vtkIdType i1, vtkIdType i2) {
@@ -496,17 +475,17 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
         : std::max(
             Clean(tArr ? tArr->GetComponent(ids[k], 0) : this->Thickness) * lengthScale, floorSigma);
     }
-    const Vec n = Cross(Sub(t.P[1], t.P[0]), Sub(t.P[2], t.P[0]));
-    const double nl = Norm(n);
+    const Vec n = glm::cross((t.P[1] - t.P[0]), (t.P[2] - t.P[0]));
+    const double nl = glm::length(n);
     if (!any || !(nl > 0.0) || !std::isfinite(nl))
     {
       return;
     }
-    t.N = Scale(n, 1.0 / nl);
+    t.N = (n * (1.0 / nl));
     t.Area = 0.5 * nl;
-    t.Centre = Scale(Add(Add(t.P[0], t.P[1]), t.P[2]), 1.0 / 3.0);
+    t.Centre = (((t.P[0] + t.P[1]) + t.P[2]) * (1.0 / 3.0));
     t.Radius = std::max(
-      { Norm(Sub(t.P[0], t.Centre)), Norm(Sub(t.P[1], t.Centre)), Norm(Sub(t.P[2], t.Centre)) });
+      { glm::length((t.P[0] - t.Centre)), glm::length((t.P[1] - t.Centre)), glm::length((t.P[2] - t.Centre)) });
     t.Reach = Support * std::max({ t.SB[0], t.SB[1], t.SB[2], t.ST[0], t.ST[1], t.ST[2] });
     tris.push_back(t);
   };
@@ -605,8 +584,8 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
         Ray ray;
         ray.O = Unproject(Minv, nx, ny, -1.0);
         const Vec far = Unproject(Minv, nx, ny, 1.0);
-        const Vec dir = Sub(far, ray.O);
-        ray.V = Scale(dir, 1.0 / Norm(dir));
+        const Vec dir = (far - ray.O);
+        ray.V = (dir * (1.0 / glm::length(dir)));
         ray.T0 = bounded ? 0.0 : -Huge;
         ray.T1 = Huge;
         if (bounded && depth)
@@ -614,7 +593,7 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
           const double dz = depth[static_cast<size_t>(y) * w + x];
           if (dz < 1.0)
           {
-            ray.T1 = std::max(0.0, Dot(Sub(Unproject(Minv, nx, ny, 2.0 * dz - 1.0), ray.O), ray.V));
+            ray.T1 = std::max(0.0, glm::dot((Unproject(Minv, nx, ny, 2.0 * dz - 1.0) - ray.O), ray.V));
           }
         }
         Vec tau{ 0, 0, 0 };
@@ -626,7 +605,7 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
             continue;
           }
           TriangleIntegrator integrator{ t, ray, tol };
-          tau = Add(tau, integrator.Integrate());
+          tau = (tau + integrator.Integrate());
         }
         for (int c = 0; c < 3; ++c)
         {

@@ -18,6 +18,9 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -27,17 +30,13 @@ vtkStandardNewMacro(vtkPlumeVolumeReference);
 
 namespace
 {
-using Vec3 = std::array<double, 3>;
+// GLM for the vector math (double precision; the shaders share nothing with this file)
+using Vec3 = glm::dvec3;
 
-Vec3 Add(const Vec3& a, const Vec3& b) { return { a[0] + b[0], a[1] + b[1], a[2] + b[2] }; }
-Vec3 Sub(const Vec3& a, const Vec3& b) { return { a[0] - b[0], a[1] - b[1], a[2] - b[2] }; }
-Vec3 Mul(const Vec3& a, double s) { return { a[0] * s, a[1] * s, a[2] * s }; }
-double Dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double Len(const Vec3& a) { return std::sqrt(Dot(a, a)); }
-Vec3 Apply3(const double m[9], const Vec3& v)
+/** A row-major 3x3 (VTK's layout) as a GLM matrix (column-major). */
+glm::dmat3 RowMajor(const double m[9])
 {
-  return { m[0] * v[0] + m[1] * v[1] + m[2] * v[2], m[3] * v[0] + m[4] * v[1] + m[5] * v[2],
-    m[6] * v[0] + m[7] * v[1] + m[8] * v[2] };
+  return glm::transpose(glm::make_mat3(m));
 }
 
 // Everything one ray needs, prepared once per Compute().
@@ -183,7 +182,7 @@ struct Setup
     for (int k = 0; k < n; ++k)
     {
       double rgb[3], a, w;
-      this->Transfer(this->Field(Add(p, Mul(e, (k + 0.5) * h)), &w), rgb, a);
+      this->Transfer(this->Field((p + (e * ((k + 0.5) * h))), &w), rgb, a);
       tau += this->Sigma(a) * w * h * worldPerIndex;
     }
     return std::exp(-tau);
@@ -198,14 +197,14 @@ struct Setup
     {
       Vec3 e = { 0, 0, 0 };
       e[a] = 1;
-      g[a] = this->Field(Add(p, e)) - this->Field(Sub(p, e));
+      g[a] = this->Field((p + e)) - this->Field((p - e));
     }
-    Vec3 nrm = Apply3(this->Normal, g);
-    const double l = Len(nrm);
-    nrm = l > 1e-20 ? Mul(nrm, 1.0 / l) : viewDir;
-    if (Dot(nrm, viewDir) < 0)
+    Vec3 nrm = (RowMajor(this->Normal) * g);
+    const double l = glm::length(nrm);
+    nrm = l > 1e-20 ? (nrm * (1.0 / l)) : viewDir;
+    if (glm::dot(nrm, viewDir) < 0)
     {
-      nrm = Mul(nrm, -1.0);
+      nrm = (nrm * -1.0);
     }
     for (int c = 0; c < 3; ++c)
     {
@@ -214,10 +213,10 @@ struct Setup
     for (size_t li = 0; li < this->LightDirs.size(); ++li)
     {
       const Vec3& L = this->LightDirs[li];
-      const double nl = std::max(Dot(nrm, L), 0.0);
-      const Vec3 H = Add(L, viewDir);
-      const double hl = Len(H);
-      const double nh = hl > 1e-6 ? std::max(Dot(nrm, Mul(H, 1.0 / hl)), 0.0) : 0.0;
+      const double nl = std::max(glm::dot(nrm, L), 0.0);
+      const Vec3 H = (L + viewDir);
+      const double hl = glm::length(H);
+      const double nh = hl > 1e-6 ? std::max(glm::dot(nrm, (H * (1.0 / hl))), 0.0) : 0.0;
       const double spec = nh > 0 ? std::pow(nh, this->SpecularPower) : 0.0;
       for (int c = 0; c < 3; ++c)
       {
@@ -232,14 +231,14 @@ struct Setup
     const double nx = 2.0 * (x + 0.5) / this->Width - 1.0;
     const double ny = 2.0 * (y + 0.5) / this->Height - 1.0;
     const Vec3 p0 = this->Unproject(nx, ny, -1.0);
-    const Vec3 d = Sub(this->Unproject(nx, ny, 1.0), p0);
+    const Vec3 d = (this->Unproject(nx, ny, 1.0) - p0);
     double tEnd = 1.0;
     if (this->Depth && !this->Depth->empty())
     {
       const double z = (*this->Depth)[static_cast<size_t>(y) * this->Width + x];
       if (z < 1.0)
       {
-        tEnd = Dot(Sub(this->Unproject(nx, ny, 2.0 * z - 1.0), p0), d) / Dot(d, d);
+        tEnd = glm::dot((this->Unproject(nx, ny, 2.0 * z - 1.0) - p0), d) / glm::dot(d, d);
       }
     }
     double t0, t1;
@@ -247,11 +246,11 @@ struct Setup
     {
       return;
     }
-    const double dlen = Len(d);
-    const double worldPerT = Len(Apply3(this->Linear, d));
+    const double dlen = glm::length(d);
+    const double worldPerT = glm::length((RowMajor(this->Linear) * d));
     const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) * dlen / this->Step)));
     const double h = (t1 - t0) / n;
-    const Vec3 viewDir = Mul(Apply3(this->Linear, d), -1.0 / worldPerT);
+    const Vec3 viewDir = ((RowMajor(this->Linear) * d) * (-1.0 / worldPerT));
 
     if (this->Mode == vtkPlumeVolumeReference::MAXIMUM_INTENSITY)
     {
@@ -259,7 +258,7 @@ struct Setup
       for (int k = 0; k <= n; ++k)
       {
         double w;
-        const double v = this->Field(Add(p0, Mul(d, t0 + k * h)), &w);
+        const double v = this->Field((p0 + (d * (t0 + k * h))), &w);
         if (w > 0.0) // samples with no valid node around do not count
         {
           best = std::max(best, v);
@@ -281,12 +280,12 @@ struct Setup
     if (this->Mode == vtkPlumeVolumeReference::ISOSURFACE)
     {
       double tPrev = t0, w;
-      double fPrev = this->Field(Add(p0, Mul(d, t0)), &w) - this->Iso;
+      double fPrev = this->Field((p0 + (d * t0)), &w) - this->Iso;
       bool prevInside = w > 0.0;
       for (int k = 1; k <= n; ++k)
       {
         const double t = t0 + k * h;
-        const double f = this->Field(Add(p0, Mul(d, t)), &w) - this->Iso;
+        const double f = this->Field((p0 + (d * t)), &w) - this->Iso;
         const bool inside = w > 0.0; // a crossing needs two samples with valid nodes around
         if (inside && prevInside && (fPrev < 0) != (f < 0))
         {
@@ -294,10 +293,10 @@ struct Setup
           for (int it = 0; it < 40; ++it)
           {
             const double tc = 0.5 * (ta + tb);
-            const double fc = this->Field(Add(p0, Mul(d, tc))) - this->Iso;
+            const double fc = this->Field((p0 + (d * tc))) - this->Iso;
             ((fc < 0) == (fPrev < 0) ? ta : tb) = tc;
           }
-          const Vec3 ph = Add(p0, Mul(d, 0.5 * (ta + tb)));
+          const Vec3 ph = (p0 + (d * (0.5 * (ta + tb))));
           double base[3], a, col[3];
           this->Transfer(this->Iso, base, a);
           this->Phong(base, ph, viewDir, col);
@@ -325,10 +324,10 @@ struct Setup
     {
       for (const Vec3& L : this->LightDirs)
       {
-        Vec3 e = Apply3(this->Inverse, L);
-        e = Mul(e, 1.0 / Len(e));
+        Vec3 e = (RowMajor(this->Inverse) * L);
+        e = (e * (1.0 / glm::length(e)));
         lightIndexDirs.push_back(e);
-        lightWorldPerIndex.push_back(Len(Apply3(this->Linear, e)));
+        lightWorldPerIndex.push_back(glm::length((RowMajor(this->Linear) * e)));
       }
     }
     double T = 1.0;
@@ -336,7 +335,7 @@ struct Setup
     const double segment = h * worldPerT;
     for (int k = 0; k < n; ++k)
     {
-      const Vec3 p = Add(p0, Mul(d, t0 + (k + 0.5) * h));
+      const Vec3 p = (p0 + (d * (t0 + (k + 0.5) * h)));
       double rgb[3], a, w;
       this->Transfer(this->Field(p, &w), rgb, a);
       const double sigma = this->Sigma(a) * w;
@@ -598,14 +597,14 @@ bool vtkPlumeVolumeReference::Compute(int width, int height)
     light->GetTransformedPosition(p);
     light->GetTransformedFocalPoint(f);
     Vec3 l = { p[0] - f[0], p[1] - f[1], p[2] - f[2] };
-    const double len = Len(l);
+    const double len = glm::length(l);
     if (!(len > 0) || !std::isfinite(len))
     {
       continue;
     }
     light->GetDiffuseColor(rgb);
     const double k = light->GetIntensity();
-    s.LightDirs.push_back(Mul(l, 1.0 / len));
+    s.LightDirs.push_back((l * (1.0 / len)));
     s.LightColors.push_back({ rgb[0] * k, rgb[1] * k, rgb[2] * k });
   }
   if (s.LightDirs.empty())
@@ -614,7 +613,7 @@ bool vtkPlumeVolumeReference::Compute(int width, int height)
     camera->GetPosition(p);
     camera->GetFocalPoint(f);
     Vec3 l = { p[0] - f[0], p[1] - f[1], p[2] - f[2] };
-    s.LightDirs.push_back(Mul(l, 1.0 / Len(l)));
+    s.LightDirs.push_back((l * (1.0 / glm::length(l))));
     s.LightColors.push_back({ 1, 1, 1 });
   }
   s.Step = this->Step > 0 ? this->Step : 0.125;

@@ -207,3 +207,18 @@ TEST(Coloring, ConstantBulkFallsBackToTheExtremes)
   EXPECT_DOUBLE_EQ(range[0], 300.0);
   EXPECT_DOUBLE_EQ(range[1], 301.5);
 }
+
+TEST(TextColor, ReadableOnAnyBackground)
+{
+  // dark text on light backgrounds, light text on dark ones (WCAG contrast)
+  const double white[3] = { 1, 1, 1 }, paper[3] = { 0.92, 0.92, 0.88 }, grey[3] = { 0.5, 0.5, 0.5 },
+               yellow[3] = { 1, 1, 0 }, dark[3] = { 0.1, 0.1, 0.12 }, blue[3] = { 0, 0, 1 }, black[3] = { 0, 0, 0 };
+  for (const double* light : { white, paper, grey, yellow })
+  {
+    EXPECT_LT(plume::TextColorOn(light)[0], 0.5) << light[0] << " " << light[1] << " " << light[2];
+  }
+  for (const double* deep : { dark, blue, black })
+  {
+    EXPECT_GT(plume::TextColorOn(deep)[0], 0.5) << deep[0] << " " << deep[1] << " " << deep[2];
+  }
+}
