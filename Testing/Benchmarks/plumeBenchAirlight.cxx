@@ -188,7 +188,13 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
   }
   if (job.rfind("down:", 0) == 0)
   {
-    pass->SetDownsampling(std::stoi(job.substr(5))); // low-resolution airlight, upsampled
+    // "down:D" or "down:D:TOL": a low-resolution airlight, upsampled with tolerance TOL.
+    pass->SetDownsampling(std::stoi(job.substr(5)));
+    const size_t colon = job.find(':', 5);
+    if (colon != std::string::npos)
+    {
+      pass->SetUpsamplingTolerance(std::stod(job.substr(colon + 1)));
+    }
   }
   if (job == "floor")
   {
@@ -282,7 +288,7 @@ std::vector<std::string> Jobs(bool quick)
 {
   const std::string half = quick ? "@64" : "@256";
   std::vector<std::string> jobs = { "opaque", "ours", "grey", "shadow", "shadow_rebake", "opaque" + half,
-    "ours" + half, "floor", "copy", "down:2", "down:4" };
+    "ours" + half, "floor", "copy", "down:2", "down:4", "down:2:0.25", "down:4:0.25", "down:2:1", "down:4:1" };
   for (int n : MarchSteps(quick))
   {
     jobs.push_back("march:" + std::to_string(n));
@@ -397,16 +403,17 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
   }
   // The low-resolution airlight (Downsampling D) against the full resolution,
   // and the floor of any full-screen pass on this renderer.
-  for (int d : { 2, 4 })
+  for (const std::string d : { "2", "4", "2:0.25", "4:0.25", "2:1", "4:1" })
   {
-    const auto down = results.find("down:" + std::to_string(d));
+    const auto down = results.find("down:" + d);
     if (down == results.end())
     {
       continue;
     }
     const double downTime = down->second.value("frame_s", 0.0);
     nlohmann::json line = { { "bench", "airlight" },
-      { "case", size + " point+spot, airlight at 1/" + std::to_string(d) + " resolution, upsampled" },
+      { "case", size + " point+spot, airlight at 1/" + d.substr(0, 1) + " resolution, upsampled, tolerance " +
+          (d.size() > 1 ? d.substr(2) : std::string("0.05")) },
       { "ours_s", downTime }, { "peer", "ours at full resolution" }, { "peer_s", oursTime },
       { "ratio", downTime > 0 ? oursTime / downTime : 0.0 }, { "error", down->second.value("error", 0.0) },
       { "peer_error", oursError }, { "error_max", down->second.value("error_max", 0.0) },

@@ -576,7 +576,10 @@ void main()
       exact = false;
     }
   }
-  if (exact)
+  // llvmpipe runs both sides of a divergent `if` for every pixel of a SIMD
+  // block (masked), so an `if (exact)` would cost the exact path everywhere;
+  // a loop whose trip count is 0 in every lane is skipped.
+  for (int k = exact ? 0 : 1; k < 1; ++k)
   {
     airlight = airlightOf(o, r, xs);
   }
