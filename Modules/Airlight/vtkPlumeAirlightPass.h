@@ -15,8 +15,11 @@
  * background colour is fully extinguished and only airlight remains), d(x)
  * the distance from the light, ks the scattering and ka the absorption
  * coefficient, kt = ks + ka, I0 the light's radiant intensity and w the spot
- * factor (1 for point lights). Isotropic phase function 1/(4 pi); single
- * scattering; spot lights can be shadowed by opaque props (below).
+ * factor (1 for point lights). Isotropic phase function 1/(4 pi), or
+ * Henyey-Greenstein (ScatteringAnisotropy g, exact: it moves into the
+ * tables); single scattering; lights can be shadowed by opaque props
+ * (below); the airlight can be computed at a lower resolution and upsampled
+ * with error control (Downsampling).
  *
  * The integral in closed form (Sun et al. 2005, seed 001, derived afresh in
  * Documentation/Airlight.md): with h the distance from the light to the ray's
