@@ -118,42 +118,66 @@ double Integrate(const F& f, double a, double b, double tol)
   return sum;
 }
 
-std::vector<double> ComputeTable(int n)
+// The table coordinates' stretch for the Henyey-Greenstein peak (see
+// GetScatteringTable): 0 for g = 0, large as |g| -> 1.
+double PhaseStretch(double g)
+{
+  return 2.0 * std::fabs(g) / (1.0 - std::fabs(g));
+}
+
+std::vector<double> ComputeTable(int n, double g)
 {
   std::vector<double> table(2 * static_cast<size_t>(n) * n);
   const double tol = 1e-11;
+  // The head function H carries the forward peak (g > 0), the tail G the
+  // backward one (g < 0): each gets the stretch of the peak it has.
+  const double kH = g > 0.0 ? PhaseStretch(g) : 0.0;
+  const double kG = g < 0.0 ? PhaseStretch(g) : 0.0;
+  const double a = (1.0 + g) * (1.0 + g);
+  const double b = (1.0 - g) * (1.0 - g);
+  const double c = 1.0 - g * g;
   // Rows are independent: vtkSMPTools (threads with the STDThread backend).
   vtkSMPTools::For(0, n, [&](int rowBegin, int rowEnd) {
   for (int j = rowBegin; j < rowEnd; ++j)
   {
-    const double eps = static_cast<double>(j) / (n - 1);
+    // Row j: u = j/(n-1); tau (or eps) = u / (1 + k (1 - u)) inverts u = tau (1+k) / (1 + k tau).
+    const double u = static_cast<double>(j) / (n - 1);
+    const double tau = u / (1.0 + kH * (1.0 - u));
+    const double eps = u / (1.0 + kG * (1.0 - u));
+    const double t2 = tau * tau;
     const double e2 = eps * eps;
     for (int i = 0; i < n; ++i)
     {
       double* out = &table[2 * (static_cast<size_t>(j) * n + i)];
       if (i == n - 1)
       {
-        // p = 1, m = infinity: (1+m) times the integrals tend to the integrands at 0.
-        out[0] = 1.0;
-        out[1] = 1.0 / (1.0 + e2);
+        // p = 1, m = infinity: m times the integrals tend to the integrands at 0.
+        out[0] = (1.0 + g) / ((1.0 - g) * (1.0 - g)) / (1.0 + kH);
+        out[1] = (1.0 + kG) * c * std::sqrt(e2 + 1.0) / std::pow(a + b * e2, 1.5);
         continue;
       }
-      // m = p^2 / (1 - p^2): G has a k log k term at m = 0 that a uniform grid in
-      // m / (1 + m) would only resolve to first order.
+      // m' = p^2 / (1 - p^2): G has a k log k term at m = 0 that a uniform grid in
+      // m / (1 + m) would only resolve to first order. m = m' (1 + kH) for H, m' / (1 + kG) for G.
       const double p = static_cast<double>(i) / (n - 1);
-      const double m = p * p / (1.0 - p * p);
-      auto h = [m, e2](double q) { return std::exp(-m * q) / (1.0 + e2 * q * q); };
-      // y = z / (1 - z) maps [0, inf) to [0, 1); the integrand stays bounded.
-      auto g = [m, e2](double z) {
+      const double mp = p * p / (1.0 - p * p);
+      const double mH = mp * (1.0 + kH);
+      const double mG = mp / (1.0 + kG);
+      // H: the phase 4 pi p_HG times 1 / (1 + s^2), s = tau q (g = 0: 1 / (1 + s^2)).
+      auto h = [mH, t2, a, b, c](double q) {
+        const double s2 = t2 * q * q;
+        return std::exp(-mH * q) * c * std::sqrt(1.0 + s2) / std::pow(a * s2 + b, 1.5);
+      };
+      // G: y = z / (1 - z) maps [0, inf) to [0, 1); the integrand stays bounded.
+      auto gg = [mG, e2, a, b, c](double z) {
         if (z >= 1.0)
         {
-          return m > 0.0 ? 0.0 : 1.0;
+          return mG > 0.0 ? 0.0 : c / (a * std::sqrt(a));
         }
-        const double w = 1.0 - z;
-        return std::exp(-m * z / w) / (e2 * w * w + 1.0);
+        const double w = 1.0 - z; // 1 + y = 1 / w
+        return std::exp(-mG * z / w) * c * std::sqrt(e2 * w * w + 1.0) / std::pow(a + b * e2 * w * w, 1.5);
       };
-      out[0] = (1.0 + m) * Integrate(h, 0.0, 1.0, tol / (1.0 + m));
-      out[1] = (1.0 + m) * Integrate(g, 0.0, 1.0, tol / (1.0 + m));
+      out[0] = (1.0 + mp) * Integrate(h, 0.0, 1.0, tol / (1.0 + mp));
+      out[1] = (1.0 + mp) * Integrate(gg, 0.0, 1.0, tol / (1.0 + mp));
     }
   }
   });
@@ -162,15 +186,15 @@ std::vector<double> ComputeTable(int n)
 }
 
 //------------------------------------------------------------------------------
-const std::vector<double>& vtkPlumeAirlightPass::GetScatteringTable(int n)
+const std::vector<double>& vtkPlumeAirlightPass::GetScatteringTable(int n, double g)
 {
   static std::mutex mutex;
-  static std::map<int, std::unique_ptr<std::vector<double>>> tables;
+  static std::map<std::pair<int, double>, std::unique_ptr<std::vector<double>>> tables;
   std::lock_guard<std::mutex> lock(mutex);
-  auto& slot = tables[n];
+  auto& slot = tables[{ n, g }];
   if (!slot)
   {
-    slot.reset(new std::vector<double>(ComputeTable(n)));
+    slot.reset(new std::vector<double>(ComputeTable(n, g)));
   }
   return *slot;
 }
@@ -199,12 +223,29 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Panel("Medium")
       .Doc("Multiplies every positional light's intensity for the airlight only (inverse-square falloff).")
       .Bind(&T::SetIntensityScale, &T::GetIntensityScale);
+    t.Real("anisotropy", "ScatteringAnisotropy", 0.0)
+      .Between(-0.95, 0.95)
+      .Panel("Medium")
+      .Doc("Henyey-Greenstein phase asymmetry g: > 0 forward scattering (glow around lights seen through the medium), < 0 backward, 0 isotropic. Exact (one scattering table per g, built once on the CPU).")
+      .Bind(&T::SetScatteringAnisotropy, &T::GetScatteringAnisotropy);
     t.Integer("spot_steps", "SpotSteps", 8)
       .Between(1, 256)
       .Panel("Medium")
       .Advanced()
       .Doc("Sub-intervals per spot light cone for its exponent weight, per unit of sqrt(exponent/2) (one when the exponent is 0).")
       .Bind(&T::SetSpotSteps, &T::GetSpotSteps);
+    t.Integer("downsampling", "Downsampling", 1)
+      .Between(1, 8)
+      .Panel("Medium")
+      .Advanced()
+      .Doc("Airlight computed once per D x D pixels and upsampled (bilinear where the four samples share the pixel's surface and agree within upsampling_tolerance, exact elsewhere); 1: every pixel (accurate).")
+      .Bind(&T::SetDownsampling, &T::GetDownsampling);
+    t.Real("upsampling_tolerance", "UpsamplingTolerance", 0.05)
+      .Between(0.0, 1.0)
+      .Panel("Medium")
+      .Advanced()
+      .Doc("With downsampling: the largest relative spread of the four samples that is interpolated (0: every pixel exact).")
+      .Bind(&T::SetUpsamplingTolerance, &T::GetUpsamplingTolerance);
     t.Integer("table_resolution", "TableResolution", 64)
       .Between(8, 2048)
       .Panel("Medium")
@@ -271,7 +312,10 @@ void vtkPlumeAirlightPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Absorption: " << this->Absorption[0] << " " << this->Absorption[1] << " "
      << this->Absorption[2] << "\n";
   os << indent << "IntensityScale: " << this->IntensityScale << "\n";
+  os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
   os << indent << "SpotSteps: " << this->SpotSteps << "\n";
+  os << indent << "Downsampling: " << this->Downsampling << "\n";
+  os << indent << "UpsamplingTolerance: " << this->UpsamplingTolerance << "\n";
   os << indent << "TableResolution: " << this->TableResolution << "\n";
   os << indent << "MarchSteps: " << this->MarchSteps << "\n";
   os << indent << "Shadows: " << this->Shadows << "\n";
@@ -308,6 +352,16 @@ void vtkPlumeAirlightPass::SetAbsorption(double r, double g, double b)
 {
   if (SetCoefficients(this->Absorption, r, g, b))
   {
+    this->Modified();
+  }
+}
+
+void vtkPlumeAirlightPass::SetScatteringAnisotropy(double g)
+{
+  const double v = std::isnan(g) ? 0.0 : std::min(std::max(g, -0.95), 0.95);
+  if (v != this->ScatteringAnisotropy)
+  {
+    this->ScatteringAnisotropy = v;
     this->Modified();
   }
 }
@@ -351,10 +405,27 @@ bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w,
     this->FrameBuffer = vtkOpenGLFramebufferObject::New();
     this->FrameBuffer->SetContext(renWin);
   }
-  if (!this->TableTexture || this->UploadedTableResolution != this->TableResolution)
+  if (this->Downsampling > 1)
+  {
+    const int lw = (w + this->Downsampling - 1) / this->Downsampling;
+    const int lh = (h + this->Downsampling - 1) / this->Downsampling;
+    if (!this->LowTexture)
+    {
+      this->LowTexture = vtkTextureObject::New();
+      this->LowTexture->SetContext(renWin);
+      this->LowTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->LowTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->LowTexture->Allocate2D(lw, lh, 4, VTK_FLOAT);
+      this->LowFrameBuffer = vtkOpenGLFramebufferObject::New();
+      this->LowFrameBuffer->SetContext(renWin);
+    }
+    this->LowTexture->Resize(lw, lh);
+  }
+  if (!this->TableTexture || this->UploadedTableResolution != this->TableResolution ||
+    this->UploadedTableAnisotropy != this->ScatteringAnisotropy)
   {
     const int n = this->TableResolution;
-    const std::vector<double>& table = GetScatteringTable(n);
+    const std::vector<double>& table = GetScatteringTable(n, this->ScatteringAnisotropy);
     std::vector<float> data(table.begin(), table.end());
     if (!this->TableTexture)
     {
@@ -371,6 +442,7 @@ bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w,
       return false;
     }
     this->UploadedTableResolution = n;
+    this->UploadedTableAnisotropy = this->ScatteringAnisotropy;
   }
   return true;
 }
@@ -764,6 +836,16 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   program->SetUniformi("SceneDepth", this->DepthTexture->GetTextureUnit());
   program->SetUniformi("Table", this->TableTexture->GetTextureUnit());
   program->SetUniformi("TableSize", this->UploadedTableResolution);
+  {
+    const double g = this->UploadedTableAnisotropy;
+    const float stretch[2] = { static_cast<float>(g > 0.0 ? PhaseStretch(g) : 0.0),
+      static_cast<float>(g < 0.0 ? PhaseStretch(g) : 0.0) };
+    program->SetUniform2f("PhaseStretch", stretch);
+    if (this->MarchSteps > 0)
+    {
+      program->SetUniformf("Anisotropy", static_cast<float>(g));
+    }
+  }
   const float origin[2] = { static_cast<float>(x), static_cast<float>(y) };
   program->SetUniform2f("ViewportOrigin", origin);
   vtkNew<vtkMatrix4x4> inverse;
@@ -771,6 +853,10 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   inverse->Invert();
   plume::SetUniformMatrix4x4(program, "InverseProjection", inverse->GetData());
   program->SetUniformi("Perspective", camera->GetParallelProjection() ? 0 : 1);
+  const float viewportSize[2] = { static_cast<float>(w), static_cast<float>(h) };
+  program->SetUniform2f("ViewportSize", viewportSize);
+  program->SetUniformi("Downsampling", this->Downsampling);
+  program->SetUniformf("UpsamplingTolerance", static_cast<float>(this->UpsamplingTolerance));
   float ks[3], kt[3];
   for (int c = 0; c < 3; ++c)
   {
@@ -841,9 +927,33 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_ALWAYS);
   ostate->vtkglDepthMask(GL_TRUE);
+  const bool low = this->Downsampling > 1 && this->LowTexture;
+  if (low)
+  {
+    // The airlight alone at one sample per Downsampling^2 pixels.
+    const int lw = static_cast<int>(this->LowTexture->GetWidth());
+    const int lh = static_cast<int>(this->LowTexture->GetHeight());
+    ostate->PushFramebufferBindings();
+    this->LowFrameBuffer->Bind();
+    this->LowFrameBuffer->AddColorAttachment(0, this->LowTexture);
+    this->LowFrameBuffer->ActivateDrawBuffers(1);
+    ostate->vtkglViewport(0, 0, lw, lh);
+    ostate->vtkglScissor(0, 0, lw, lh);
+    program->SetUniformi("Mode", 1);
+    this->Quad->Render();
+    this->LowFrameBuffer->RemoveColorAttachments(1);
+    ostate->PopFramebufferBindings();
+    this->LowTexture->Activate();
+    program->SetUniformi("LowRes", this->LowTexture->GetTextureUnit());
+  }
+  program->SetUniformi("Mode", low ? 2 : 0);
   ostate->vtkglViewport(x, y, w, h);
   ostate->vtkglScissor(x, y, w, h);
   this->Quad->Render();
+  if (low)
+  {
+    this->LowTexture->Deactivate();
+  }
   this->ColorTexture->Deactivate();
   this->DepthTexture->Deactivate();
   this->TableTexture->Deactivate();
@@ -861,7 +971,7 @@ void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
   delete this->Quad;
   this->Quad = nullptr;
   this->ProgramKey.clear();
-  for (vtkTextureObject** t : { &this->ColorTexture, &this->DepthTexture, &this->TableTexture })
+  for (vtkTextureObject** t : { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->LowTexture })
   {
     if (*t)
     {
@@ -874,9 +984,12 @@ void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     m->Release();
   }
-  if (this->FrameBuffer)
+  for (vtkOpenGLFramebufferObject** f : { &this->FrameBuffer, &this->LowFrameBuffer })
   {
-    this->FrameBuffer->Delete();
-    this->FrameBuffer = nullptr;
+    if (*f)
+    {
+      (*f)->Delete();
+      *f = nullptr;
+    }
   }
 }

@@ -15,8 +15,11 @@
  * background colour is fully extinguished and only airlight remains), d(x)
  * the distance from the light, ks the scattering and ka the absorption
  * coefficient, kt = ks + ka, I0 the light's radiant intensity and w the spot
- * factor (1 for point lights). Isotropic phase function 1/(4 pi); single
- * scattering; spot lights can be shadowed by opaque props (below).
+ * factor (1 for point lights). Isotropic phase function 1/(4 pi), or
+ * Henyey-Greenstein (ScatteringAnisotropy g, exact: it moves into the
+ * tables); single scattering; lights can be shadowed by opaque props
+ * (below); the airlight can be computed at a lower resolution and upsampled
+ * with error control (Downsampling).
  *
  * The integral in closed form (Sun et al. 2005, seed 001, derived afresh in
  * Documentation/Airlight.md): with h the distance from the light to the ray's
@@ -118,6 +121,20 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Henyey-Greenstein phase function's asymmetry g, clamped to [-0.95, 0.95]
+   * (NaN counts as 0): p(a) = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos a)^1.5), a
+   * the scattering angle; g > 0 scatters forward (a glow around lights seen
+   * through the medium), g < 0 backward, 0 is the isotropic 1/(4 pi). The
+   * closed form stays exact: the phase depends only on the angle seen from
+   * the light, its integration variable, so it moves into the table (one
+   * table per g, built once per process on the CPU). Default 0.
+   */
+  void SetScatteringAnisotropy(double g);
+  vtkGetMacro(ScatteringAnisotropy, double);
+  ///@}
+
+  ///@{
   /** Multiplies every light's intensity for the airlight only (surface shading stays VTK's). Default 1. */
   vtkSetClampMacro(IntensityScale, double, 0.0, 1e30);
   vtkGetMacro(IntensityScale, double);
@@ -130,6 +147,30 @@ public:
    */
   vtkSetClampMacro(SpotSteps, int, 1, 256);
   vtkGetMacro(SpotSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Airlight resolution divisor D: 1 computes the airlight at every pixel
+   * (the accurate option); D > 1 computes it once per D x D pixels into a
+   * low-resolution buffer and upsamples it with error control: a pixel takes
+   * the bilinear interpolation of its four samples only if all four lie on
+   * its surface (distance within 2 %) and differ by at most
+   * UpsamplingTolerance of the largest, else it is computed exactly
+   * (silhouettes, glows, cone and shadow edges). Default 1.
+   */
+  vtkSetClampMacro(Downsampling, int, 1, 8);
+  vtkGetMacro(Downsampling, int);
+  ///@}
+
+  ///@{
+  /**
+   * With Downsampling > 1: the largest relative spread (max - min) / max of
+   * the four low-resolution samples, per channel, that is interpolated; 0
+   * computes every pixel exactly. Default 0.05.
+   */
+  vtkSetClampMacro(UpsamplingTolerance, double, 0.0, 1.0);
+  vtkGetMacro(UpsamplingTolerance, double);
   ///@}
 
   ///@{
@@ -207,15 +248,22 @@ public:
   bool HasMedium() const;
 
   /**
-   * The scattering table for resolution n (computed once per n in double
-   * precision; shared, thread-safe): n*n pairs (H, G) row-major, row j =
-   * eps = j/(n-1), column i = p = i/(n-1), m = p^2/(1-p^2), storing
-   *   H = (1+m) * integral_0^1 exp(-m q) / (1 + eps^2 q^2) dq,
-   *   G = (1+m) * integral_0^inf exp(-m y) / (eps^2 + (1+y)^2) dy,
-   * each to an absolute accuracy of 1e-10 (adaptive Simpson). Column p = 1
-   * holds the limits H = 1, G = 1/(1+eps^2).
+   * The scattering table for resolution n and Henyey-Greenstein g (computed
+   * once per (n, g) in double precision; shared, thread-safe): n*n pairs
+   * (H, G) row-major, row j: u = j/(n-1), column i: p = i/(n-1),
+   * m' = p^2/(1-p^2), storing
+   *   (1+m') H(m, tau),  m = m' (1 + kH), tau = u / (1 + kH (1 - u)),
+   *   (1+m') G(m, eps),  m = m' / (1 + kG), eps = u / (1 + kG (1 - u)),
+   *   H(m, tau) = integral_0^1 exp(-m q) P(tau q) / (1 + tau^2 q^2) dq,
+   *   G(m, eps) = integral_0^inf exp(-m y) P((1+y)/eps) / (eps^2 + (1+y)^2) dy,
+   * P(s) = 4 pi p_HG at cos a = (1 - s^2)/(1 + s^2), i.e.
+   * P(s) = (1-g^2) (1+s^2)^1.5 / ((1+g)^2 s^2 + (1-g)^2)^1.5 (1 for g = 0);
+   * kH = 2g/(1-g) for g > 0 (else 0) and kG = 2|g|/(1-|g|) for g < 0 (else
+   * 0) stretch the table where the phase's peak is (width (1-|g|)/(1+|g|)
+   * in tau or eps). Each value to an absolute accuracy of 1e-10 (adaptive
+   * Simpson). Column p = 1 holds the limits m = inf.
    */
-  static const std::vector<double>& GetScatteringTable(int n);
+  static const std::vector<double>& GetScatteringTable(int n, double g = 0.0);
 
 protected:
   vtkPlumeAirlightPass();
@@ -226,7 +274,10 @@ protected:
   double Scattering[3];
   double Absorption[3];
   double IntensityScale = 1.0;
+  double ScatteringAnisotropy = 0.0;
   int SpotSteps = 8;
+  int Downsampling = 1;
+  double UpsamplingTolerance = 0.05;
   int TableResolution = 64;
   int MarchSteps = 0;
   bool Shadows = true;
@@ -247,7 +298,10 @@ protected:
   vtkTextureObject* ColorTexture = nullptr;
   vtkTextureObject* DepthTexture = nullptr;
   vtkTextureObject* TableTexture = nullptr;
+  vtkOpenGLFramebufferObject* LowFrameBuffer = nullptr; // Downsampling > 1
+  vtkTextureObject* LowTexture = nullptr;
   int UploadedTableResolution = 0;
+  double UploadedTableAnisotropy = 0.0;
   vtkOpenGLQuadHelper* Quad = nullptr;
   std::string ProgramKey; // the variant Quad was built for
 

@@ -208,6 +208,7 @@ void vtkPlumeAirlightReference::ComputeRay(
     airlight[c] = 0.0;
   }
   const bool infinite = std::isinf(distance);
+  const double hg = this->ScatteringAnisotropy;
   for (const Light& light : this->Lights)
   {
     const glm::dvec3 L(light.Position[0], light.Position[1], light.Position[2]);
@@ -244,6 +245,13 @@ void vtkPlumeAirlightReference::ComputeRay(
       {
         const double cosAngle = d > 0.0 ? glm::dot(v, axis) / d : 1.0;
         w = cosAngle >= light.CosCone ? std::pow(std::max(cosAngle, 0.0), light.Exponent) : 0.0;
+      }
+      if (hg != 0.0 && d > 0.0)
+      {
+        // Henyey-Greenstein relative to the isotropic 1/(4 pi) already in coef:
+        // the light travels along v / d, the eye receives along -r.
+        const double cosScatter = -glm::dot(v, r) / d;
+        w *= (1.0 - hg * hg) / std::pow(1.0 + hg * hg - 2.0 * hg * cosScatter, 1.5);
       }
       RGB value;
       for (int c = 0; c < 3; ++c)

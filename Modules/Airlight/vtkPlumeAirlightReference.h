@@ -51,6 +51,17 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Henyey-Greenstein asymmetry g of the phase function, evaluated directly
+   * at each point: p = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos a)^1.5), cos a =
+   * the cosine between the light's travel direction (light -> point) and the
+   * direction back to the eye. Default 0 (isotropic, 1/(4 pi)).
+   */
+  vtkSetMacro(ScatteringAnisotropy, double);
+  vtkGetMacro(ScatteringAnisotropy, double);
+  ///@}
+
+  ///@{
   /** Relative tolerance of the adaptive quadrature. Default 1e-9. */
   vtkSetMacro(RelativeTolerance, double);
   vtkGetMacro(RelativeTolerance, double);
@@ -114,6 +125,7 @@ protected:
   double Scattering[3] = { 0, 0, 0 };
   double Absorption[3] = { 0, 0, 0 };
   double IntensityScale = 1.0;
+  double ScatteringAnisotropy = 0.0;
   double RelativeTolerance = 1e-9;
   std::vector<Light> Lights;
 

@@ -186,7 +186,34 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
   {
     pass->SetMarchSteps(std::stoi(job.substr(13)));
   }
+  if (job.rfind("down:", 0) == 0)
+  {
+    // "down:D" or "down:D:TOL": a low-resolution airlight, upsampled with tolerance TOL.
+    pass->SetDownsampling(std::stoi(job.substr(5)));
+    const size_t colon = job.find(':', 5);
+    if (colon != std::string::npos)
+    {
+      pass->SetUpsamplingTolerance(std::stod(job.substr(colon + 1)));
+    }
+  }
+  if (job == "floor")
+  {
+    // The pass with a medium but no positional light: its framebuffer, the
+    // full-screen pass and the extinction, no airlight (the pass's floor).
+    vtkLightCollection* lights = renderer->GetLights();
+    for (int k = 0; k < lights->GetNumberOfItems(); ++k)
+    {
+      vtkLight::SafeDownCast(lights->GetItemAsObject(k))->SetPositional(false);
+    }
+  }
+  vtkNew<vtkFramebufferPass> copy;
   renderer->SetPass(pass);
+  if (job == "copy")
+  {
+    // VTK's own trivial full-screen pass: the scene into a framebuffer, copied to the window.
+    copy->SetDelegatePass(steps);
+    renderer->SetPass(copy);
+  }
   std::vector<double> times;
   vtkLight* spot = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(1));
   for (int f = 0; f < frames + 2; ++f)
@@ -206,7 +233,7 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
   }
   nlohmann::json result = { { "frame_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() },
     { "shadowed_lights", pass->GetNumberOfShadowedLights() }, { "bakes", pass->GetNumberOfShadowMapBakes() } };
-  if (job == "opaque" || job == "shadow_rebake")
+  if (job == "opaque" || job == "shadow_rebake" || job == "floor" || job == "copy")
   {
     return result;
   }
@@ -261,7 +288,7 @@ std::vector<std::string> Jobs(bool quick)
 {
   const std::string half = quick ? "@64" : "@256";
   std::vector<std::string> jobs = { "opaque", "ours", "grey", "shadow", "shadow_rebake", "opaque" + half,
-    "ours" + half };
+    "ours" + half, "floor", "copy", "down:2", "down:4", "down:2:0.25", "down:4:0.25", "down:2:1", "down:4:1" };
   for (int n : MarchSteps(quick))
   {
     jobs.push_back("march:" + std::to_string(n));
@@ -373,6 +400,44 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
       { "added_ms", 1e3 * added }, { "added_half_ms", 1e3 * addedHalf }, { "per_pixel_ns", 1e9 * perPixel },
       { "fixed_ms", 1e3 * fixed }, { "per_pixel_share", added > 0 ? perPixel * n / added : 0.0 },
       { "peak_rss_mb", ours->second.value("peak_rss_mb", 0.0) } });
+  }
+  // The low-resolution airlight (Downsampling D) against the full resolution,
+  // and the floor of any full-screen pass on this renderer.
+  for (const std::string d : { "2", "4", "2:0.25", "4:0.25", "2:1", "4:1" })
+  {
+    const auto down = results.find("down:" + d);
+    if (down == results.end())
+    {
+      continue;
+    }
+    const double downTime = down->second.value("frame_s", 0.0);
+    nlohmann::json line = { { "bench", "airlight" },
+      { "case", size + " point+spot, airlight at 1/" + d.substr(0, 1) + " resolution, upsampled, tolerance " +
+          (d.size() > 1 ? d.substr(2) : std::string("0.05")) },
+      { "ours_s", downTime }, { "peer", "ours at full resolution" }, { "peer_s", oursTime },
+      { "ratio", downTime > 0 ? oursTime / downTime : 0.0 }, { "error", down->second.value("error", 0.0) },
+      { "peer_error", oursError }, { "error_max", down->second.value("error_max", 0.0) },
+      { "peer_error_max", ours->second.value("error_max", 0.0) },
+      { "peak_rss_mb", down->second.value("peak_rss_mb", 0.0) } };
+    if (opaque != results.end())
+    {
+      line["added_ms"] = 1e3 * (downTime - opaque->second.value("frame_s", 0.0));
+    }
+    lines.push_back(line);
+  }
+  const auto floorJob = results.find("floor");
+  const auto copyJob = results.find("copy");
+  if (opaque != results.end() && floorJob != results.end() && copyJob != results.end())
+  {
+    const double opaqueTime = opaque->second.value("frame_s", 0.0);
+    lines.push_back({ { "bench", "airlight" },
+      { "case", size + " floor: the pass without lights vs VTK's framebuffer copy" },
+      { "ours_s", floorJob->second.value("frame_s", 0.0) }, { "peer", "vtkFramebufferPass (scene + full-screen copy)" },
+      { "peer_s", copyJob->second.value("frame_s", 0.0) },
+      { "ratio", copyJob->second.value("frame_s", 0.0) / std::max(floorJob->second.value("frame_s", 0.0), 1e-9) },
+      { "added_ms", 1e3 * (floorJob->second.value("frame_s", 0.0) - opaqueTime) },
+      { "peer_added_ms", 1e3 * (copyJob->second.value("frame_s", 0.0) - opaqueTime) },
+      { "peak_rss_mb", floorJob->second.value("peak_rss_mb", 0.0) } });
   }
   const auto grey = results.find("grey");
   if (grey != results.end())

@@ -19,9 +19,19 @@ uniform sampler2D SceneColor;
 uniform sampler2D SceneDepth;
 uniform sampler2D Table;      // RG32F, TableSize^2: (1+m) H and (1+m) G, see vtkPlumeAirlightPass.h
 uniform int TableSize;
+uniform vec2 PhaseStretch;    // (k of H, k of G): 0 for the isotropic phase
+uniform float Anisotropy;     // Henyey-Greenstein g (the brute-force march only)
 uniform vec2 ViewportOrigin;  // window pixels of the viewport's lower-left corner
 uniform mat4 InverseProjection; // NDC -> eye coordinates
 uniform int Perspective;      // 1: rays start at the eye; 0: at the near plane
+uniform vec2 ViewportSize;    // w, h of the full-resolution viewport
+// Mode 0: full resolution; 1: the airlight alone into the low-resolution
+// target (one sample per Downsampling^2 pixels); 2: the frame, the airlight
+// upsampled from LowRes where that is safe (see main).
+uniform int Mode;
+uniform int Downsampling;
+uniform sampler2D LowRes;
+uniform float UpsamplingTolerance;
 
 uniform vec3 KappaS;
 uniform vec3 KappaT;
@@ -78,14 +88,30 @@ uniform vec3 ShadowLight3;
 const float INV_2PI = 0.15915494309189535;
 const float HUGE = 1e20;
 
-// Bilinear look-up of both tables at (m, eps): one filtered fetch, texel
-// centres at (i + 0.5)/N (GL_LINEAR on the RG32F texture).
-vec2 lookup(float m, float eps)
+// Bilinear look-up of one table at (m, tau or eps): one filtered fetch, texel
+// centres at (i + 0.5)/N (GL_LINEAR on the RG32F texture). The coordinates
+// are p = sqrt(m' / (1 + m')), m' = m * mScale, and u = tau (1 + k) / (1 + k tau)
+// (k = 0 and mScale = 1 for the isotropic phase; for Henyey-Greenstein they
+// stretch the table around the phase's peak, see vtkPlumeAirlightPass.h).
+// Returns the function itself: the texel holds (1 + m') times it.
+float lookup(float m, float tau, float mScale, float k, int channel)
 {
-  float p = sqrt(m / (1.0 + m)); // m in [0, inf) -> p in [0, 1], finer near m = 0
+  float ms = m * mScale;
+  float p = sqrt(ms / (1.0 + ms)); // m in [0, inf) -> p in [0, 1], finer near m = 0
+  float u = tau * (1.0 + k) / (1.0 + k * tau);
   float n1 = float(TableSize - 1);
-  vec2 c = (clamp(vec2(p, eps), 0.0, 1.0) * n1 + 0.5) / float(TableSize);
-  return texture(Table, c).rg;
+  vec2 c = (clamp(vec2(p, u), 0.0, 1.0) * n1 + 0.5) / float(TableSize);
+  return texture(Table, c)[channel] / (1.0 + ms);
+}
+
+// H(m, tau) and G(m, eps) of the header.
+float lookupH(float m, float tau)
+{
+  return lookup(m, tau, 1.0 / (1.0 + PhaseStretch.x), PhaseStretch.x, 0);
+}
+float lookupG(float m, float eps)
+{
+  return lookup(m, eps, 1.0 + PhaseStretch.y, PhaseStretch.y, 1);
 }
 
 // P_head(t) without the factor ks I0/(2 pi) exp(-kt tc), for t <= 0, per channel.
@@ -97,14 +123,12 @@ vec3 headPotential(float t, float h)
   float hh = h * (h / dm);      // = t + d without cancellation
 #ifdef GREY
   // kt is the same in R, G and B: one look-up serves the three channels.
-  float m = KappaT.x * hh;
-  return vec3(lookup(m, tau).x / ((1.0 + m) * dm));
+  return vec3(lookupH(KappaT.x * hh, tau) / dm);
 #else
   vec3 r;
   for (int c = 0; c < 3; ++c)
   {
-    float m = KappaT[c] * hh;
-    r[c] = lookup(m, tau).x / ((1.0 + m) * dm);
+    r[c] = lookupH(KappaT[c] * hh, tau) / dm;
   }
   return r;
 #endif
@@ -121,14 +145,12 @@ vec3 tailPotential(float t, float h, float x)
   float dp = max(t + d, 1e-30);
   float eps = min(h / dp, 1.0);
 #ifdef GREY
-  float m = KappaT.x * dp;
-  return vec3(exp(-KappaT.x * (x + d)) * lookup(m, eps).y / ((1.0 + m) * dp));
+  return vec3(exp(-KappaT.x * (x + d)) * lookupG(KappaT.x * dp, eps) / dp);
 #else
   vec3 r;
   for (int c = 0; c < 3; ++c)
   {
-    float m = KappaT[c] * dp;
-    r[c] = exp(-KappaT[c] * (x + d)) * lookup(m, eps).y / ((1.0 + m) * dp);
+    r[c] = exp(-KappaT[c] * (x + d)) * lookupG(KappaT[c] * dp, eps) / dp;
   }
   return r;
 #endif
@@ -353,11 +375,15 @@ vec3 shadowedMarch(vec3 o, vec3 r, vec2 span, float tc, float h, int l, float ex
         vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
         w = pow(max(dot(dir, LightAxis[l]), 0.0), exponent);
       }
-      unit += w * max(phiB - phiA, vec3(0.0));
+      // Not clamped per step: the table's interpolation error can make a
+      // short step's difference slightly negative, and clamping each step
+      // would add that error up (with a strongly peaked phase, 2 % of the
+      // range); unclamped, the lit steps telescope. The sum is clamped.
+      unit += w * (phiB - phiA);
     }
     phiA = phiB;
   }
-  return unit;
+  return max(unit, vec3(0.0));
 }
 //PLUME::ENDIF
 
@@ -393,37 +419,18 @@ vec3 march(vec3 o, vec3 r, float xs, int l)
       w *= lit(LightShadow[l], o + x * r);
     }
 //PLUME::ENDIF
+    // Henyey-Greenstein times 4 pi; cos(scattering angle) = -dot(v, r) / d.
+    float g = Anisotropy;
+    w *= (1.0 - g * g) / pow(max(1.0 + g * g + 2.0 * g * dot(v, r) / d, 1e-30), 1.5);
     sum += w * exp(-KappaT * (x + d)) / d2;
   }
   return 0.5 * dx * sum;
 }
 #endif
 
-void main()
+// The airlight of the view ray o + x r, x in [0, xs], summed over the lights.
+vec3 airlightOf(vec3 o, vec3 r, float xs)
 {
-  ivec2 pixel = ivec2(gl_FragCoord.xy - ViewportOrigin);
-  vec4 color = texelFetch(SceneColor, pixel, 0);
-  float depth = texelFetch(SceneDepth, pixel, 0).r;
-  gl_FragDepth = depth;
-
-  // The view ray in eye coordinates.
-  vec2 ndc = texCoord * 2.0 - 1.0; // the pixel's centre
-  vec4 pn = InverseProjection * vec4(ndc, -1.0, 1.0);
-  vec4 pf = InverseProjection * vec4(ndc, 1.0, 1.0);
-  vec3 nearPoint = pn.xyz / pn.w;
-  vec3 farPoint = pf.xyz / pf.w;
-  vec3 o = Perspective == 1 ? vec3(0.0) : nearPoint;
-  vec3 r = normalize(farPoint - o);
-  float xs = 1.0 / 0.0; // nothing drawn: the ray runs through the medium to infinity
-  if (depth < 1.0)
-  {
-    vec4 ps = InverseProjection * vec4(ndc, 2.0 * depth - 1.0, 1.0);
-    xs = length(ps.xyz / ps.w - o);
-  }
-
-  vec3 transmittance = isinf(xs) ? vec3(0.0) : exp(-KappaT * xs);
-  // A channel with kt = 0 keeps its colour even at infinity.
-  transmittance = mix(transmittance, vec3(1.0), vec3(equal(KappaT, vec3(0.0))));
   vec3 airlight = vec3(0.0);
   for (int l = 0; l < NumberOfLights; ++l)
   {
@@ -480,14 +487,101 @@ void main()
           vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
           float w = pow(max(dot(dir, LightAxis[l]), 0.0), exponent);
           vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
-          unit += w * max(phiB - phiA, vec3(0.0));
+          unit += w * (phiB - phiA); // not clamped per step, see shadowedMarch
           phiA = phiB;
         }
+        unit = max(unit, vec3(0.0));
       }
 //PLUME::ENDIF
     }
 #endif
     airlight += min(KappaS * LightI0[l] * INV_2PI * unit, vec3(HUGE));
+  }
+  return airlight;
+}
+
+// The view ray through the centre of viewport pixel `pixel` (window depth
+// `depth`): origin o, unit direction r, distance to the surface (inf: none).
+float viewRay(ivec2 pixel, float depth, out vec3 o, out vec3 r)
+{
+  vec2 ndc = (vec2(pixel) + 0.5) / ViewportSize * 2.0 - 1.0;
+  vec4 pn = InverseProjection * vec4(ndc, -1.0, 1.0);
+  vec4 pf = InverseProjection * vec4(ndc, 1.0, 1.0);
+  vec3 nearPoint = pn.xyz / pn.w;
+  vec3 farPoint = pf.xyz / pf.w;
+  o = Perspective == 1 ? vec3(0.0) : nearPoint;
+  r = normalize(farPoint - o);
+  float xs = 1.0 / 0.0; // nothing drawn: the ray runs through the medium to infinity
+  if (depth < 1.0)
+  {
+    vec4 ps = InverseProjection * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+    xs = length(ps.xyz / ps.w - o);
+  }
+  return xs;
+}
+
+void main()
+{
+  // (The quad's texCoord is not needed, pixels come from gl_FragCoord; this
+  // keeps the attribute alive so the quad helper can bind it.)
+  if (texCoord.x < -1.0)
+  {
+    discard;
+  }
+  ivec2 pixel = ivec2(gl_FragCoord.xy - ViewportOrigin);
+  vec3 o, r;
+  if (Mode == 1)
+  {
+    // The low-resolution airlight: the ray of the full-resolution pixel at
+    // this sample's centre; alpha keeps its surface distance (-1: none).
+    ivec2 full = min(ivec2(gl_FragCoord.xy) * Downsampling + Downsampling / 2, ivec2(ViewportSize) - 1);
+    float xsLow = viewRay(full, texelFetch(SceneDepth, full, 0).r, o, r);
+    gl_FragDepth = 1.0;
+    gl_FragData[0] = vec4(airlightOf(o, r, xsLow), isinf(xsLow) ? -1.0 : xsLow);
+    return;
+  }
+  vec4 color = texelFetch(SceneColor, pixel, 0);
+  float depth = texelFetch(SceneDepth, pixel, 0).r;
+  gl_FragDepth = depth;
+  float xs = viewRay(pixel, depth, o, r);
+
+  vec3 transmittance = isinf(xs) ? vec3(0.0) : exp(-KappaT * xs);
+  // A channel with kt = 0 keeps its colour even at infinity.
+  transmittance = mix(transmittance, vec3(1.0), vec3(equal(KappaT, vec3(0.0))));
+  bool exact = true;
+  vec3 airlight = vec3(0.0);
+  if (Mode == 2)
+  {
+    // Joint bilateral upsampling with error control: the four low-resolution
+    // samples around the pixel are interpolated bilinearly only if all lie on
+    // the pixel's surface (distance within 2 %, or all without a surface) and
+    // their airlight differs by at most UpsamplingTolerance of the largest;
+    // otherwise (silhouettes, glows, shadow and cone edges) the pixel is exact.
+    vec2 g = (vec2(pixel) - float(Downsampling / 2)) / float(Downsampling);
+    ivec2 l0 = ivec2(floor(g));
+    vec2 f = g - vec2(l0);
+    ivec2 lmax = textureSize(LowRes, 0) - 1;
+    vec4 s00 = texelFetch(LowRes, clamp(l0, ivec2(0), lmax), 0);
+    vec4 s10 = texelFetch(LowRes, clamp(l0 + ivec2(1, 0), ivec2(0), lmax), 0);
+    vec4 s01 = texelFetch(LowRes, clamp(l0 + ivec2(0, 1), ivec2(0), lmax), 0);
+    vec4 s11 = texelFetch(LowRes, clamp(l0 + ivec2(1, 1), ivec2(0), lmax), 0);
+    vec4 dist = vec4(s00.a, s10.a, s01.a, s11.a);
+    bool sameSurface = isinf(xs) ? all(lessThan(dist, vec4(0.0)))
+                                 : all(lessThanEqual(abs(dist - vec4(xs)), vec4(0.02 * xs)));
+    vec3 hi = max(max(s00.rgb, s10.rgb), max(s01.rgb, s11.rgb));
+    vec3 lo = min(min(s00.rgb, s10.rgb), min(s01.rgb, s11.rgb));
+    if (sameSurface && all(lessThanEqual(hi - lo, UpsamplingTolerance * hi)))
+    {
+      airlight = mix(mix(s00.rgb, s10.rgb, f.x), mix(s01.rgb, s11.rgb, f.x), f.y);
+      exact = false;
+    }
+  }
+  // llvmpipe runs both sides of a divergent `if` for every pixel of a SIMD
+  // block (masked), so an `if (exact)` would cost the exact path everywhere;
+  // a loop whose trip count is 0 in every lane is skipped.
+  for (int k = exact ? 0 : 1; k < 1; ++k)
+  {
+    airlight = airlightOf(o, r, xs);
   }
   // The surface as the window would show it without the medium (the float
   // target keeps values above 1 that an 8-bit window clamps), then attenuated.

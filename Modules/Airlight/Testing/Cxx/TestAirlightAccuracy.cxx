@@ -13,9 +13,9 @@ int TestAirlightAccuracy(int, char*[])
   const int W = 160, H = 120;
 
   // Float read-back (RGBA32F target): the shader's own error, no 8-bit rounding.
+  airtest::FloatImage air;
   auto checkFloat = [&](airtest::Scene& s, const char* what, double rmsGoal, double maxGoal) {
     const airtest::FloatImage plain = s.RenderFloat(nullptr);
-    airtest::FloatImage air;
     const airtest::FloatImage ref = s.Reference(plain, 1, &air, false);
     const airtest::FloatImage image = s.RenderFloat(s.Pass);
     PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
@@ -91,6 +91,26 @@ int TestAirlightAccuracy(int, char*[])
       PLUME_CHECK(e.RMS <= 0.005);
     }
     s.Pass->SetMarchSteps(0);
+
+    // The low-resolution airlight with error-controlled upsampling meets the
+    // same goal (silhouettes, the spot's cone edges and the glows are exact).
+    const airtest::FloatImage full = s.RenderFloat(s.Pass);
+    for (int d : { 2, 4 })
+    {
+      s.Pass->SetDownsampling(d);
+      const airtest::FloatImage image = s.RenderFloat(s.Pass);
+      PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
+      PLUME_CHECK(!plume::test::HasNonFinite(image));
+      const airtest::Error e = airtest::Compare(image, ref, air);
+      const airtest::Error vsFull = airtest::Compare(image, full, air);
+      std::cout << "downsampling " << d << ": ";
+      airtest::Print("", e);
+      airtest::Dump(image, "downsampling " + std::to_string(d));
+      PLUME_CHECK(e.RMS <= 0.005);
+      PLUME_CHECK(e.Max <= 0.02);
+      PLUME_CHECK(vsFull.Max > 1e-6); // some pixels really are interpolated
+    }
+    s.Pass->SetDownsampling(1);
 
     // ks = ka = 0: the pass does nothing at all (same pixels as the plain scene).
     s.Pass->SetScattering(0, 0, 0);

@@ -21,7 +21,7 @@ int TestAirlightParameters(int, char*[])
   using Kind = vtkPlumeParameterTable::Kind;
   const vtkPlumeParameterTable& table = vtkPlumeAirlightPass::GetParameterTable();
   PLUME_CHECK(table.GetSceneType() == "medium");
-  PLUME_CHECK(table.GetParameters().size() == 9);
+  PLUME_CHECK(table.GetParameters().size() == 12);
 
   vtkNew<vtkPlumeAirlightPass> pass;
   PLUME_CHECK(!pass->HasMedium()); // clear air by default: the pass only runs its delegate
@@ -94,5 +94,9 @@ int TestAirlightParameters(int, char*[])
   pass->SetAbsorption(-1.0, std::numeric_limits<double>::quiet_NaN(), 1e40);
   const double* a = pass->GetAbsorption();
   PLUME_CHECK(a[0] == 0.0 && a[1] == 0.0 && a[2] == 1e30);
+  // the phase's asymmetry: NaN counts as 0 (isotropic)
+  pass->SetScatteringAnisotropy(0.5);
+  pass->SetScatteringAnisotropy(std::numeric_limits<double>::quiet_NaN());
+  PLUME_CHECK(pass->GetScatteringAnisotropy() == 0.0);
   return failures ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -189,6 +189,7 @@ struct Scene
     ref->SetScattering(this->Pass->GetScattering());
     ref->SetAbsorption(this->Pass->GetAbsorption());
     ref->SetIntensityScale(this->Pass->GetIntensityScale());
+    ref->SetScatteringAnisotropy(this->Pass->GetScatteringAnisotropy());
     if (this->Pass->GetShadows())
     {
       ref->SetOccluders(this->Renderer); // exact ray-cast shadows for spot lights
@@ -363,6 +364,99 @@ inline EdgeSplit CompareAwayFromEdges(const airtest::FloatImage& image, const ai
   split.Inner = airtest::Compare(image, inner, air);
   split.Edge = airtest::Compare(image, edge, air);
   return split;
+}
+/**
+ * The shadowed tests' common comparison: the scene `s` (lights, medium and
+ * camera set) rendered through the pass with shadows off and on, and the
+ * reference without and with exact ray-cast shadows on every `stride`-th
+ * pixel; the error split at the reference's shadow edges, and the shafts:
+ * pixels the shadow darkens by more than 2 % of the airlight range in the
+ * pass and in the reference, and pixels it brightens (by > 0.2 %) in the pass.
+ * Leaves the pass with shadows on.
+ */
+struct ShadowComparison
+{
+  FloatImage Plain, Lit, RefLit, Image, Ref, Air;
+  Error All;
+  EdgeSplit Split;
+  size_t Darker = 0, RefDarker = 0, Brighter = 0;
+  double MaxDark = 0, MaxRefDark = 0;
+  int ShadowedLightsOff = -1, ShadowedLightsOn = -1;
+  bool GLClean = false, Finite = false;
+};
+
+inline ShadowComparison CompareShadowed(Scene& s, int stride, const std::string& what)
+{
+  ShadowComparison r;
+  r.Plain = s.RenderFloat(nullptr);
+  s.Pass->ShadowsOff();
+  r.RefLit = s.Reference(r.Plain, stride, nullptr, false);
+  r.Lit = s.RenderFloat(s.Pass);
+  r.ShadowedLightsOff = s.Pass->GetNumberOfShadowedLights();
+  s.Pass->ShadowsOn();
+  r.Ref = s.Reference(r.Plain, stride, &r.Air, false);
+  r.Image = s.RenderFloat(s.Pass);
+  r.ShadowedLightsOn = s.Pass->GetNumberOfShadowedLights();
+  r.GLClean = plume::test::GLErrors(s.Window).empty();
+  r.Finite = !plume::test::HasNonFinite(r.Image);
+  Dump(r.Image, what + " pass");
+  Dump(r.Ref, what + " reference");
+  Dump(r.Lit, what + " unshadowed pass");
+  r.All = Compare(r.Image, r.Ref, r.Air);
+  Print((what + ", all pixels").c_str(), r.All);
+  r.Split = CompareAwayFromEdges(r.Image, r.Ref, r.RefLit, r.Air, stride);
+  Print((what + ", away from shadow edges").c_str(), r.Split.Inner);
+  Print((what + ", shadow-edge pixels").c_str(), r.Split.Edge);
+  std::cout << "edge pixels: " << r.Split.EdgePixels << " of " << r.All.Pixels << "\n";
+  const size_t n = static_cast<size_t>(r.Image.Width) * r.Image.Height;
+  for (size_t p = 0; p < n; ++p)
+  {
+    if (std::isnan(r.Ref.RGBA[4 * p]))
+    {
+      continue;
+    }
+    const double d = double(r.Lit.RGBA[4 * p]) - r.Image.RGBA[4 * p];
+    const double dr = double(r.RefLit.RGBA[4 * p]) - r.Ref.RGBA[4 * p];
+    r.Darker += d > 0.02 * r.All.Range;
+    r.RefDarker += dr > 0.02 * r.All.Range;
+    r.MaxDark = std::max(r.MaxDark, d);
+    r.MaxRefDark = std::max(r.MaxRefDark, dr);
+    r.Brighter += d < -0.002 * r.All.Range;
+  }
+  std::cout << "shafts: " << r.Darker << " pixels darker by > 2 % (reference " << r.RefDarker << "), "
+            << r.Brighter << " brighter; largest darkening " << r.MaxDark << " (reference " << r.MaxRefDark
+            << ")\n";
+  return r;
+}
+
+/** The goal away from shadow edges (RMS <= 0.5 %, max <= 2 %), edges bounded loosely; returns the failures. */
+inline int CheckShadowGoal(const ShadowComparison& r)
+{
+  int failures = 0;
+  PLUME_CHECK(r.GLClean);
+  PLUME_CHECK(r.Finite);
+  PLUME_CHECK(r.ShadowedLightsOff == 0);
+  PLUME_CHECK(r.Split.Inner.Range > 0.3);
+  PLUME_CHECK(r.Split.Inner.RMS <= 0.005);
+  PLUME_CHECK(r.Split.Inner.Max <= 0.02);
+  PLUME_CHECK(r.Split.EdgePixels < r.All.Pixels / 5);
+  PLUME_CHECK(r.Split.Edge.RMS <= 0.05); // aliasing of the map and the march, bounded loosely
+  return failures;
+}
+
+/**
+ * Lit rays: the scene's shadows on against off (every shadow test passes, the
+ * march telescopes to the closed form); returns the comparison, the pass left
+ * with shadows on. `shadowed` gets the number of shadowed lights.
+ */
+inline Error ShadowsOnVersusOff(Scene& s, int& shadowed)
+{
+  s.Pass->ShadowsOff();
+  const FloatImage off = s.RenderFloat(s.Pass);
+  s.Pass->ShadowsOn();
+  const FloatImage on = s.RenderFloat(s.Pass);
+  shadowed = s.Pass->GetNumberOfShadowedLights();
+  return Compare(on, off, off);
 }
 }
 
