@@ -16,6 +16,7 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkXMLImageDataWriter.h"
+#include "vtkXMLUtilities.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
@@ -34,22 +35,13 @@ std::string Stem(const std::string& path)
   return path.substr(0, path.size() - ext.size());
 }
 
-// XML attribute text (file names may hold &, <, ", ...)
+// XML text and attribute values (file names and documentation may hold &, <,
+// ", ...): VTK's own entity encoder, bytes otherwise passed through
 std::string Escape(const std::string& text)
 {
-  std::string out;
-  for (char c : text)
-  {
-    switch (c)
-    {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
+  std::ostringstream out;
+  vtkXMLUtilities::EncodeString(text.c_str(), VTK_ENCODING_NONE, out, VTK_ENCODING_NONE, 1);
+  return out.str();
 }
 }
 

@@ -17,6 +17,7 @@
 #include "vtkPlumeVolumeMapper.h"
 
 #include "vtkNew.h"
+#include "vtkXMLUtilities.h"
 
 #include <climits>
 #include <cmath>
@@ -33,21 +34,13 @@ namespace
 using Table = vtkPlumeParameterTable;
 using Kind = vtkPlumeParameterTable::Kind;
 
+// XML text and attribute values (file names and documentation may hold &, <,
+// ", ...): VTK's own entity encoder, bytes otherwise passed through
 std::string Escape(const std::string& s)
 {
-  std::string out;
-  for (char c : s)
-  {
-    switch (c)
-    {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
+  std::ostringstream out;
+  vtkXMLUtilities::EncodeString(s.c_str(), VTK_ENCODING_NONE, out, VTK_ENCODING_NONE, 1);
+  return out.str();
 }
 
 std::string Number(double v)
