@@ -1,6 +1,8 @@
 #include "vtkPlumeSheetDensityGrid.h"
 #include "vtkPlumeSheetTriangles.h"
 
+#include "vtkPlumeInputValidation.h"
+
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -15,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkPlumeSheetDensityGrid);
@@ -71,10 +74,21 @@ void vtkPlumeSheetDensityGrid::SetInputData(vtkPolyData* mesh)
 
 bool vtkPlumeSheetDensityGrid::Compute()
 {
+  return this->Run(false);
+}
+
+std::string vtkPlumeSheetDensityGrid::CheckBudget()
+{
+  return this->Run(true) ? std::string() : this->LastError;
+}
+
+bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
+{
   const auto start = std::chrono::steady_clock::now();
   vtkPolyData* poly = this->Mesh;
   if (!poly)
   {
+    this->LastError = "no input mesh";
     vtkErrorMacro(<< "no input mesh");
     return false;
   }
@@ -149,6 +163,53 @@ bool vtkPlumeSheetDensityGrid::Compute()
     h *= std::max(1.01, std::cbrt(nodes / this->MaximumNodes));
   }
   this->SigmaFloor = k * h;
+
+  // ---- the work this mesh asks for, bounded before any of it is done: the
+  // bisection below makes about max(1, 2 area / target^2) pieces of each
+  // triangle (at most 2^24), 3 quadrature points each, and every point
+  // visits the nodes of its Cutoff box (an upper bound of the ellipsoid rows).
+  {
+    double points = 0.0, work = 0.0;
+    for (const Triangle& t : tris)
+    {
+      double sb = 1e300, sMaxT = 0.0;
+      for (const Corner& c : t.C)
+      {
+        sb = std::min(sb, std::max(c.SB, this->SigmaFloor));
+        sMaxT = std::max({ sMaxT, std::max(c.SB, this->SigmaFloor), std::max(c.ST, this->SigmaFloor) });
+      }
+      const double target = this->SubTriangleSize * sb;
+      const double area = 0.5 * glm::length(glm::cross(t.C[1].P - t.C[0].P, t.C[2].P - t.C[0].P));
+      const double longest = std::max({ glm::length(t.C[1].P - t.C[0].P), glm::length(t.C[2].P - t.C[1].P),
+        glm::length(t.C[0].P - t.C[2].P) });
+      const double pieces = std::min(16777216.0, std::max({ 1.0, 2.0 * area / (target * target), longest / target }));
+      const double side = std::min(double(std::max({ dims[0], dims[1], dims[2] })), 2.0 * this->Cutoff * sMaxT / h + 1.0);
+      points += 3.0 * pieces;
+      work += 3.0 * pieces * side * side * side;
+    }
+    std::ostringstream what;
+    what << "the sheet grid of " << tris.size() << " triangles (about " << points << " quadrature points on "
+         << dims[0] << "x" << dims[1] << "x" << dims[2] << " nodes)";
+    std::string tooMuch = vtkPlumeInputValidation::CheckMemory(points * sizeof(Source), what.str());
+    if (tooMuch.empty())
+    {
+      tooMuch = vtkPlumeInputValidation::CheckWork(work, what.str());
+    }
+    if (!tooMuch.empty())
+    {
+      this->LastError = tooMuch + "; use fewer triangles, a larger blur or the exact mode";
+      if (!budgetOnly)
+      {
+        vtkErrorMacro(<< this->LastError);
+      }
+      return false;
+    }
+  }
+  this->LastError.clear();
+  if (budgetOnly)
+  {
+    return true;
+  }
 
   // ---- quadrature points: pieces no wider than SubTriangleSize x the smallest sigma_b,
   // each contributing its edge midpoints (degree 2)

@@ -466,6 +466,20 @@ def build(c):
     c_add("ExposedExodusHdf5Forged", "survive", ["info", c.write("exposed/forged.ex2", b"\x89HDF\r\n\x1a\n" + bytes(range(256)) * 8, "wb")])
     c_add("ExposedExodusHdf5Cut", "survive", ["info", c.write("exposed/cut.ex2", b"\x89HDF\r\n\x1a\n\x00\x00", "wb")])
 
+    # ---- triangle counts against the budgets (the office stream sheet: 24000 triangles)
+    sheet_path = os.path.join(DATA, "derived/office_stream_sheet.vtp")
+    for mode, env, expect in [
+        ("exact", {"PLUME_MEMORY_BUDGET_MB": "1"},
+         r"representations\[0\] \(sheet\): dataset 's': the vertex data of the sheet's 2\d{4} triangles needs about [\d.]+ MB, over the memory budget of 1 MB \(PLUME_MEMORY_BUDGET_MB\)"),
+        ("grid", {"PLUME_WORK_BUDGET": "1e6"},
+         r"the sheet grid of 2\d{4} triangles \(about [\d.e+]+ quadrature points on \d+x\d+x\d+ nodes\) needs about [\d.e+]+ operations, "
+         r"over the work budget of 1e\+06 \(PLUME_WORK_BUDGET\); use fewer triangles"),
+    ]:
+        scene = c.scene("sheet_budget_" + mode, {"datasets": {"s": {"path": sheet_path}},
+                                                   "representations": [{"type": "sheet", "dataset": "s", "mode": mode}]})
+        c.render("SheetTriangleBudget_" + mode, "error", scene, expect, env=env)
+        c.render("SheetTriangleBudgetOk_" + mode, "ok", scene, "")
+
     # ---- scenes: nesting, cycles, budgets, parameter arithmetic
     c.render("NestedRepresentations", "error", c.scene("nested_reps", '{"representations": %s}' % nested(5000)),
              r"scene file '.*nested_reps\.json' nests JSON deeper than 64 levels")
