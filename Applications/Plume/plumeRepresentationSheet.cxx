@@ -59,6 +59,11 @@ void BuildSheet(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
     }
   }
 
+  const std::string overBudget = mapper->CheckBudget(mesh);
+  if (!overBudget.empty())
+  {
+    throw SceneError(p.Where() + ": dataset '" + dataset + "': " + overBudget);
+  }
   mapper->SetInputData(mesh);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

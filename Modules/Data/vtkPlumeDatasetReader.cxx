@@ -47,6 +47,8 @@
 #include "vtkXMLDataParser.h"
 #include "vtkXMLGenericDataObjectReader.h"
 
+#include <cstdio>
+#include <unistd.h>
 #include <vtksys/FStream.hxx>
 #include <vtksys/SystemTools.hxx>
 
@@ -352,6 +354,221 @@ private:
     this->Caught = message;
   }
 };
+
+// The VTK reader for a resolved kind (not "vrml" or "pvd"), configured as Plume reads it.
+vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& kind, const std::string& path, const std::string& qPath)
+{
+  if (kind == "legacy")
+  {
+    auto reader = vtkSmartPointer<vtkDataSetReader>::New();
+    reader->SetFileName(path.c_str());
+    reader->ReadAllScalarsOn();
+    reader->ReadAllVectorsOn();
+    reader->ReadAllNormalsOn();
+    reader->ReadAllTensorsOn();
+    reader->ReadAllColorScalarsOn();
+    reader->ReadAllTCoordsOn();
+    reader->ReadAllFieldsOn();
+    return reader;
+  }
+  if (kind == "xml")
+  {
+    auto reader = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
+    reader->SetFileName(path.c_str());
+    return reader;
+  }
+  if (kind == "plot3d")
+  {
+    auto reader = vtkSmartPointer<vtkMultiBlockPLOT3DReader>::New();
+    reader->SetXYZFileName(path.c_str());
+    if (!qPath.empty())
+    {
+      reader->SetQFileName(qPath.c_str());
+    }
+    reader->AutoDetectFormatOn();
+    reader->SetScalarFunctionNumber(100); // density
+    reader->SetVectorFunctionNumber(200); // velocity
+    reader->AddFunction(110);             // pressure
+    reader->AddFunction(120);             // temperature
+    return reader;
+  }
+  if (kind == "exodus")
+  {
+    auto reader = vtkSmartPointer<vtkExodusIIReader>::New();
+    reader->SetFileName(path.c_str());
+    return reader;
+  }
+  if (kind == "ensight")
+  {
+    auto reader = vtkSmartPointer<vtkGenericEnSightReader>::New();
+    reader->SetCaseFileName(path.c_str());
+    return reader;
+  }
+  if (kind == "openfoam")
+  {
+    auto reader = vtkSmartPointer<vtkOpenFOAMReader>::New();
+    reader->SetFileName(path.c_str());
+    reader->CreateCellToPointOn();
+    return reader;
+  }
+  if (kind == "cgns")
+  {
+    auto reader = vtkSmartPointer<vtkCGNSReader>::New();
+    reader->SetFileName(path.c_str());
+    return reader;
+  }
+  return nullptr;
+}
+
+// Array and block selections, known only after the reader's RequestInformation.
+void SelectArrays(vtkAlgorithm* reader, bool patches)
+{
+  if (auto* exodus = vtkExodusIIReader::SafeDownCast(reader))
+  {
+    exodus->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
+    exodus->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
+  }
+  else if (auto* cgns = vtkCGNSReader::SafeDownCast(reader))
+  {
+    cgns->EnableAllCellArrays();
+    cgns->EnableAllPointArrays();
+  }
+  else if (auto* foam = vtkOpenFOAMReader::SafeDownCast(reader))
+  {
+    foam->EnableAllCellArrays();
+    foam->EnableAllPointArrays();
+    // Patches only when blocks were asked for by name (they duplicate boundary points).
+    for (int i = 0; i < foam->GetNumberOfPatchArrays(); ++i)
+    {
+      const char* name = foam->GetPatchArrayName(i);
+      const bool internal = name && std::string(name) == "internalMesh";
+      foam->SetPatchArrayStatus(name, (internal || patches) ? 1 : 0);
+    }
+  }
+}
+
+// The formats VTK 9.1 reads unsafely and no structural check here covers:
+// HDF5 (netCDF-4) Exodus, EnSight (the check covers C-binary unstructured
+// geometry only), XML with inline arrays, PLOT3D solution (Q) files,
+// OpenFOAM, CGNS and VRML.
+bool IsExposed(const std::string& kind, const std::string& path, const std::string& qPath)
+{
+  if (kind == "exodus")
+  {
+    return !vtkPlumeFormatCheck::IsNetCDFClassic(path);
+  }
+  if (kind == "xml")
+  {
+    return vtkPlumeFormatCheck::HasInlineXMLData(path);
+  }
+  if (kind == "plot3d")
+  {
+    return !qPath.empty();
+  }
+  return kind == "ensight" || kind == "openfoam" || kind == "cgns" || kind == "vrml";
+}
+
+// PLUME_READER_ISOLATION=0 reads every format in process (e.g. to debug a reader).
+bool IsolationEnabled()
+{
+  const char* env = std::getenv("PLUME_READER_ISOLATION");
+  return !(env && std::string(env) == "0");
+}
+
+vtkSmartPointer<vtkDataObject> ImportVRML(const std::string& path, std::string& error);
+
+// The first error message a reader reports (VTK's "ERROR: In file, line N\nclass (0x..): " dropped).
+struct FirstError : public vtkCommand
+{
+  static FirstError* New() { return new FirstError; }
+  std::string Message;
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    std::string message = callData ? static_cast<const char*>(callData) : "unknown error";
+    while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back())))
+    {
+      message.pop_back();
+    }
+    const size_t paren = message.find("): ");
+    if (message.compare(0, 6, "ERROR:") == 0 && paren != std::string::npos)
+    {
+      message = message.substr(paren + 3);
+    }
+    if (this->Message.empty() && message.find("returned failure for request") == std::string::npos)
+    {
+      this->Message = message;
+    }
+  }
+};
+
+// What the in-process read will do, in the child of RunIsolated(); returns the
+// reader's first error, "" when it read without one (or stopped before reading
+// on a problem the in-process read reports itself).
+std::string ProbeRead(const std::string& kind, const std::string& path, const std::string& qPath, bool patches)
+{
+  // VTK's error macros invoke no ErrorEvent with the display off; the child's output goes to /dev/null
+  vtkObject::GlobalWarningDisplayOn();
+  if (kind == "vrml")
+  {
+    // VTK's VRML parser prints its reason ("Error near line 7: parse error") to stderr: keep it
+    std::FILE* log = std::tmpfile();
+    if (log)
+    {
+      std::fflush(stderr);
+      dup2(fileno(log), 2);
+    }
+    std::string error;
+    const bool read = ImportVRML(path, error) != nullptr;
+    std::string reason;
+    if (log)
+    {
+      std::fflush(stderr);
+      std::rewind(log);
+      char line[256];
+      while (std::fgets(line, sizeof(line), log))
+      {
+        std::string text(line);
+        while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+        {
+          text.pop_back();
+        }
+        if (text.find("rror") != std::string::npos && reason.empty())
+        {
+          reason = text;
+        }
+      }
+    }
+    return read ? std::string() : error + (reason.empty() ? std::string() : " (" + reason + ")");
+  }
+  vtkSmartPointer<vtkAlgorithm> reader = MakeReader(kind, path, qPath);
+  if (!reader)
+  {
+    return std::string();
+  }
+  vtkNew<FirstError> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+  if (!reader->GetExecutive()->UpdateInformation() || reader->GetErrorCode() != 0)
+  {
+    return errors->Message.empty() ? std::string("the reader failed (no details)") : errors->Message;
+  }
+  if (auto* plot3d = vtkMultiBlockPLOT3DReader::SafeDownCast(reader))
+  {
+    // a corrupt grid header is refused in process with its own message
+    if (plot3d->GetBinaryFile() &&
+      !vtkPlumeFormatCheck::CheckPlot3DGrid(path,
+        plot3d->GetByteOrder() == vtkMultiBlockPLOT3DReader::FILE_BIG_ENDIAN, plot3d->GetHasByteCount(),
+        plot3d->GetMultiGrid(), plot3d->GetTwoDimensionalGeometry(), plot3d->GetDoublePrecision(),
+        plot3d->GetIBlanking())
+         .empty())
+    {
+      return std::string();
+    }
+  }
+  SelectArrays(reader, patches);
+  reader->Update();
+  return errors->Message;
+}
 
 // A VRML scene (vtkVRMLImporter) as data: one polydata block per actor,
 // named "actor N", in world coordinates (the actor's matrix applied), so that
@@ -973,64 +1190,26 @@ int vtkPlumeDatasetReader::RequestInformation(
     {
       in.Reader = nullptr;
       in.Key = key;
-      if (kind == "legacy")
+      in.Reader = MakeReader(kind, path, qPath);
+      // formats no structural check covers: a first read in a child process
+      // turns a crash of VTK's reader into one error
+      if (this->IsolateReaders && IsExposed(kind, path, qPath) && IsolationEnabled())
       {
-        auto reader = vtkSmartPointer<vtkDataSetReader>::New();
-        reader->SetFileName(path.c_str());
-        reader->ReadAllScalarsOn();
-        reader->ReadAllVectorsOn();
-        reader->ReadAllNormalsOn();
-        reader->ReadAllTensorsOn();
-        reader->ReadAllColorScalarsOn();
-        reader->ReadAllTCoordsOn();
-        reader->ReadAllFieldsOn();
-        in.Reader = reader;
-      }
-      else if (kind == "xml")
-      {
-        auto reader = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
-        reader->SetFileName(path.c_str());
-        in.Reader = reader;
-      }
-      else if (kind == "plot3d")
-      {
-        auto reader = vtkSmartPointer<vtkMultiBlockPLOT3DReader>::New();
-        reader->SetXYZFileName(path.c_str());
-        if (!qPath.empty())
+        const bool patches = !this->BlockNames.empty();
+        std::string readError;
+        const std::string crashed = vtkPlumeFormatCheck::RunIsolated(
+          [&]() { return ProbeRead(kind, path, qPath, patches); }, &readError);
+        if (!crashed.empty() || !readError.empty())
         {
-          reader->SetQFileName(qPath.c_str());
+          // a failed read is reported from the child: the libraries' own
+          // prints (HDF5, CGNS, Exodus) went to its /dev/null
+          this->LastError = !crashed.empty()
+            ? "the " + kind + " reader " + crashed + " reading " + path + " in a child process (a corrupt file?); not read"
+            : "the " + kind + " reader cannot read " + path + ": " + readError;
+          in.Reader = nullptr;
+          in.Key.clear();
+          return 0;
         }
-        reader->AutoDetectFormatOn();
-        reader->SetScalarFunctionNumber(100); // density
-        reader->SetVectorFunctionNumber(200); // velocity
-        reader->AddFunction(110);             // pressure
-        reader->AddFunction(120);             // temperature
-        in.Reader = reader;
-      }
-      else if (kind == "exodus")
-      {
-        auto reader = vtkSmartPointer<vtkExodusIIReader>::New();
-        reader->SetFileName(path.c_str());
-        in.Reader = reader;
-      }
-      else if (kind == "ensight")
-      {
-        auto reader = vtkSmartPointer<vtkGenericEnSightReader>::New();
-        reader->SetCaseFileName(path.c_str());
-        in.Reader = reader;
-      }
-      else if (kind == "openfoam")
-      {
-        auto reader = vtkSmartPointer<vtkOpenFOAMReader>::New();
-        reader->SetFileName(path.c_str());
-        reader->CreateCellToPointOn();
-        in.Reader = reader;
-      }
-      else if (kind == "cgns")
-      {
-        auto reader = vtkSmartPointer<vtkCGNSReader>::New();
-        reader->SetFileName(path.c_str());
-        in.Reader = reader;
       }
       in.Watch(in.Reader);
     }
@@ -1065,29 +1244,7 @@ int vtkPlumeDatasetReader::RequestInformation(
         return 0;
       }
     }
-    // Array selections are only known after the reader's RequestInformation.
-    if (auto* exodus = vtkExodusIIReader::SafeDownCast(in.Reader))
-    {
-      exodus->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
-      exodus->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
-    }
-    else if (auto* cgns = vtkCGNSReader::SafeDownCast(in.Reader))
-    {
-      cgns->EnableAllCellArrays();
-      cgns->EnableAllPointArrays();
-    }
-    else if (auto* foam = vtkOpenFOAMReader::SafeDownCast(in.Reader))
-    {
-      foam->EnableAllCellArrays();
-      foam->EnableAllPointArrays();
-      // Patches only when blocks were asked for by name (they duplicate boundary points).
-      for (int i = 0; i < foam->GetNumberOfPatchArrays(); ++i)
-      {
-        const char* name = foam->GetPatchArrayName(i);
-        const bool internal = name && std::string(name) == "internalMesh";
-        foam->SetPatchArrayStatus(name, (internal || !this->BlockNames.empty()) ? 1 : 0);
-      }
-    }
+    SelectArrays(in.Reader, !this->BlockNames.empty());
 
     vtkInformation* innerInfo = in.Reader->GetOutputInformation(0);
     if (innerInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
@@ -1222,6 +1379,22 @@ int vtkPlumeDatasetReader::RequestData(
   if (in.Kind == "vrml")
   {
     std::string error;
+    if (this->IsolateReaders && IsolationEnabled())
+    {
+      // VTK's VRML parser has no structural check here: a first read in a child process
+      const std::string path = in.Path;
+      std::string readError;
+      const std::string crashed = vtkPlumeFormatCheck::RunIsolated(
+        [&]() { return ProbeRead("vrml", path, std::string(), false); }, &readError);
+      if (!crashed.empty())
+      {
+        return fail("the vrml importer " + crashed + " reading " + path + " in a child process (a corrupt file?); not read");
+      }
+      if (!readError.empty())
+      {
+        return fail(readError);
+      }
+    }
     data = ImportVRML(in.Path, error);
     if (!data)
     {
@@ -1243,6 +1416,19 @@ int vtkPlumeDatasetReader::RequestData(
       if (!notRegular.empty())
       {
         return fail(notRegular + " (listed in " + in.Path + ")");
+      }
+      if (this->IsolateReaders && IsolationEnabled() && vtkPlumeFormatCheck::HasInlineXMLData(entries[i].File))
+      {
+        const std::string file = entries[i].File;
+        std::string readError;
+        const std::string crashed = vtkPlumeFormatCheck::RunIsolated(
+          [&]() { return ProbeRead("xml", file, std::string(), false); }, &readError);
+        if (!crashed.empty() || !readError.empty())
+        {
+          return fail(!crashed.empty() ? "the xml reader " + crashed + " reading " + file + " (listed in " +
+                in.Path + ") in a child process (a corrupt file?); not read"
+                                       : "the xml reader cannot read " + file + " (listed in " + in.Path + "): " + readError);
+        }
       }
       vtkNew<vtkXMLGenericDataObjectReader> reader;
       reader->SetFileName(entries[i].File.c_str());

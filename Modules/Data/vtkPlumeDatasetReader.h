@@ -138,6 +138,23 @@ public:
 
   ///@{
   /**
+   * Read the formats that VTK 9.1 reads unsafely and no structural check
+   * covers (HDF5 Exodus, EnSight, XML with inline arrays, PLOT3D with a
+   * solution file, OpenFOAM, CGNS, VRML) once in a forked child process
+   * before reading them here, so that a reader crash on a corrupt file is one
+   * error in GetLastError() ("the cgns reader crashed (signal 11, ...)")
+   * instead of the end of the process; a reader that runs longer than
+   * $PLUME_READER_TIMEOUT seconds (default 300) is stopped with an error too.
+   * Costs one more read of such files. Default true; the environment
+   * variable PLUME_READER_ISOLATION=0 turns it off as well.
+   */
+  vtkSetMacro(IsolateReaders, bool);
+  vtkGetMacro(IsolateReaders, bool);
+  vtkBooleanMacro(IsolateReaders, bool);
+  ///@}
+
+  ///@{
+  /**
    * Restrict a composite result to the named leaves (e.g. EnSight part "fluid", OpenFOAM
    * "internalMesh" or a patch name). Default: empty = every leaf with points (OpenFOAM:
    * internalMesh only). A selection that matches nothing fails with the available names.
@@ -195,6 +212,7 @@ protected:
   double TimeValue = 0.0;
   bool UseTimeValue = false;
   bool MergeBlocks = true;
+  bool IsolateReaders = true;
   std::vector<std::string> BlockNames;
 
   std::vector<double> TimeValues;

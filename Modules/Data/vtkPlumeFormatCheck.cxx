@@ -3,9 +3,20 @@
 #include "vtksys/FStream.hxx"
 #include "vtksys/SystemTools.hxx"
 
+#include <cerrno>
+#include <cmath>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <sstream>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -813,4 +824,174 @@ std::string vtkPlumeFormatCheck::CheckXMLAppended(const std::string& path)
     }
   }
   return std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeFormatCheck::RunIsolated(
+  const std::function<std::string()>& read, std::string* result, double timeoutSeconds)
+{
+  if (result)
+  {
+    result->clear();
+  }
+  if (!(timeoutSeconds > 0))
+  {
+    const char* env = std::getenv("PLUME_READER_TIMEOUT");
+    char* end = nullptr;
+    const double value = env ? std::strtod(env, &end) : 0.0;
+    timeoutSeconds = env && end != env && value > 0 && std::isfinite(value) ? value : 300.0;
+  }
+  int fds[2];
+  if (pipe(fds) != 0)
+  {
+    return std::string();
+  }
+  // what is buffered now would be written twice (by the child too)
+  std::fflush(nullptr);
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t pid = fork();
+  if (pid < 0)
+  {
+    close(fds[0]);
+    close(fds[1]);
+    return std::string();
+  }
+  if (pid == 0)
+  {
+    close(fds[0]);
+    const int null = open("/dev/null", O_WRONLY);
+    if (null >= 0)
+    {
+      dup2(null, 1);
+      dup2(null, 2);
+    }
+    std::string message(1, '\1'); // returned
+    try
+    {
+      message += read();
+    }
+    catch (...)
+    {
+      // an exception (bad_alloc) is reported by the in-process read
+    }
+    for (size_t at = 0; at < message.size();)
+    {
+      const ssize_t written = write(fds[1], message.data() + at, message.size() - at);
+      if (written <= 0)
+      {
+        break;
+      }
+      at += static_cast<size_t>(written);
+    }
+    _exit(0); // no static destructors or atexit handlers of the parent's state
+  }
+  close(fds[1]);
+  std::string received;
+  bool timedOut = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds);
+  for (;;)
+  {
+    const double left =
+      std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+    if (left <= 0)
+    {
+      timedOut = true;
+      break;
+    }
+    pollfd p{ fds[0], POLLIN, 0 };
+    const int ready = poll(&p, 1, static_cast<int>(std::min(left * 1000.0 + 1.0, 1e9)));
+    if (ready < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (ready <= 0)
+    {
+      continue; // the deadline check above ends the wait
+    }
+    char bytes[4096];
+    const ssize_t n = ::read(fds[0], bytes, sizeof(bytes));
+    if (n > 0)
+    {
+      received.append(bytes, static_cast<size_t>(n));
+      continue; // until end of file: the child has exited
+    }
+    if (n < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    break;
+  }
+  close(fds[0]);
+  int status = 0;
+  if (timedOut)
+  {
+    kill(pid, SIGKILL);
+  }
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+  {
+  }
+  const bool returned = !received.empty() && received[0] == '\1';
+  if (returned && result)
+  {
+    *result = received.substr(1);
+  }
+  std::ostringstream why;
+  if (timedOut)
+  {
+    why << "did not finish within " << timeoutSeconds << " s (PLUME_READER_TIMEOUT)";
+  }
+  else if (WIFSIGNALED(status))
+  {
+    why << "crashed (signal " << WTERMSIG(status) << ", " << strsignal(WTERMSIG(status)) << ")";
+  }
+  else if (WIFEXITED(status) && (!returned || WEXITSTATUS(status) != 0))
+  {
+    why << "ended the process (exit code " << WEXITSTATUS(status) << ")";
+  }
+  return why.str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeFormatCheck::IsNetCDFClassic(const std::string& path)
+{
+  vtksys::ifstream in(path.c_str(), std::ios::binary);
+  char magic[4] = { 0, 0, 0, 0 };
+  in.read(magic, 4);
+  return in.gcount() == 4 && magic[0] == 'C' && magic[1] == 'D' && magic[2] == 'F' &&
+    (magic[3] == 1 || magic[3] == 2 || magic[3] == 5);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeFormatCheck::HasInlineXMLData(const std::string& path)
+{
+  // chunk by chunk (a 16-byte overlap finds a match cut between two chunks), up to the appended section
+  static const char* const formats[] = { "format=\"ascii\"", "format=\"binary\"", "format='ascii'",
+    "format='binary'" };
+  vtksys::ifstream in(path.c_str(), std::ios::binary);
+  std::string window;
+  std::vector<char> chunk(1 << 16);
+  while (in)
+  {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    window.append(chunk.data(), static_cast<size_t>(in.gcount()));
+    const size_t appended = window.find("<AppendedData");
+    if (appended != std::string::npos)
+    {
+      window.resize(appended);
+    }
+    for (const char* format : formats)
+    {
+      if (window.find(format) != std::string::npos)
+      {
+        return true;
+      }
+    }
+    if (appended != std::string::npos)
+    {
+      return false;
+    }
+    window.erase(0, window.size() > 16 ? window.size() - 16 : 0);
+  }
+  return false;
 }

@@ -16,7 +16,8 @@
  * [1, num_nodes]. Exodus files stored as HDF5 (netCDF-4) are not checked.
  * EnSight Gold C-binary geometry: see CheckEnSightGold(). Legacy .vtk cell
  * lists: CheckLegacyVTK(). VTK XML appended data: CheckXMLAppended(). PLOT3D
- * grid headers: CheckPlot3DGrid().
+ * grid headers: CheckPlot3DGrid(). The formats no check covers are read
+ * once in a child process first: RunIsolated().
  */
 #ifndef vtkPlumeFormatCheck_h
 #define vtkPlumeFormatCheck_h
@@ -24,7 +25,8 @@
 #include "PlumeDataModule.h"  // For export macro
 #include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
-#include <string> // For std::string
+#include <functional> // For std::function
+#include <string>     // For std::string
 
 class PLUMEDATA_EXPORT VTK_WRAPEXCLUDE vtkPlumeFormatCheck
 {
@@ -76,6 +78,32 @@ public:
 
   static std::string CheckPlot3DGrid(const std::string& path, bool bigEndian, bool byteCounts, bool multiGrid,
     bool twoDimensional, bool doublePrecision, bool iblanking);
+
+  /**
+   * Runs `read` in a forked child process and reports how it ended: "" when
+   * it returned (what it returned, e.g. the reader's error, is passed back in
+   * `result`), else one sentence: "crashed (signal 11, Segmentation
+   * fault)", "ended the process (exit code 1)" or "did not finish within N s
+   * (PLUME_READER_TIMEOUT)". For the formats whose corruptions no structural
+   * check covers (HDF5 Exodus, ASCII EnSight, inline XML, PLOT3D Q,
+   * OpenFOAM, CGNS, VRML): a reader crash becomes one clear error instead of
+   * the end of the process. The child's output goes to /dev/null (the
+   * in-process read prints the reader's messages once). `timeoutSeconds` <= 0
+   * takes $PLUME_READER_TIMEOUT, default 300. When fork() fails the read is
+   * not isolated and "" is returned.
+   */
+  static std::string RunIsolated(
+    const std::function<std::string()>& read, std::string* result = nullptr, double timeoutSeconds = 0);
+
+  /** The first bytes of `path` are a netCDF classic header ("CDF" + 1, 2 or 5). */
+  static bool IsNetCDFClassic(const std::string& path);
+
+  /**
+   * True if a VTK XML file stores any DataArray inline (format="ascii" or
+   * "binary"), which CheckXMLAppended() does not cover; scans the XML up to
+   * the appended data section.
+   */
+  static bool HasInlineXMLData(const std::string& path);
 };
 
 #endif

@@ -1,6 +1,8 @@
 #include "vtkPlumeSheetDensityGrid.h"
 #include "vtkPlumeSheetTriangles.h"
 
+#include "vtkPlumeInputValidation.h"
+
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -16,6 +18,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkPlumeSheetDensityGrid);
@@ -69,10 +72,21 @@ void vtkPlumeSheetDensityGrid::SetInputData(vtkPolyData* mesh)
 
 bool vtkPlumeSheetDensityGrid::Compute()
 {
+  return this->Run(false);
+}
+
+std::string vtkPlumeSheetDensityGrid::CheckBudget()
+{
+  return this->Run(true) ? std::string() : this->LastError;
+}
+
+bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
+{
   const auto start = std::chrono::steady_clock::now();
   vtkPolyData* poly = this->Mesh;
   if (!poly)
   {
+    this->LastError = "no input mesh";
     vtkErrorMacro(<< "no input mesh");
     return false;
   }
@@ -151,6 +165,59 @@ bool vtkPlumeSheetDensityGrid::Compute()
     h *= std::max(1.01, std::cbrt(nodes / this->MaximumNodes));
   }
   this->SigmaFloor = k * h;
+
+  // ---- the work this mesh asks for, bounded before any of it is done: a
+  // small triangle is one point; the bisection below makes about
+  // max(1, 2 area / target^2) pieces of a larger one (at most 2^24), 3
+  // quadrature points each, and every point visits the nodes of its Cutoff
+  // box (an upper bound of the ellipsoid rows).
+  {
+    double points = 0.0, work = 0.0;
+    for (const auto& ids : tris)
+    {
+      Corner c[3];
+      corners(ids.data(), c);
+      double sb = 1e300, sMaxT = 0.0;
+      for (const Corner& q : c)
+      {
+        sb = std::min(sb, std::max(q.SB, this->SigmaFloor));
+        sMaxT = std::max({ sMaxT, std::max(q.SB, this->SigmaFloor), std::max(q.ST, this->SigmaFloor) });
+      }
+      const double target = this->SubTriangleSize * sb;
+      const double area = 0.5 * glm::length(glm::cross(c[1].P - c[0].P, c[2].P - c[0].P));
+      const double longest =
+        std::max({ glm::length(c[1].P - c[0].P), glm::length(c[2].P - c[1].P), glm::length(c[0].P - c[2].P) });
+      const double n = longest <= this->SmallTriangleSize * sb
+        ? 1.0
+        : 3.0 * std::min(16777216.0, std::max({ 1.0, 2.0 * area / (target * target), longest / target }));
+      const double side =
+        std::min(double(std::max({ dims[0], dims[1], dims[2] })), 2.0 * this->Cutoff * sMaxT / h + 1.0);
+      points += n;
+      work += n * side * side * side;
+    }
+    std::ostringstream what;
+    what << "the sheet grid of " << tris.size() << " triangles (about " << points << " quadrature points on "
+         << dims[0] << "x" << dims[1] << "x" << dims[2] << " nodes)";
+    std::string tooMuch = vtkPlumeInputValidation::CheckMemory(points * sizeof(Source), what.str());
+    if (tooMuch.empty())
+    {
+      tooMuch = vtkPlumeInputValidation::CheckWork(work, what.str());
+    }
+    if (!tooMuch.empty())
+    {
+      this->LastError = tooMuch + "; use fewer triangles, a larger blur or the exact mode";
+      if (!budgetOnly)
+      {
+        vtkErrorMacro(<< this->LastError);
+      }
+      return false;
+    }
+  }
+  this->LastError.clear();
+  if (budgetOnly)
+  {
+    return true;
+  }
 
   // ---- quadrature points, in fixed blocks of triangles on the SMP threads
   // (each block keeps its own list, joined in block order: the result does

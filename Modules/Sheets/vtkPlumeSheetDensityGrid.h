@@ -97,8 +97,23 @@ public:
   vtkGetMacro(SmallTriangleSize, double);
   ///@}
 
-  /** Compute the grid. Returns false (with an error) if the input is unusable. */
+  /**
+   * Compute the grid. Returns false (with an error, also in GetLastError()) if
+   * the input is unusable or its quadrature would exceed the memory budget or
+   * the work budget (vtkPlumeInputValidation: PLUME_MEMORY_BUDGET_MB,
+   * PLUME_WORK_BUDGET): the message names the triangle count, the estimate and
+   * the budget.
+   */
   bool Compute();
+
+  /**
+   * The budget check of Compute() alone (the triangles are collected, nothing
+   * is splatted): "" if Compute() would fit the budgets, else its message.
+   */
+  std::string CheckBudget();
+
+  /** The reason the last Compute() failed on a budget, "" otherwise. */
+  const std::string& GetLastError() const { return this->LastError; }
 
   /** The grid: point array "density" (float, optical depth per unit length, model units). */
   vtkImageData* GetOutput() { return this->Output; }
@@ -114,6 +129,8 @@ protected:
   vtkPlumeSheetDensityGrid();
   ~vtkPlumeSheetDensityGrid() override;
 
+  bool Run(bool budgetOnly);
+
   vtkSmartPointer<vtkPolyData> Mesh;
   vtkSmartPointer<vtkImageData> Output;
   std::string DensityArrayName;
@@ -127,6 +144,7 @@ protected:
   double Cutoff = 3.5;
   double SamplesPerSigma = 2.0;
   double MaximumNodes = 33554432.0;
+  std::string LastError;
   double SubTriangleSize = 1.0;
   double SmallTriangleSize = 0.5;
   double SigmaFloor = 0.0;

@@ -52,6 +52,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <cmath>
 #include <map>
@@ -206,6 +207,26 @@ public:
 };
 
 //------------------------------------------------------------------------------
+namespace
+{
+// What the exact mode's triangle count costs, bounded before allocating: 96
+// bytes per triangle twice (the vertex data and the GL buffer), and a vertex
+// count that fits the draw call's GLsizei. "" or the message.
+std::string ExactBudget(vtkPolyData* poly)
+{
+  double triangles = 0;
+  plume::ForEachSheetTriangle(poly, [&](vtkIdType, vtkIdType, vtkIdType) { triangles += 1; });
+  const std::string what = "the vertex data of the sheet's " + std::to_string(static_cast<long long>(triangles)) + " triangles";
+  std::string tooMany = vtkPlumeInputValidation::CheckMemory(triangles * 2.0 * 3 * 8 * sizeof(float), what);
+  if (tooMany.empty() && 3.0 * triangles > double(std::numeric_limits<GLsizei>::max()))
+  {
+    tooMany = "the sheet's " + std::to_string(static_cast<long long>(triangles)) + " triangles exceed the " +
+      std::to_string(std::numeric_limits<GLsizei>::max() / 3) + " one OpenGL draw call can take";
+  }
+  return tooMany;
+}
+}
+
 vtkStandardNewMacro(vtkPlumeSheetMapper);
 
 vtkPlumeSheetMapper::vtkPlumeSheetMapper()
@@ -554,6 +575,15 @@ bool vtkPlumeSheetMapper::Internals::UpdateTriangles(vtkPlumeSheetMapper* self, 
       this->Centre[a] = std::isfinite(bounds[2 * a]) && std::isfinite(bounds[2 * a + 1])
         ? 0.5 * (bounds[2 * a] + bounds[2 * a + 1])
         : 0.0;
+    }
+    {
+      const std::string tooMany = ExactBudget(poly);
+      if (!tooMany.empty())
+      {
+        vtkErrorMacro(<< "not drawn: " << tooMany);
+        impl.HaveUpload = false;
+        return;
+      }
     }
     std::vector<float> data;
     vtkIdType skipped = 0;
@@ -936,18 +966,7 @@ bool vtkPlumeSheetMapper::Internals::UpdateGrid(vtkPlumeSheetMapper* self, Frame
       this->WarnedAbsorption = true;
     }
     vtkPlumeSheetDensityGrid* grid = this->Grid;
-    grid->SetInputData(poly);
-    grid->SetDensityArrayName(self->DensityArrayName.c_str());
-    grid->SetDensity(self->Density);
-    grid->SetDensityScale(self->DensityScale);
-    grid->SetBlurArrayName(self->BlurArrayName.c_str());
-    grid->SetBlurRadius(self->BlurRadius);
-    grid->SetThicknessArrayName(self->ThicknessArrayName.c_str());
-    grid->SetThickness(self->Thickness);
-    grid->SetThinSheet(self->ThinSheet);
-    grid->SetCutoff(self->Cutoff);
-    grid->SetSamplesPerSigma(self->GridSamplesPerSigma);
-    grid->SetMaximumNodes(self->GridMaximumNodes);
+    self->ConfigureGrid(grid, poly);
     if (!grid->Compute())
     {
       return false;
@@ -1078,4 +1097,37 @@ void vtkPlumeSheetMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveImageSampleDistance: " << this->InteractiveImageSampleDistance << "\n";
   os << indent << "UploadCount: " << this->UploadCount << "\n";
   os << indent << "TriangleCount: " << this->TriangleCount << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeSheetMapper::ConfigureGrid(vtkPlumeSheetDensityGrid* grid, vtkPolyData* poly)
+{
+  grid->SetInputData(poly);
+  grid->SetDensityArrayName(this->DensityArrayName.c_str());
+  grid->SetDensity(this->Density);
+  grid->SetDensityScale(this->DensityScale);
+  grid->SetBlurArrayName(this->BlurArrayName.c_str());
+  grid->SetBlurRadius(this->BlurRadius);
+  grid->SetThicknessArrayName(this->ThicknessArrayName.c_str());
+  grid->SetThickness(this->Thickness);
+  grid->SetThinSheet(this->ThinSheet);
+  grid->SetCutoff(this->Cutoff);
+  grid->SetSamplesPerSigma(this->GridSamplesPerSigma);
+  grid->SetMaximumNodes(this->GridMaximumNodes);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlumeSheetMapper::CheckBudget(vtkPolyData* mesh)
+{
+  if (!mesh)
+  {
+    return std::string();
+  }
+  if (this->RenderMode == RENDER_GRID)
+  {
+    vtkNew<vtkPlumeSheetDensityGrid> grid;
+    this->ConfigureGrid(grid, mesh);
+    return grid->CheckBudget();
+  }
+  return ExactBudget(mesh);
 }

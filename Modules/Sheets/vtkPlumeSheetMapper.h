@@ -72,6 +72,7 @@
 class vtkPlumeParameterTable;
 class vtkPolyData;
 
+class vtkPlumeSheetDensityGrid;
 class PLUMESHEETS_EXPORT vtkPlumeSheetMapper : public vtkMapper
 {
 public:
@@ -364,6 +365,17 @@ public:
   double* GetBounds() override;
   void GetBounds(double bounds[6]) override { this->vtkMapper::GetBounds(bounds); }
 
+  /**
+   * Whether drawing `mesh` with the current parameters fits the budgets
+   * (vtkPlumeInputValidation): "" or the message Render() would give, naming
+   * the triangle count and the budget. Exact mode: the vertex data (96 bytes
+   * per triangle, twice) against PLUME_MEMORY_BUDGET_MB and one draw call's
+   * vertex count; grid mode: the quadrature against the memory and the work
+   * budget (vtkPlumeSheetDensityGrid::CheckBudget). Cheap: one pass over the
+   * triangles, nothing drawn or splatted.
+   */
+  std::string CheckBudget(vtkPolyData* mesh);
+
 protected:
   vtkPlumeSheetMapper();
   ~vtkPlumeSheetMapper() override;
@@ -410,6 +422,8 @@ protected:
 private:
   vtkPlumeSheetMapper(const vtkPlumeSheetMapper&) = delete;
   void operator=(const vtkPlumeSheetMapper&) = delete;
+
+  void ConfigureGrid(vtkPlumeSheetDensityGrid* grid, vtkPolyData* poly);
 
   class Internals; // GL state and the render steps live here
   std::unique_ptr<Internals> Impl;

@@ -103,8 +103,15 @@ vtkSmartPointer<vtkPolyData> MakePoints(int n)
   s->SetName("s");
   for (int i = 0; i < n; ++i)
   {
-    pts->InsertNextPoint(next(-0.9, 0.9), next(-0.9, 0.9), next(-0.9, 0.9));
-    v->InsertNextTuple3(next(-1, 1), next(-1, 1), next(-1, 1));
+    // one draw per statement: argument evaluation order is unspecified (gcc and clang differ)
+    const double x = next(-0.9, 0.9);
+    const double y = next(-0.9, 0.9);
+    const double z = next(-0.9, 0.9);
+    pts->InsertNextPoint(x, y, z);
+    const double vx = next(-1, 1);
+    const double vy = next(-1, 1);
+    const double vz = next(-1, 1);
+    v->InsertNextTuple3(vx, vy, vz);
     s->InsertNextValue(static_cast<float>(next(0.2, 2)));
   }
   auto poly = vtkSmartPointer<vtkPolyData>::New();

@@ -222,7 +222,15 @@ int TestSplatStress(int, char*[])
   // threshold; back to the CPU with one warning when the GPU cannot do the job
   {
     vtkNew<vtkPlumeGaussianSplatter> splatter;
-    splatter->SetInputData(splattest::RandomPoints(20, -0.5, 0.5, 0.1, 0.2));
+    vtkSmartPointer<vtkPolyData> input = splattest::RandomPoints(20, -0.5, 0.5, 0.1, 0.2);
+    splatter->SetInputData(input);
+    // the points are the same whatever the compiler (one draw per statement
+    // in RandomPoints: clang's left-to-right and gcc's right-to-left argument
+    // evaluation once gave x and z swapped, and this fallback's total had a
+    // different sign in the two builds); the value is seed 7's first draw
+    double first[3];
+    input->GetPoint(0, first);
+    PLUME_CHECK(first[0] == -0.289449076535855 && first[1] == 0.22937066188518451 && first[2] == 0.032714304296632468);
     splatter->SetModelBounds(-1, 1, -1, 1, -1, 1);
     splatter->SetDimensions(12, 12, 12);
     splatter->Update();
@@ -239,7 +247,16 @@ int TestSplatStress(int, char*[])
     splatter->AddObserver(vtkCommand::WarningEvent, warnings);
     splatter->Update();
     PLUME_CHECK(splatter->GetLastBackend() == vtkPlumeGaussianSplatter::BACKEND_CPU && warnings->Count == 1);
-    PLUME_CHECK(splattest::Total(splatter->GetOutput()) > 0);
+    {
+      // the fallback's field is the reference's (a signed velocity component's
+      // total proves nothing: its sign depends on the points)
+      vtkNew<vtkPlumeSplatReference> reference;
+      reference->Configure(splatter);
+      const splattest::Error e = splattest::Against(splatter, reference->Compute());
+      std::printf("70000x1x1 CPU fallback: peak %.4g max error %.3g\n", e.Peak, e.Max);
+      // 1e-3: the cutoff at 4 sigma drops up to exp(-8) = 3.4e-4 of a splat's peak (as the others above)
+      PLUME_CHECK(e.Finite && e.Peak > 0 && e.Max <= 1e-3 * e.Peak);
+    }
     // BACKEND_GPU does not fall back: an error naming the limit
     splatter->SetBackend(vtkPlumeGaussianSplatter::BACKEND_GPU);
     vtkNew<WarningCounter> errors;

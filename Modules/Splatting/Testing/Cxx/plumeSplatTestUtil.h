@@ -41,8 +41,20 @@ inline vtkSmartPointer<vtkPolyData> RandomPoints(int n, double lo, double hi, do
   sigma->SetName("sigma");
   for (int i = 0; i < n; ++i)
   {
-    pts->InsertNextPoint(next(lo, hi), next(lo, hi), next(lo, hi));
-    v->InsertNextTuple3(next(-1, 1), next(-1, 1), next(-1, 1));
+    // One draw per statement: the evaluation order of function arguments is
+    // unspecified (gcc draws z first, clang x), so next() inside one argument
+    // list gave each compiler different points.
+    double p[3], w[3];
+    for (double& x : p)
+    {
+      x = next(lo, hi);
+    }
+    for (double& x : w)
+    {
+      x = next(-1, 1);
+    }
+    pts->InsertNextPoint(p);
+    v->InsertNextTuple(w);
     s->InsertNextValue(static_cast<float>(next(0.2, 2)));
     sigma->InsertNextValue(static_cast<float>(next(s0, s1)));
   }
