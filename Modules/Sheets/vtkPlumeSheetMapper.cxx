@@ -580,9 +580,9 @@ bool vtkPlumeSheetMapper::Internals::UpdateTriangles(vtkPlumeSheetMapper* self, 
       const std::string tooMany = ExactBudget(poly);
       if (!tooMany.empty())
       {
-        vtkErrorMacro(<< "not drawn: " << tooMany);
-        impl.HaveUpload = false;
-        return;
+        vtkErrorWithObjectMacro(self, << "not drawn: " << tooMany);
+        this->HaveUpload = false;
+        return false;
       }
     }
     std::vector<float> data;
