@@ -115,6 +115,7 @@ public:
   vtkNew<vtkPlumeScalarTexture3D> Scalars;
   vtkNew<vtkPlumeOpaqueDepthTexture> Depth;
   vtkNew<vtkPlumeLookupTexture> Table; // colour + extinction per world unit over the scalar range
+  vtkNew<vtkPlumeLookupTexture> Integral; // pre-integration: running integrals of (c sigma, sigma) over u
   vtkNew<vtkTextureObject> Occupancy;   // 1 byte per 8^3 block: 0 = transparent
   vtkNew<vtkTextureObject> BlockRanges; // RG32F per 8^3 block: min, max of u (MIP, isosurface)
   int RangesUpload = -1;     // data version of the block-range texture
@@ -146,6 +147,7 @@ public:
     vtkDataArray* Mask = nullptr; // valid-point mask (one component) or null
     vtkVolumeProperty* Property = nullptr;
     bool Shade = false;           // shaded composite
+    bool PreInt = false;          // pre-integrated composite
     double Range[2] = { 0, 0 };   // the transfer functions' range (data units)
     double ScaleBias[2] = { 0, 0 }; // texel -> u over Range
     double InvUnit = 1.0;         // 1 / scalar opacity unit distance
@@ -196,6 +198,7 @@ public:
     this->Scalars->ReleaseGraphicsResources(window);
     this->Depth->ReleaseGraphicsResources(window);
     this->Table->ReleaseGraphicsResources(window);
+    this->Integral->ReleaseGraphicsResources(window);
     this->Occupancy->ReleaseGraphicsResources(window);
     this->OccupancyUpload = this->OccupancyTable = -1;
     this->BlockRanges->ReleaseGraphicsResources(window);
@@ -348,6 +351,10 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Advanced()
       .Doc("Jump over 8^3 blocks that cannot change the result (same image).")
       .Bind(&T::SetEmptySpaceSkipping, &T::GetEmptySpaceSkipping);
+    t.Boolean("pre_integration", "PreIntegration", false)
+      .Panel("Quality")
+      .Doc("Composite mode: pre-integrated transfer functions (exact segment opacity for a value linear between samples), for sharp transfer functions at long steps.")
+      .Bind(&T::SetPreIntegration, &T::GetPreIntegration);
     t.Boolean("mip_skipping", "MIPSkipping", false)
       .Panel("Quality")
       .Advanced()
@@ -666,6 +673,50 @@ bool vtkPlumeVolumeMapper::Internals::UpdateResources(vtkPlumeVolumeMapper* self
     ++self->TableCount; // the occupancy summary depends on it
   }
 
+  // ---- pre-integration: running integrals over u (0..1 across the table) of
+  // c sigma and sigma, trapezoids of the linearly interpolated table (exact
+  // for it), in double; re-made only with the table (same source and time)
+  frame.PreInt = self->PreIntegration && self->BlendMode == COMPOSITE_BLEND && !self->Smoke && !shade &&
+    !this->Scalars->GetMasked();
+  self->LastPreIntegration = frame.PreInt;
+  if (frame.PreInt)
+  {
+    const std::vector<float>& table = this->Table->GetTable();
+    std::vector<double> running;
+    const double h = 1.0 / (TableSize - 1);
+    const auto integrate = [&] {
+    running.assign(4 * TableSize, 0.0);
+    for (int i = 1; i < TableSize; ++i)
+    {
+      const float* a = &table[4 * (i - 1)];
+      const float* b = &table[4 * i];
+      for (int c = 0; c < 3; ++c)
+      {
+        running[4 * i + c] = running[4 * (i - 1) + c] + 0.5 * h * (double(a[c]) * a[3] + double(b[c]) * b[3]);
+      }
+      running[4 * i + 3] = running[4 * (i - 1) + 3] + 0.5 * h * (double(a[3]) + b[3]);
+    }
+    };
+    const double span = range[1] - range[0];
+    if (!this->Integral->Update(renWin, property, tfTime, range, TableSize, [&](double v, float rgba[4]) {
+          if (running.empty())
+          {
+            integrate(); // only when the texture is out of date
+          }
+          // the entries are asked for at the table's nodes
+          const double x = span > 0 ? (v - range[0]) / span * (TableSize - 1) : 0.0;
+          const int i = std::min(TableSize - 1, std::max(0, static_cast<int>(std::lround(x))));
+          for (int c = 0; c < 4; ++c)
+          {
+            rgba[c] = static_cast<float>(running[4 * i + c]);
+          }
+        }))
+    {
+      vtkErrorWithObjectMacro(self, << "could not create the pre-integration texture");
+      return false;
+    }
+  }
+
   return true;
 }
 
@@ -678,7 +729,9 @@ bool vtkPlumeVolumeMapper::Internals::UpdateBlocks(vtkPlumeVolumeMapper* self, F
   // ---- empty-space skipping: blocks whose value range has zero opacity everywhere
   vtkOpenGLRenderWindow* renWin = frame.Window;
   const double* scaleBias = frame.ScaleBias;
-  const bool skipping = self->EmptySpaceSkipping && self->BlendMode == COMPOSITE_BLEND;
+  // (not with pre-integration: a segment whose midpoint is in a transparent
+  // block may reach into an occupied one)
+  const bool skipping = self->EmptySpaceSkipping && self->BlendMode == COMPOSITE_BLEND && !frame.PreInt;
   if (skipping && (this->OccupancyUpload != this->Scalars->GetDataVersion() ||
                     this->OccupancyTable != self->TableCount || !this->Occupancy->GetHandle()))
   {
@@ -998,10 +1051,12 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
   features.Enable("DEPTH", frame.UseDepth);
   // masked data: blocks such as SMOKE+MASK combine the mode with the mask
   features.Enable(this->Scalars->GetMasked() ? "MASK" : "NOMASK");
-  if (!this->Scalars->GetMasked())
+  if (!this->Scalars->GetMasked() && !frame.PreInt)
   {
     features.Enable(this->Scalars->GetHasGradients() ? "GRADIENT" : "PLAIN");
   }
+  // composite: point samples over their segment, or pre-integrated segments
+  features.Enable(frame.PreInt ? "PREINT" : "POINT", mode == "COMPOSITE");
   features.Enable("SHADE_NOGRADIENT", shade && !this->Scalars->GetHasGradients());
   if (skipTransparent || rangeSkipping)
   {
@@ -1259,6 +1314,11 @@ void vtkPlumeVolumeMapper::Internals::SetUniforms(
   program->SetUniform2f("ValueScaleBias", fScaleBias);
   this->Table->GetTextureObject()->Activate();
   program->SetUniformi("TransferFunction", this->Table->GetTextureObject()->GetTextureUnit());
+  if (frame.PreInt)
+  {
+    this->Integral->GetTextureObject()->Activate();
+    program->SetUniformi("TransferIntegral", this->Integral->GetTextureObject()->GetTextureUnit());
+  }
   if (frame.UseDepth)
   {
     frame.Depth->GetTextureObject()->Activate();
@@ -1360,6 +1420,10 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
   state->vtkglCullFace(GL_BACK);
   this->Scalars->GetTextureObject()->Deactivate();
   this->Table->GetTextureObject()->Deactivate();
+  if (frame.PreInt)
+  {
+    this->Integral->GetTextureObject()->Deactivate();
+  }
   if (frame.UseDepth)
   {
     frame.Depth->GetTextureObject()->Deactivate();

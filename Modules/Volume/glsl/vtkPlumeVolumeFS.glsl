@@ -7,6 +7,9 @@
 // vtkPlumeShaderVariants when one of the terms holds; A+B: both enabled), so only
 // what is used is compiled:
 //   COMPOSITE | MIP | ISO | SMOKE   the mode
+//   POINT | PREINT   composite: a sample's value over its segment | segments
+//                    pre-integrated between their end values (no SKIP, PLAIN
+//                    or MASK then)
 //   JITTER           jittered first segment
 //   DEPTH            stop at the opaque scene's depth
 //   SKIP             empty-space skipping, with one of: SKIP_TRANSPARENT
@@ -47,6 +50,9 @@ uniform float StepIndex;            // sample distance, voxels
 uniform int MaxSteps;
 uniform float UnitDistance;         // scalar opacity unit distance (world)
 uniform float OpacityThreshold;
+//PLUME::IF PREINT
+uniform sampler2D TransferIntegral; // 1 row: rgb = running integral of c sigma, a = of sigma, over u
+//PLUME::ENDIF
 //PLUME::IF DEPTH
 uniform sampler2D OpaqueDepth;
 //PLUME::ENDIF
@@ -129,6 +135,42 @@ float extinction(float u)
 {
   return transfer(u).a;
 }
+
+//PLUME::IF PREINT
+// running integral of (c sigma, sigma) from u = 0 to u; beyond the table the
+// end entries hold (as transfer() clamps)
+vec4 integral(float u)
+{
+  float uc = clamp(u, 0.0, 1.0);
+  vec4 s = textureLod(TransferIntegral, vec2((uc * (TFSize - 1.0) + 0.5) / TFSize, 0.5), 0.0);
+  if (u != uc)
+  {
+    vec4 e = transfer(uc);
+    s += (u - uc) * vec4(e.rgb * e.a, e.a);
+  }
+  return s;
+}
+
+// (colour, opacity) of a segment of world length len along which the value
+// goes linearly from uf to ub: optical depth len * mean sigma (exact), colour
+// the sigma-weighted mean colour over the values crossed
+vec4 segment(float uf, float ub, float len)
+{
+  float du = ub - uf;
+  vec4 m; // mean of (c sigma, sigma) over [uf, ub]
+  if (abs(du) > 1e-3)
+  {
+    m = (integral(ub) - integral(uf)) / du;
+  }
+  else
+  {
+    vec4 e = transfer(0.5 * (uf + ub)); // (differences of nearby floats lose digits)
+    m = vec4(e.rgb * e.a, e.a);
+  }
+  m = max(m, vec4(0.0));
+  return vec4(m.a > 0.0 ? m.rgb / m.a : vec3(0.0), 1.0 - exp(-m.a * len));
+}
+//PLUME::ENDIF
 
 // [t0, t1] of the ray p + t d inside the box, clipped to [lo, hi] (empty: t0 >= t1).
 // Vectorised slab test; |d| components below 1e-30 are replaced by 1e-30 so an
@@ -387,6 +429,11 @@ void main()
     s1 = min(s1, t.y);
   }
 //PLUME::ENDIF
+//PLUME::IF PREINT
+  // segments are pre-integrated between their end samples (the back one is
+  // the next segment's front)
+  float uFront = sampleU(p0 + s0 * d);
+//PLUME::ENDIF
   for (int i = 0; i <= MaxSteps + 1 && s0 < t.y; ++i)
   {
     float tm = 0.5 * (s0 + s1);
@@ -452,9 +499,15 @@ void main()
     float u = uw.x;
     float w = uw.y; // weight of the valid nodes: the data fades out over its last voxel
 //PLUME::ENDIF
-//PLUME::IF COMPOSITE
+//PLUME::IF POINT
     vec4 c = transfer(u);
     float alpha = 1.0 - exp(-c.a * w * (s1 - s0) * worldPerT);
+//PLUME::ENDIF
+//PLUME::IF PREINT
+    float uBack = sampleU(p0 + s1 * d);
+    vec4 c = segment(uFront, uBack, (s1 - s0) * worldPerT);
+    float alpha = c.a;
+    uFront = uBack;
 //PLUME::ENDIF
 //PLUME::IF SHADE
     if (alpha > 0.0)
