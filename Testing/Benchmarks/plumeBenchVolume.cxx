@@ -23,7 +23,9 @@
 // termination switched off, on the sparse smoke, the dense field and an
 // "opaque" one (the dense field with the smoke's opacity, where rays saturate
 // early), composite at both sizes, MIP and isosurface at 128³. Per-ray floor:
-// see FloorStep. --quick: 32³ only
+// see FloorStep. Pre-integration: "ours-preint" (PreIntegration on) at steps
+// 4, 8, 16 (--quick: 8) on the unshaded fields vs ours plain at the same step.
+// --quick: 32³ only
 // (errors on every 2nd pixel), sparsity for the smoke composite and isosurface.
 #include "plumeBenchmarks.h"
 
@@ -44,6 +46,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -222,6 +225,14 @@ std::vector<double> OurSteps(bool quick, int n)
   return steps;
 }
 
+// Pre-integration (PreIntegration, composite unshaded only): "ours-preint" at
+// long steps against ours plain at the same step (time and error)
+const char* const PreIntKind = "ours-preint";
+std::vector<double> PreIntSteps(bool quick)
+{
+  return quick ? std::vector<double>{ 8.0 } : std::vector<double>{ 4.0, 8.0, 16.0 };
+}
+
 vtkSmartPointer<vtkImageData> Field(const std::string& name, int n)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
@@ -363,6 +374,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     ours->SetInputData(image);
     ours->SetSampleDistance(step);
     ours->SetImageSampleDistance(OurImageSampleDistance(kind));
+    ours->SetPreIntegration(kind == PreIntKind);
     if (kind == "ours-base")
     {
       ours->SetTerminationError(0.005); // the former fixed threshold, 0.995, where R <= 1
@@ -511,6 +523,18 @@ std::vector<std::string> Jobs(bool quick)
         }
       }
       jobs.push_back(JobId("ours", field, n, FloorStep));
+      if (std::string(field).find('+') == std::string::npos) // (not with shading)
+      {
+        const std::vector<double> plainSteps = OurSteps(quick, n);
+        for (double step : PreIntSteps(quick))
+        {
+          jobs.push_back(JobId(PreIntKind, field, n, step));
+          if (std::find(plainSteps.begin(), plainSteps.end(), step) == plainSteps.end())
+          {
+            jobs.push_back(JobId("ours", field, n, step));
+          }
+        }
+      }
       for (const char* kind : PeerKinds)
       {
         for (double step : PeerSteps(kind, quick, n))
@@ -670,6 +694,36 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
             lines.push_back(line);
           }
         }
+      }
+    }
+  }
+  // pre-integration vs plain sampling at the same step (ratio = plain s / pre-integrated s)
+  for (int n : Grids(quick))
+  {
+    for (const char* field : Fields)
+    {
+      for (double step : PreIntSteps(quick))
+      {
+        const nlohmann::json* pre = find(JobId(PreIntKind, field, n, step));
+        const nlohmann::json* plain = find(JobId("ours", field, n, step));
+        if (!pre || !plain)
+        {
+          continue;
+        }
+        const double o = (*pre)["render_s"].get<double>();
+        const double p = (*plain)["render_s"].get<double>();
+        nlohmann::json line = { { "bench", "volume" },
+          { "case", CaseName(field, n, size) + ", pre-integrated vs plain sampling, step " + StepText(step) + " voxel" },
+          { "preint", true }, { "ours_s", o }, { "peer", std::string("vtkPlumeVolumeMapper, plain sampling") },
+          { "peer_s", p }, { "ratio", p / o }, { "grid", n }, { "ours_step", step }, { "peer_step", step },
+          { "peak_rss_mb", (*pre)["peak_rss_mb"] } };
+        if (pre->contains("rms_error"))
+        {
+          line["error"] = (*pre)["rms_error"];
+          line["max_error"] = (*pre)["max_error"];
+        }
+        peerFields(line, *plain);
+        lines.push_back(line);
       }
     }
   }
