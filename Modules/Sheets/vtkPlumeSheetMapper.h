@@ -3,7 +3,9 @@
  * @brief   triangle meshes drawn as volumetric Gaussian smoke sheets (seed 000)
  *
  * Input: a vtkPolyData. Its polygons (fanned into triangles) and triangle
- * strips are drawn; vertices and lines are ignored with a warning. Every point
+ * strips are drawn; vertices and lines are ignored with a warning. Cells
+ * flagged DUPLICATECELL or HIDDENCELL in the vtkGhostType cell array are
+ * skipped (another piece draws them), as VTK's own mappers do. Every point
  * carries a density d (mass per unit area), a blurring radius sigma_b (in the
  * surface) and a thickness sigma_t (across it), each from a named point array
  * or, when the name is empty or the array is missing, a constant. The smoke is

@@ -2,6 +2,8 @@
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDataArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -489,19 +491,42 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
     t.Reach = Support * std::max({ t.SB[0], t.SB[1], t.SB[2], t.ST[0], t.ST[1], t.ST[2] });
     tris.push_back(t);
   };
+  // Ghost cells (another piece owns them, or hidden) are not part of this
+  // sheet. Cell ids count verts and lines first, then polys, then strips.
+  vtkDataArray* ghostType = poly->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+  const vtkIdType polyBase = poly->GetNumberOfVerts() + poly->GetNumberOfLines();
+  const vtkIdType stripBase = polyBase + poly->GetNumberOfPolys();
+  auto isGhost = [&](vtkIdType cellId) {
+    if (!ghostType || cellId >= ghostType->GetNumberOfTuples())
+    {
+      return false;
+    }
+    const int flags = static_cast<int>(ghostType->GetComponent(cellId, 0));
+    return (flags & (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)) != 0;
+  };
   vtkIdType npts = 0;
   const vtkIdType* pts = nullptr;
   vtkCellArray* polys = poly->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(npts, pts);)
+  for (vtkIdType i = 0; i < polys->GetNumberOfCells(); ++i)
   {
+    polys->GetCellAtId(i, npts, pts);
+    if (isGhost(polyBase + i))
+    {
+      continue;
+    }
     for (vtkIdType k = 1; k + 1 < npts; ++k)
     {
       add(pts[0], pts[k], pts[k + 1]);
     }
   }
   vtkCellArray* strips = poly->GetStrips();
-  for (strips->InitTraversal(); strips->GetNextCell(npts, pts);)
+  for (vtkIdType i = 0; i < strips->GetNumberOfCells(); ++i)
   {
+    strips->GetCellAtId(i, npts, pts);
+    if (isGhost(stripBase + i))
+    {
+      continue;
+    }
     for (vtkIdType k = 0; k + 2 < npts; ++k)
     {
       add(pts[k], pts[k + 1], pts[k + 2]);

@@ -3,23 +3,45 @@
 // mapper (vertex data) and vtkPlumeSheetDensityGrid (grid mode), which must
 // see the same triangles. vtkPlumeSheetReference walks the cells itself: it
 // shares no code with the renderer it checks.
+//
+// Cells flagged in the vtkGhostType cell array as DUPLICATECELL (owned by
+// another piece: ParaView ranks, D3) or HIDDENCELL are skipped, as VTK's own
+// mappers do: a duplicate drawn twice darkens the sheet twice.
 #ifndef vtkPlumeSheetTriangles_h
 #define vtkPlumeSheetTriangles_h
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
 
 namespace plume
 {
-/** Call add(a, b, c) with the point ids of every triangle of `poly`'s polygons and strips. */
+/**
+ * Call add(a, b, c) with the point ids of every triangle of `poly`'s polygons
+ * and strips, except those of ghost cells (DUPLICATECELL or HIDDENCELL).
+ */
 template <typename AddTriangle>
 void ForEachSheetTriangle(vtkPolyData* poly, AddTriangle&& add)
 {
+  // polydata cell ids run verts, lines, polys, strips
+  const vtkUnsignedCharArray* ghosts = vtkUnsignedCharArray::SafeDownCast(
+    poly->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  const unsigned char skip = vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
+  vtkIdType cell = poly->GetNumberOfVerts() + poly->GetNumberOfLines();
+  auto ghost = [&](vtkIdType id) {
+    return ghosts && id < ghosts->GetNumberOfValues() && (ghosts->GetValue(id) & skip) != 0;
+  };
   vtkIdType npts = 0;
   const vtkIdType* pts = nullptr;
   vtkCellArray* polys = poly->GetPolys();
   for (polys->InitTraversal(); polys->GetNextCell(npts, pts);)
   {
+    if (ghost(cell++))
+    {
+      continue;
+    }
     for (vtkIdType k = 1; k + 1 < npts; ++k)
     {
       add(pts[0], pts[k], pts[k + 1]);
@@ -28,6 +50,10 @@ void ForEachSheetTriangle(vtkPolyData* poly, AddTriangle&& add)
   vtkCellArray* strips = poly->GetStrips();
   for (strips->InitTraversal(); strips->GetNextCell(npts, pts);)
   {
+    if (ghost(cell++))
+    {
+      continue;
+    }
     for (vtkIdType k = 0; k + 2 < npts; ++k)
     {
       add(pts[k], pts[k + 1], pts[k + 2]);

@@ -9,6 +9,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -22,6 +23,7 @@
 #include "vtkPlumeTextureHandOver.h"
 #include "vtkRenderWindow.h"
 #include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -331,10 +333,20 @@ int vtkPlumeGaussianSplatter::RequestData(
       }
     }
     vtkDataArray* radii = radiusArray(points);
+    // Points another piece owns (DUPLICATEPOINT in vtkGhostType: ParaView
+    // ranks, D3) are splatted there; counting them here too would double them.
+    // Both backends splat this list.
+    const vtkUnsignedCharArray* ghosts =
+      vtkUnsignedCharArray::SafeDownCast(pd->GetArray(vtkDataSetAttributes::GhostArrayName()));
     const vtkIdType n = points->GetNumberOfPoints();
     splats.reserve(n);
     for (vtkIdType i = 0; i < n; ++i)
     {
+      if (ghosts && i < ghosts->GetNumberOfValues() &&
+        (ghosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT) != 0)
+      {
+        continue;
+      }
       double c[3], v[3] = { 1, 0, 0 };
       points->GetPoint(i, c);
       if (values)

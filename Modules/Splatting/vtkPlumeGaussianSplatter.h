@@ -10,6 +10,8 @@
  *    vector array (VECTOR_SUM; VectorArrayName, default the active vectors)
  *    or the scalar array (SCALAR_SUM and DISTANCE_MAX; ScalarArrayName,
  *    default the active scalars, or 1 when there are none: a density).
+ *    Points flagged DUPLICATEPOINT in the vtkGhostType point array are
+ *    skipped (the piece that owns them splats them).
  *  - port 1, lines: a vtkPolyData whose polylines are flow lines. Vertex i
  *    splats the velocity LineScaleFactor·(p[i+1] − p[i]) (VECTOR_SUM), its
  *    length (SCALAR_SUM) or 1 (DISTANCE_MAX). A closed loop (last point id

@@ -4,6 +4,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
@@ -118,8 +119,15 @@ void vtkPlumeSplatReference::Configure(vtkPlumeGaussianSplatter* splatter)
       values = name.empty() ? pd->GetScalars() : pd->GetArray(name.c_str());
     }
     vtkDataArray* radii = radiusName.empty() ? nullptr : pd->GetArray(radiusName.c_str());
+    // points owned by another piece (ghosts) are not splatted here
+    vtkDataArray* ghostType = pd->GetArray(vtkDataSetAttributes::GhostArrayName());
     for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
     {
+      if (ghostType && i < ghostType->GetNumberOfTuples() &&
+        (static_cast<int>(ghostType->GetComponent(i, 0)) & vtkDataSetAttributes::DUPLICATEPOINT))
+      {
+        continue;
+      }
       double c[3];
       points->GetPoint(i, c);
       double v[3] = { 1, 0, 0 };
