@@ -260,7 +260,7 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Bind(&T::SetMarchSteps, &T::GetMarchSteps);
     t.Boolean("shadows", "Shadows", true)
       .Panel("Medium")
-      .Doc("Volumetric shadows of opaque geometry: a shadow map per spot light whose cone holds a prop, a cube map (six faces) per point light with any opaque prop; at most 4 lights shadowed (MaximumShadowedLights, a warning names the rest).")
+      .Doc("Volumetric shadows of opaque geometry: a shadow map per spot light whose cone holds a prop, a cube map (six faces) per point light with any opaque prop; every light (up to 8) shadowed, one sampler each.")
       .Bind(&T::SetShadows, &T::GetShadows);
     t.Integer("shadow_steps", "ShadowSteps", 64)
       .Between(1, 1024)
@@ -680,6 +680,11 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   vtkNew<vtkMatrix4x4> inverseView;
   vtkMatrix4x4::Invert(view, inverseView);
   int shadowCount = 0;
+  // One sampler per shadowed light beside the pass's own 4 (colour, depth,
+  // table, low-resolution airlight).
+  GLint textureUnits = 16;
+  glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &textureUnits);
+  const int shadowLimit = std::max(0, std::min<int>(MaximumShadowedLights, textureUnits - 4));
   vtkLightCollection* lights = r->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
@@ -743,7 +748,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       const std::vector<double> key = { position[0], position[1], position[2], focal[0], focal[1],
         focal[2], spot ? light->GetConeAngle() : 180.0, static_cast<double>(this->ShadowMapSize),
         static_cast<double>(propsTime), static_cast<double>(occluders.size()), r->GetTiledAspectRatio() };
-      if (occluded && shadowCount >= MaximumShadowedLights)
+      if (occluded && shadowCount >= shadowLimit)
       {
         ++unshadowed; // reported below
       }
@@ -775,8 +780,9 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   if (unshadowed > 0 && unshadowed != this->ReportedUnshadowed)
   {
     vtkWarningMacro("vtkPlumeAirlightPass: " << shadowCount + unshadowed
-      << " lights need a shadow map but at most " << MaximumShadowedLights
-      << " are shadowed (MaximumShadowedLights, one sampler each); the last " << unshadowed
+      << " lights need a shadow map but at most " << shadowLimit
+      << " are shadowed (one sampler each; the driver has " << textureUnits
+      << " fragment texture units, the pass uses 4 others); the last " << unshadowed
       << " are rendered unshadowed.");
   }
   this->ReportedUnshadowed = unshadowed;

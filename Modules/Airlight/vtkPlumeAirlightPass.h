@@ -65,8 +65,8 @@
  * sub-intervals uniform in the angle seen from the light, each adding
  * w * [Phi(x_k) - Phi(x_{k-1})] when a jittered point of it is lit, Phi the
  * closed-form running integral (so a fully lit ray with exponent 0 is the
- * unshadowed result; no arctan in the loop). At most MaximumShadowedLights
- * (4) lights are shadowed; the others are unshadowed, with a warning.
+ * unshadowed result; no arctan in the loop). Up to MaximumShadowedLights
+ * (8, every light the pass renders) are shadowed, one sampler each.
  *
  * Limits: a light exactly on a view ray (the integral of 1/d^2 diverges)
  * gives a huge but finite value, clamped to 1e20.
@@ -229,10 +229,13 @@ public:
 
   /**
    * At most this many lights are shadowed per frame (one shadow-map sampler
-   * each: GLSL 1.50 cannot index samplers dynamically); the others get their
-   * airlight unshadowed, with a warning.
+   * each: GLSL 1.50 cannot index samplers dynamically): 8, the number of
+   * positional lights the pass renders at all, so every light can be
+   * shadowed. A driver with fewer than 12 fragment texture units (GL 3.2
+   * guarantees 16) lowers it to the units left after the pass's 4 others;
+   * lights beyond it get their airlight unshadowed, with a warning.
    */
-  static constexpr int MaximumShadowedLights = 4;
+  static constexpr int MaximumShadowedLights = 8;
 
   ///@{
   /**

@@ -81,6 +81,34 @@ uniform vec2 ShadowRange3;
 uniform int ShadowFaces3;
 uniform vec3 ShadowLight3;
 #endif
+#if NUMBER_OF_SHADOWS > 4
+uniform sampler2D ShadowMap4;
+uniform mat4 ShadowMatrix4[6];
+uniform vec2 ShadowRange4;
+uniform int ShadowFaces4;
+uniform vec3 ShadowLight4;
+#endif
+#if NUMBER_OF_SHADOWS > 5
+uniform sampler2D ShadowMap5;
+uniform mat4 ShadowMatrix5[6];
+uniform vec2 ShadowRange5;
+uniform int ShadowFaces5;
+uniform vec3 ShadowLight5;
+#endif
+#if NUMBER_OF_SHADOWS > 6
+uniform sampler2D ShadowMap6;
+uniform mat4 ShadowMatrix6[6];
+uniform vec2 ShadowRange6;
+uniform int ShadowFaces6;
+uniform vec3 ShadowLight6;
+#endif
+#if NUMBER_OF_SHADOWS > 7
+uniform sampler2D ShadowMap7;
+uniform mat4 ShadowMatrix7[6];
+uniform vec2 ShadowRange7;
+uniform int ShadowFaces7;
+uniform vec3 ShadowLight7;
+#endif
 //PLUME::ENDIF
 
 //VTK::Output::Dec
@@ -333,6 +361,34 @@ float lit(int s, vec3 p)
   {
     int f = ShadowFaces3 == 6 ? cubeFace(p - ShadowLight3) : 0;
     return litIn(ShadowMap3, ShadowMatrix3[f], ShadowRange3, p, f, ShadowFaces3);
+  }
+#endif
+#if NUMBER_OF_SHADOWS > 4
+  if (s == 4)
+  {
+    int f = ShadowFaces4 == 6 ? cubeFace(p - ShadowLight4) : 0;
+    return litIn(ShadowMap4, ShadowMatrix4[f], ShadowRange4, p, f, ShadowFaces4);
+  }
+#endif
+#if NUMBER_OF_SHADOWS > 5
+  if (s == 5)
+  {
+    int f = ShadowFaces5 == 6 ? cubeFace(p - ShadowLight5) : 0;
+    return litIn(ShadowMap5, ShadowMatrix5[f], ShadowRange5, p, f, ShadowFaces5);
+  }
+#endif
+#if NUMBER_OF_SHADOWS > 6
+  if (s == 6)
+  {
+    int f = ShadowFaces6 == 6 ? cubeFace(p - ShadowLight6) : 0;
+    return litIn(ShadowMap6, ShadowMatrix6[f], ShadowRange6, p, f, ShadowFaces6);
+  }
+#endif
+#if NUMBER_OF_SHADOWS > 7
+  if (s == 7)
+  {
+    int f = ShadowFaces7 == 6 ? cubeFace(p - ShadowLight7) : 0;
+    return litIn(ShadowMap7, ShadowMatrix7[f], ShadowRange7, p, f, ShadowFaces7);
   }
 #endif
   int f = ShadowFaces0 == 6 ? cubeFace(p - ShadowLight0) : 0;

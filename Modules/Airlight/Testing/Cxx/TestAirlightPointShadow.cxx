@@ -8,8 +8,8 @@
 //    the shaft under the plate darkens the same pixels as in the reference.
 // 2. the cube map is rebuilt only when the light or the geometry changes.
 // 3. lit rays: a point light over a bare floor, shadows on equal shadows off.
-// 4. more lights needing shadows than MaximumShadowedLights: the rest are
-//    counted as unshadowed (and a warning names the numbers), no GL error.
+// 4. six point lights needing shadows (more than the former limit of 4): all
+//    are shadowed, none counted as unshadowed, no GL error.
 #include "plumeAirlightTestUtil.h"
 
 int TestAirlightPointShadow(int, char*[])
@@ -71,7 +71,7 @@ int TestAirlightPointShadow(int, char*[])
     PLUME_CHECK(e.Max <= 1e-4);
   }
 
-  // 4. Six lights needing shadows: four are shadowed, two are not (and said so).
+  // 4. Six lights needing shadows: all six are shadowed.
   {
     airtest::Scene s(48, 36);
     s.AddRoom();
@@ -86,8 +86,8 @@ int TestAirlightPointShadow(int, char*[])
     const airtest::FloatImage image = s.RenderFloat(s.Pass);
     std::cout << "6 lights: " << s.Pass->GetNumberOfShadowedLights() << " shadowed, "
               << s.Pass->GetNumberOfUnshadowedLights() << " unshadowed\n";
-    PLUME_CHECK(s.Pass->GetNumberOfShadowedLights() == vtkPlumeAirlightPass::MaximumShadowedLights);
-    PLUME_CHECK(s.Pass->GetNumberOfUnshadowedLights() == 6 - vtkPlumeAirlightPass::MaximumShadowedLights);
+    PLUME_CHECK(s.Pass->GetNumberOfShadowedLights() == 6);
+    PLUME_CHECK(s.Pass->GetNumberOfUnshadowedLights() == 0);
     PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
     PLUME_CHECK(!plume::test::HasNonFinite(image));
   }
