@@ -685,14 +685,19 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   GLint textureUnits = 16;
   glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &textureUnits);
   const int shadowLimit = std::max(0, std::min<int>(MaximumShadowedLights, textureUnits - 4));
+  int ignoredLights = 0;
   vtkLightCollection* lights = r->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
   while (vtkLight* light = lights->GetNextLight(it))
   {
-    if (!light->GetSwitch() || !light->GetPositional() ||
-      static_cast<int>(cosCones.size()) >= MaximumLights)
+    if (!light->GetSwitch() || !light->GetPositional())
     {
+      continue;
+    }
+    if (static_cast<int>(cosCones.size()) >= MaximumLights)
+    {
+      ++ignoredLights; // reported below: nothing is dropped silently
       continue;
     }
     double position[3], focal[3], color[3], attenuation[3];
@@ -786,6 +791,14 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       << " are rendered unshadowed.");
   }
   this->ReportedUnshadowed = unshadowed;
+  this->NumberOfIgnoredLights = ignoredLights;
+  if (ignoredLights > 0 && ignoredLights != this->ReportedIgnored)
+  {
+    vtkWarningMacro("vtkPlumeAirlightPass: the renderer has " << MaximumLights + ignoredLights
+      << " positional lights switched on but the pass scatters light from at most " << MaximumLights
+      << "; the last " << ignoredLights << " add no airlight.");
+  }
+  this->ReportedIgnored = ignoredLights;
 
   // 3. The program for this variant (lights count, spot lights or not).
   std::ostringstream defines;

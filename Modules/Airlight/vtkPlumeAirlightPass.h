@@ -228,6 +228,13 @@ public:
   vtkGetMacro(NumberOfUnshadowedLights, int);
 
   /**
+   * How many switched-on positional lights beyond the 8 the pass scatters
+   * from were left out of the airlight in the last frame (a warning names the
+   * numbers when this count changes to a value above 0).
+   */
+  vtkGetMacro(NumberOfIgnoredLights, int);
+
+  /**
    * At most this many lights are shadowed per frame (one shadow-map sampler
    * each: GLSL 1.50 cannot index samplers dynamically): 8, the number of
    * positional lights the pass renders at all, so every light can be
@@ -290,6 +297,8 @@ protected:
   int NumberOfShadowedLights = 0;
   int NumberOfUnshadowedLights = 0;
   int ReportedUnshadowed = 0;
+  int NumberOfIgnoredLights = 0;
+  int ReportedIgnored = 0;
 
   struct ShadowMap;
   std::vector<ShadowMap*> ShadowMaps;

@@ -91,5 +91,22 @@ int TestAirlightPointShadow(int, char*[])
     PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
     PLUME_CHECK(!plume::test::HasNonFinite(image));
   }
+
+  // 5. Ten positional lights: the pass scatters from 8, and counts (and
+  // warns about) the 2 it leaves out instead of dropping them silently.
+  {
+    airtest::Scene s(24, 18);
+    s.AddRoom();
+    for (int k = 0; k < 10; ++k)
+    {
+      s.AddPointLight(-2.5 + 0.5 * k, 3.0, -1.0, 0.3, 0.3, 0.3, 1.0);
+    }
+    s.Pass->SetScattering(0.2, 0.2, 0.2);
+    s.Camera(1.5, 1.5, 5.0, 0.0, 1.2, -2.0);
+    const airtest::FloatImage image = s.RenderFloat(s.Pass);
+    std::cout << "10 lights: " << s.Pass->GetNumberOfIgnoredLights() << " left out\n";
+    PLUME_CHECK(s.Pass->GetNumberOfIgnoredLights() == 2);
+    PLUME_CHECK(!plume::test::HasNonFinite(image));
+  }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
