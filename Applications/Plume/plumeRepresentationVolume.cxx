@@ -31,9 +31,10 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
 {
   const std::string dataset = p.String("dataset", "");
   const std::string arrayName = p.String("array", "");
-  // the mapper's own parameters (mode, steps, jitter, opacity_unit_distance, ...) come
-  // from its table; its defaults (one voxel as the opacity unit distance, the middle of
-  // the colour map as the iso value) are the library's
+  // the mapper's own parameters (mode, iso_value, steps, jitter, opacity_unit_distance, ...)
+  // come from its table; its defaults (one voxel as the opacity unit distance, the middle
+  // of the colour map as the iso value) are the library's, and it warns about an iso value
+  // outside the data
   vtkNew<vtkPlumeVolumeMapper> mapper;
   p.Apply(vtkPlumeVolumeMapper::GetParameterTable(), mapper);
   const int mode = mapper->GetRenderMode();
@@ -43,8 +44,6 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   coloring.ReadLegend(p);
   const bool solid = p.Boolean("solid_color", false);
   const nlohmann::json* opacityPoints = p.Raw("opacity");
-  const bool hasIso = p.Has("iso_value");
-  const double iso = p.Number("iso_value", 0.0);
   // vtkVolumeProperty's lighting: smoke is lit more evenly by default
   const double ambient = p.Number("ambient", smoke ? 0.3 : 0.15, 0.0, 10.0);
   const double diffuse = p.Number("diffuse", smoke ? 1.0 : 0.75, 0.0, 10.0);
@@ -157,15 +156,6 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   mapper->SetInputData(image);
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SelectScalarArray(array->GetName());
-  if (mode == vtkPlumeVolumeMapper::RENDER_ISOSURFACE && hasIso)
-  {
-    mapper->SetIsoValue(iso);
-    if (iso < range[0] || iso > range[1])
-    {
-      std::cerr << "plume: warning: " << p.Where() << ": 'iso_value' " << iso << " is outside the data range ["
-                << range[0] << ", " << range[1] << "]: no surface will show\n";
-    }
-  }
   volume->SetMapper(mapper);
   renderer->AddVolume(volume);
 }

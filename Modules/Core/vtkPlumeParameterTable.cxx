@@ -214,6 +214,18 @@ vtkPlumeParameterTable::Parameter& vtkPlumeParameterTable::Parameter::Advanced(b
   return *this;
 }
 
+vtkPlumeParameterTable::Parameter& vtkPlumeParameterTable::Parameter::Automatic(const std::string& meaning)
+{
+  if (this->Type != Kind::Real)
+  {
+    throw std::logic_error("'" + this->Key + "': only a real parameter can be automatic");
+  }
+  this->IsAutomatic = true;
+  this->AutomaticMeaning = meaning;
+  this->Default = std::numeric_limits<double>::quiet_NaN();
+  return *this;
+}
+
 vtkPlumeParameterTable::Parameter& vtkPlumeParameterTable::Parameter::Choice(
   const std::string& key, int number, const std::string& doc)
 {
@@ -278,6 +290,10 @@ std::string vtkPlumeParameterTable::Parameter::Check(const Value& value) const
       else
       {
         return "must be a finite number " + range() + got();
+      }
+      if (this->IsAutomatic && std::isnan(v))
+      {
+        return ""; // unset: the class chooses
       }
       return inRange(v) ? "" : "must be a finite number " + range() + got();
     }
@@ -442,7 +458,9 @@ void vtkPlumeParameterTable::WriteMarkdown(std::ostream& os) const
         doc += " `\"" + o.Key + "\"`: " + o.Doc;
       }
     }
-    os << "| `" << p.Key << "` | " << KindName(p.Type) << " | `" << Format(p.Default) << "` | " << range << " | "
-       << doc << " |\n";
+    const std::string def =
+      p.IsAutomatic ? "automatic (" + p.AutomaticMeaning + ")" : "`" + Format(p.Default) + "`";
+    os << "| `" << p.Key << "` | " << KindName(p.Type) << " | " << def << " | " << range << " | " << doc
+       << " |\n";
   }
 }

@@ -33,6 +33,13 @@
  *     return table;
  *   }
  * @endcode
+ * A real parameter may default to "automatic": `.Automatic("the middle of
+ * the colour map's range")` makes its default NaN, which the class reads as
+ * "not set, choose for me". Check accepts NaN for it (the unset value; scenes
+ * cannot write NaN, so a scene either gives a finite value or leaves the key
+ * out), the markdown shows "automatic (...)" as the default and the ParaView
+ * property takes its initial value from the C++ object (default_values="none").
+ *
  * Binding takes the class's own Set/Get methods (vtkSetMacro and friends):
  * booleans, integers (any integral type), reals, choices (an int setter; the
  * scene names each value), text (`const char*`, e.g. array names) and 3-vectors
@@ -94,6 +101,8 @@ public:
     std::string Documentation;   ///< one or two sentences
     std::string Group;           ///< ParaView panel group ("" = the class's main group)
     bool IsAdvanced = false;     ///< behind ParaView's gear button
+    bool IsAutomatic = false;    ///< reals: the default is NaN, "automatic" (see Automatic())
+    std::string AutomaticMeaning; ///< what "automatic" chooses, e.g. "the middle of the colour map's range"
     std::function<void(vtkObject*, const Value&)> Setter;
     std::function<Value(vtkObject*)> Getter;
 
@@ -104,6 +113,11 @@ public:
     Parameter& Doc(const std::string& documentation);
     Parameter& Panel(const std::string& group);
     Parameter& Advanced(bool advanced = true);
+    /**
+     * Reals only: the default is "automatic" (NaN, chosen by the class at run
+     * time as `meaning` says); NaN is then a valid value (the unset one).
+     */
+    Parameter& Automatic(const std::string& meaning);
     /** Adds a named value to a choice. */
     Parameter& Choice(const std::string& key, int number, const std::string& doc);
     ///@}

@@ -284,6 +284,12 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Choice("smoke", RENDER_SMOKE, "emission-absorption lit by the scene's lights with self-shadowing.")
       .Doc("How rays combine their samples.")
       .Bind(&T::SetRenderMode, &T::GetRenderMode);
+    t.Real("iso_value", "IsoValue", 0.0)
+      .Automatic("the volume property's first iso value if set, else the middle of the colour map's range")
+      .Units("data units")
+      .Panel("Isosurface")
+      .Doc("Value whose first crossing the isosurface mode draws.")
+      .Bind(&T::SetIsoValue, &T::GetIsoValue);
     t.Integer("component", "ScalarComponent", -1)
       .Between(-1, 1 << 20)
       .Doc("Component of a multi-component array; -1: the only one, or the magnitude.")
@@ -1238,6 +1244,14 @@ void vtkPlumeVolumeMapper::Internals::SetUniforms(
       iso = vtkPlumeVolumeMapper::GetAutomaticIsoValue(property, range);
     }
     self->EffectiveIsoValue = iso;
+    // a value the data never reaches draws nothing: say so, once per value
+    const double* data = this->Scalars->GetScalarRange();
+    if ((iso < data[0] || iso > data[1]) && !(iso == self->LastWarnedIsoValue))
+    {
+      self->LastWarnedIsoValue = iso;
+      vtkWarningWithObjectMacro(self, << "'iso_value' " << iso << " is outside the data range [" << data[0]
+                                      << ", " << data[1] << "]: no surface will show");
+    }
     const double u = span > 0 ? (iso - range[0]) / span : (iso > range[0] ? 2.0 : -1.0);
     const float isoU = static_cast<float>(std::min(2.0, std::max(-1.0, u)));
     program->SetUniformf("IsoValue", isoU);

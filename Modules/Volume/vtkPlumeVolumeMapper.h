@@ -78,6 +78,7 @@
 #include "PlumeVolumeModule.h" // For export macro
 #include "vtkVolumeMapper.h"
 
+#include <limits> // For std::numeric_limits
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
 
@@ -269,7 +270,8 @@ public:
    * Iso value (data units) for ISOSURFACE_BLEND. Default NaN = the property's
    * first iso value if it was set (anything but VTK's default, a single 0),
    * else GetAutomaticIsoValue (the middle of the colour transfer function's
-   * range).
+   * range). Rendering with a value outside the data's range warns (once per
+   * value): no surface shows. Scene key `iso_value`.
    */
   vtkSetMacro(IsoValue, double);
   vtkGetMacro(IsoValue, double);
@@ -452,6 +454,7 @@ protected:
   double OpacityUnitDistance = 0.0;
   double EffectiveOpacityUnitDistance = 1.0;
   double EffectiveIsoValue = 0.0;
+  double LastWarnedIsoValue = std::numeric_limits<double>::quiet_NaN(); // warned about once
 
 private:
   vtkPlumeVolumeMapper(const vtkPlumeVolumeMapper&) = delete;

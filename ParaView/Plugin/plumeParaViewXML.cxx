@@ -79,6 +79,10 @@ std::string Documentation(const Table::Parameter& p)
   {
     doc += " " + option.Key + ": " + option.Doc + ".";
   }
+  if (p.IsAutomatic)
+  {
+    doc += " Default: automatic (nan): " + p.AutomaticMeaning + "; type nan to return to it.";
+  }
   return Escape(doc);
 }
 
@@ -130,8 +134,13 @@ void WriteProperty(std::ostream& os, const Table::Parameter& p)
       break;
     }
     case Kind::Real:
+      // "automatic" (NaN): no XML default; default_values="none" makes ParaView
+      // take the initial value from the C++ object through the information
+      // property (vtkSMDoubleVectorProperty::ReadXMLAttributes), so the panel
+      // shows nan until the user types a value
       os << "      <DoubleVectorProperty " << common << " number_of_elements=\"1\" default_values=\""
-         << Number(std::get<double>(p.Default)) << "\">\n        <DoubleRangeDomain name=\"range\"";
+         << (p.IsAutomatic ? std::string("none") : Number(std::get<double>(p.Default)))
+         << "\">\n        <DoubleRangeDomain name=\"range\"";
       if (finiteMin)
       {
         os << " min=\"" << Number(p.Minimum) << "\"";

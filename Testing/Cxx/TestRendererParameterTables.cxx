@@ -2,7 +2,8 @@
 // construction every getter returns the table's default; every setter keeps
 // the ends of the table's range and each named choice unchanged (a class that
 // clamps tighter than its table, or a binding to the wrong property, fails);
-// defaults lie in their own ranges; keys and properties are unique.
+// defaults lie in their own ranges; keys and properties are unique. An
+// "automatic" real (NaN default) is checked on its own (CheckAutomatic).
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeAirlightPass.h"
 #include "vtkPlumeDerivedGeometry.h"
@@ -19,7 +20,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <set>
+#include <sstream>
+#include <stdexcept>
 
 namespace
 {
@@ -68,7 +72,8 @@ int CheckTable(const Table& table, vtkObject* fresh, vtkObject* scratch)
         probes = { static_cast<long long>(p.Minimum), static_cast<long long>(p.Maximum) };
         break;
       case Table::Kind::Real:
-        probes = { p.Minimum, p.Maximum };
+        // an unbounded (e.g. automatic) real: finite values either side of 0
+        probes = { std::isfinite(p.Minimum) ? p.Minimum : -2.5, std::isfinite(p.Maximum) ? p.Maximum : 3.5 };
         break;
       case Table::Kind::Choice:
         for (const auto& o : p.Options)
@@ -100,6 +105,97 @@ int CheckTable(const Table& table, vtkObject* fresh, vtkObject* scratch)
     }
   }
   std::printf("%s: %zu parameters checked\n", table.GetClassName().c_str(), table.GetParameters().size());
+  return failures;
+}
+
+// An "automatic" real (the volume's iso_value): NaN is its default and stays
+// valid (unset); a finite value is set; anything else is one error naming it;
+// ordinary reals still refuse NaN; the markdown says "automatic".
+int CheckAutomatic()
+{
+  int failures = 0;
+  auto fail = [&](const std::string& what) {
+    std::printf("automatic: %s\n", what.c_str());
+    ++failures;
+  };
+  const Table& table = vtkPlumeVolumeMapper::GetParameterTable();
+  const Table::Parameter* iso = table.Find("iso_value");
+  if (!iso || iso->Property != "IsoValue" || !iso->IsAutomatic)
+  {
+    fail("vtkPlumeVolumeMapper declares no automatic iso_value bound to IsoValue");
+    return failures;
+  }
+  vtkNew<vtkPlumeVolumeMapper> mapper;
+  if (!std::isnan(mapper->GetIsoValue()) || !std::isnan(std::get<double>(iso->Default)))
+  {
+    fail("the default is not NaN (automatic)");
+  }
+  // absent: what a scene without the key leaves (defaults applied) is NaN
+  mapper->SetIsoValue(3.0);
+  table.ApplyDefaults(mapper);
+  if (!std::isnan(mapper->GetIsoValue()))
+  {
+    fail("ApplyDefaults left " + std::to_string(mapper->GetIsoValue()) + ", not NaN");
+  }
+  // given: set, also as an integer (JSON 7)
+  iso->Set(mapper, 0.25);
+  if (mapper->GetIsoValue() != 0.25)
+  {
+    fail("Set(0.25) gave " + std::to_string(mapper->GetIsoValue()));
+  }
+  iso->Set(mapper, 7LL);
+  if (mapper->GetIsoValue() != 7.0)
+  {
+    fail("Set(7) gave " + std::to_string(mapper->GetIsoValue()));
+  }
+  // bad values: one error naming the key and the value, nothing set
+  const std::vector<std::pair<Table::Value, std::string>> bad = {
+    { std::string("auto"), "\"auto\"" }, { std::numeric_limits<double>::infinity(), "inf" }, { true, "true" }
+  };
+  for (const auto& [value, shown] : bad)
+  {
+    try
+    {
+      iso->Set(mapper, value);
+      fail("Set(" + shown + ") accepted");
+    }
+    catch (const std::invalid_argument& e)
+    {
+      const std::string what = e.what();
+      if (what.find("'iso_value'") == std::string::npos || what.find(shown) == std::string::npos)
+      {
+        fail("the error for " + shown + " does not name key and value: " + what);
+      }
+    }
+    if (mapper->GetIsoValue() != 7.0)
+    {
+      fail("a refused value changed the iso value");
+    }
+  }
+  // NaN is a valid value only for an automatic parameter
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!iso->Check(nan).empty() || table.Find("sample_distance")->Check(nan).empty())
+  {
+    fail("NaN: accepted by an ordinary real or refused by the automatic one");
+  }
+  std::ostringstream markdown;
+  table.WriteMarkdown(markdown);
+  if (markdown.str().find("| `iso_value` | number | automatic (" + iso->AutomaticMeaning + ") |") ==
+    std::string::npos)
+  {
+    fail("the markdown does not document iso_value's default as automatic");
+  }
+  // only reals can be automatic
+  try
+  {
+    Table t("Test", "");
+    t.Integer("n", "N", 1).Automatic("never");
+    fail("an automatic integer was accepted");
+  }
+  catch (const std::logic_error&)
+  {
+  }
+  std::printf("automatic iso_value checked\n");
   return failures;
 }
 }
@@ -154,5 +250,6 @@ int main()
       }
     }
   }
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  failures += CheckAutomatic();
+    return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -8,13 +8,17 @@
 //  - iso value: unset (the property at VTK's default, one value 0), the
 //    middle of the colour transfer function's range,
 //    drawing exactly what that value set explicitly draws;
-//  - the unit distance declared in the parameter table with its default.
+//  - an iso value outside the data warns once per value (no surface shows);
+//  - the unit distance and the iso value declared in the parameter table.
 #include "plumeVolumeTestUtil.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
 #include "vtkContourValues.h"
 #include "vtkPlumeParameterTable.h"
 
+#include <cmath>
 #include <limits>
 
 int TestVolumeDefaults(int, char*[])
@@ -107,11 +111,38 @@ int TestVolumeDefaults(int, char*[])
     fail("the property's iso value is not honoured");
   }
 
+  // an iso value outside the data warns (no surface shows), once per value
+  int warnings = 0;
+  vtkNew<vtkCallbackCommand> onWarning;
+  onWarning->SetClientData(&warnings);
+  onWarning->SetCallback([](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+  s.Mapper->AddObserver(vtkCommand::WarningEvent, onWarning);
+  s.Mapper->SetIsoValue(1e3);
+  s.Window->Render();
+  s.Window->Render();
+  const int sameValue = warnings;
+  s.Mapper->SetIsoValue(2e3);
+  s.Window->Render();
+  s.Mapper->SetIsoValue(0.4);
+  s.Window->Render();
+  std::printf("out-of-range iso warnings: %d after two renders at 1e3, %d after 2e3 and 0.4 (want 1, 2)\n",
+    sameValue, warnings);
+  if (sameValue != 1 || warnings != 2)
+  {
+    fail("an iso value outside the data is not warned about once per value");
+  }
+  s.Mapper->RemoveObserver(onWarning);
+
   // ---- declared once, in the parameter table
   const auto* unit = vtkPlumeVolumeMapper::GetParameterTable().Find("opacity_unit_distance");
   if (!unit || unit->Property != "OpacityUnitDistance" || std::get<double>(unit->Default) != 0.0)
   {
     fail("opacity_unit_distance is not in the parameter table with default 0 (automatic)");
+  }
+  const auto* iso = vtkPlumeVolumeMapper::GetParameterTable().Find("iso_value");
+  if (!iso || iso->Property != "IsoValue" || !iso->IsAutomatic || !std::isnan(std::get<double>(iso->Default)))
+  {
+    fail("iso_value is not in the parameter table as an automatic (NaN) IsoValue");
   }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
