@@ -1,5 +1,6 @@
 #include "vtkPlumeDerivedGeometry.h"
 
+#include "vtkPlumeInputValidation.h"
 #include "vtkPlumeParameterTable.h"
 
 #include "vtkAppendPolyData.h"
@@ -334,10 +335,32 @@ int vtkPlumeDerivedGeometry::RequestData(
     this->LastError = "no input dataset";
     return 0;
   }
+  this->Estimate.clear();
   if (!this->Derive(input, seeds, output))
   {
     output->Initialize();
     return 0;
+  }
+  // What the filter made, against the memory budget: VTK's filters have no
+  // bound of their own, and the renderers copy the result again.
+  auto* result = vtkDataSet::SafeDownCast(output);
+  if (result)
+  {
+    std::ostringstream what;
+    what << OperationKeys[this->Operation] << ": the result's " << result->GetNumberOfCells() << " cells and "
+         << result->GetNumberOfPoints() << " points";
+    if (!this->Estimate.empty())
+    {
+      what << " (estimated before the filter: " << this->Estimate << ")";
+    }
+    const std::string tooBig =
+      vtkPlumeInputValidation::CheckMemory(1024.0 * static_cast<double>(result->GetActualMemorySize()), what.str());
+    if (!tooBig.empty())
+    {
+      this->LastError = tooBig;
+      output->Initialize();
+      return 0;
+    }
   }
   return 1;
 }
@@ -487,6 +510,18 @@ bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDa
     }
     if (this->Operation == CONTOUR)
     {
+      // Work: every cell is visited once per value. Memory has no useful bound
+      // before the filter (most cells are not cut), so it is checked after.
+      const double cells = static_cast<double>(data->GetNumberOfCells());
+      const double visits = cells * static_cast<double>(this->UsedValues.size());
+      std::ostringstream what;
+      what << "the contour of " << data->GetNumberOfCells() << " cells at " << this->UsedValues.size() << " values";
+      const std::string tooMuch = vtkPlumeInputValidation::CheckWork(visits, what.str());
+      if (!tooMuch.empty())
+      {
+        return fail(tooMuch);
+      }
+      this->Estimate = "at most " + Num(5 * visits) + " triangles, 5 per cell and value";
       vtkNew<vtkContourFilter> contour;
       contour->SetInputData(data);
       contour->SetInputArrayToProcess(0, 0, 0, association, arrayName.c_str());
@@ -604,6 +639,46 @@ bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDa
     return fail("the seeds dataset has " + std::to_string(seedData->GetNumberOfPoints()) + " points");
   }
   const double length = this->MaximumLength > 0 ? this->MaximumLength : diagonal;
+  // Steps to reach the length with cells of the mean size. vtkStreamSurface also
+  // resamples every streamline to this many points (its ruled surface), so the
+  // default 2000 made 1.6 M points on the office.
+  const double meanCell = std::cbrt(std::max(1e-300, (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) *
+                                      std::max(bounds[5] - bounds[4], 1e-6 * diagonal) /
+                                      std::max<vtkIdType>(1, data->GetNumberOfCells())));
+  const int maximumSteps = static_cast<int>(
+    std::min(std::max(std::ceil(length / (this->StepLength * meanCell)), 10.0), 20000.0));
+  {
+    // Bound the result before tracing: at most seeds x steps x directions points
+    // (a stream surface resamples every line to exactly `steps` points; a ribbon
+    // doubles them), each with its coordinates, the interpolated point arrays and
+    // about two triangles' connectivity. Iterative seeding may add seeds; the
+    // check after the filter catches what it adds.
+    const double seedCount = static_cast<double>(seedData->GetNumberOfPoints());
+    const double directions = this->IntegrationDirection == BOTH ? 2 : 1;
+    const double points = seedCount * maximumSteps * directions * (this->Operation == RIBBON ? 2 : 1);
+    double bytesPerPoint = 3 * sizeof(float) + 8.0 * sizeof(vtkIdType);
+    for (int i = 0; i < data->GetPointData()->GetNumberOfArrays(); ++i)
+    {
+      if (vtkDataArray* a = data->GetPointData()->GetArray(i))
+      {
+        bytesPerPoint += a->GetNumberOfComponents() * a->GetDataTypeSize();
+      }
+    }
+    std::ostringstream what;
+    what << "the lines traced from " << seedData->GetNumberOfPoints() << " seeds x " << maximumSteps
+         << " steps (maximum_length / step_length) x " << directions << " directions (" << Num(points)
+         << " points)";
+    std::string tooMuch = vtkPlumeInputValidation::CheckMemory(points * bytesPerPoint, what.str());
+    if (tooMuch.empty())
+    {
+      tooMuch = vtkPlumeInputValidation::CheckWork(seedCount * maximumSteps * directions, what.str());
+    }
+    if (!tooMuch.empty())
+    {
+      return fail(tooMuch);
+    }
+    this->Estimate = "at most " + Num(points) + " points";
+  }
   auto makeTracer = [&](int direction) {
     vtkSmartPointer<vtkStreamTracer> tracer;
     if (this->Operation == STREAM_SURFACE)
@@ -623,14 +698,7 @@ bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDa
     tracer->SetIntegrationStepUnit(vtkStreamTracer::CELL_LENGTH_UNIT);
     tracer->SetInitialIntegrationStep(this->StepLength);
     tracer->SetMaximumPropagation(length);
-    // Steps to reach the length with cells of the mean size. vtkStreamSurface also
-    // resamples every streamline to this many points (its ruled surface), so the
-    // default 2000 made 1.6 M points on the office.
-    const double cell = std::cbrt(std::max(1e-300, (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) *
-                                    std::max(bounds[5] - bounds[4], 1e-6 * diagonal) /
-                                    std::max<vtkIdType>(1, data->GetNumberOfCells())));
-    const double steps = std::ceil(length / (this->StepLength * cell));
-    tracer->SetMaximumNumberOfSteps(static_cast<int>(std::min(std::max(steps, 10.0), 20000.0)));
+    tracer->SetMaximumNumberOfSteps(maximumSteps);
     tracer->SetTerminalSpeed(this->TerminalSpeed);
     tracer->SetIntegrationDirection(direction);
     tracer->SetComputeVorticity(this->Operation == RIBBON);

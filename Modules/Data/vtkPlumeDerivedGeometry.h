@@ -38,6 +38,14 @@
  * array, zero normal, a seed outside the data) or an empty result fails the
  * update with GetLastError() naming the parameter's scene key and its value.
  *
+ * Budgets (issue 12): the output size is estimated before the filter runs
+ * where it can be (contour and slice: work of the input's cells times the
+ * values; streamlines, stream surfaces and ribbons: seeds x maximum steps x
+ * directions points against the memory budget and integration steps against
+ * the work budget, vtkPlumeInputValidation::CheckMemory/CheckWork), and every
+ * result is checked against the memory budget after the filter; either fails
+ * the update with a message naming the count, the estimate and the budget.
+ *
  * Parameters are declared once in GetParameterTable() (scene type "derived").
  */
 #ifndef vtkPlumeDerivedGeometry_h
@@ -241,6 +249,9 @@ private:
   std::string UsedArrayName;
   bool UsedCellData = false;
   std::string LastError;
+  // The output size Derive predicted before running the filter, for the
+  // post-filter budget message ("" when it could not predict one).
+  std::string Estimate;
 };
 
 #endif

@@ -480,6 +480,44 @@ def build(c):
         c.render("SheetTriangleBudget_" + mode, "error", scene, expect, env=env)
         c.render("SheetTriangleBudgetOk_" + mode, "ok", scene, "")
 
+    # ---- derived geometry against the budgets: estimated before the filter
+    # (contour: cells x values against the work budget; traced lines: seeds x
+    # steps x directions points against both) and the result checked after it
+    vortex40 = {"source": "vortex", "dimensions": [40, 40, 40]}
+    many_values = [i / 1000.0 for i in range(1, 1000)]
+    def derived_scene(tag, derived):
+        return c.scene("derived_budget_" + tag, {"datasets": {"v": vortex40, "d": dict(derived, input="v")},
+                                                  "representations": [{"type": "surface", "dataset": "d"}]})
+    contour = derived_scene("contour", {"source": "contour", "values": many_values})
+    c.render("DerivedBudgetContourResult", "error", contour,
+             r"datasets\.d: contour: the result's \d{7} cells and \d{7} points \(estimated before the filter: at most "
+             r"2\.96298e\+08 triangles, 5 per cell and value\) needs about [\d.]+ MB, over the memory budget of 2 MB "
+             r"\(PLUME_MEMORY_BUDGET_MB\)", env={"PLUME_MEMORY_BUDGET_MB": "2"})
+    c.render("DerivedBudgetContourWork", "error", contour,
+             r"datasets\.d: contour: the contour of 59319 cells at 999 values needs about 5\.93e\+07 operations, "
+             r"over the work budget of 1e\+06 \(PLUME_WORK_BUDGET\)", env={"PLUME_WORK_BUDGET": "1e6"})
+    c.render("DerivedBudgetClipResult", "error", derived_scene("clip", {"source": "clip"}),
+             r"datasets\.d: clip: the result's \d+ cells and \d+ points needs about [\d.]+ MB, over the memory budget "
+             r"of 1 MB \(PLUME_MEMORY_BUDGET_MB\)", env={"PLUME_MEMORY_BUDGET_MB": "1"})
+    for source, env, expect in [
+        ("stream_surface", {"PLUME_MEMORY_BUDGET_MB": "2"},
+         r"datasets\.d: stream_surface: the lines traced from 100001 seeds x \d+ steps \(maximum_length / step_length\) "
+         r"x 2 directions \([\d.e+]+ points\) needs about [\d.]+ MB, over the memory budget of 2 MB \(PLUME_MEMORY_BUDGET_MB\)"),
+        ("streamlines", {"PLUME_WORK_BUDGET": "1e5"},
+         r"datasets\.d: streamlines: the lines traced from 1001 seeds x \d+ steps \(maximum_length / step_length\) "
+         r"x 2 directions \([\d.e+]+ points\) needs about [\d.e+]+ operations, over the work budget of 1e\+05 \(PLUME_WORK_BUDGET\)"),
+        ("ribbon", {"PLUME_MEMORY_BUDGET_MB": "2"},
+         r"datasets\.d: ribbon: the lines traced from 100001 seeds x \d+ steps .* needs about [\d.]+ MB, over the memory budget of 2 MB"),
+    ]:
+        name = "DerivedBudget" + "".join(w.capitalize() for w in source.split("_"))
+        seeds = 1000 if source == "streamlines" else 100000  # streamlines: within memory, over the work budget
+        c.render(name, "error", derived_scene(source, {"source": source, "seed_resolution": seeds}), expect, env=env)
+    # the same kinds of scene within the budget still render
+    c.render("DerivedBudgetContourOk", "ok", derived_scene("contour_ok", {"source": "contour", "values": [0.1, 0.5]}),
+             "", env={"PLUME_MEMORY_BUDGET_MB": "64"})
+    c.render("DerivedBudgetStreamSurfaceOk", "ok", derived_scene("stream_surface_ok", {"source": "stream_surface"}),
+             "", env={"PLUME_MEMORY_BUDGET_MB": "64"})
+
     # ---- scenes: nesting, cycles, budgets, parameter arithmetic
     c.render("NestedRepresentations", "error", c.scene("nested_reps", '{"representations": %s}' % nested(5000)),
              r"scene file '.*nested_reps\.json' nests JSON deeper than 64 levels")
