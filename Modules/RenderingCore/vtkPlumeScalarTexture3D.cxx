@@ -1,5 +1,6 @@
 #include "vtkPlumeScalarTexture3D.h"
 
+#include "vtkPlumeTexture3DSize.h"
 #include "vtkPlumeTextureHandOver.h"
 
 #include "vtkDataArray.h"
@@ -140,21 +141,9 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
     this->ReleaseGraphicsResources(this->Window); // textures belong to one context
   }
   this->Window = window;
-  if (this->Max3DTextureSize == 0)
+  this->LastError = plume::Check3DTextureSize(window, dims, this->Max3DTextureSize);
+  if (!this->LastError.empty())
   {
-    window->MakeCurrent();
-    GLint maxSize = 0;
-    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
-    this->Max3DTextureSize = maxSize;
-  }
-  if (dims[0] > this->Max3DTextureSize || dims[1] > this->Max3DTextureSize ||
-    dims[2] > this->Max3DTextureSize)
-  {
-    std::ostringstream msg;
-    msg << "grid " << dims[0] << "x" << dims[1] << "x" << dims[2]
-        << " exceeds GL_MAX_3D_TEXTURE_SIZE = " << this->Max3DTextureSize
-        << " along at least one axis; resample the data to a coarser image";
-    this->LastError = msg.str();
     return false;
   }
 
@@ -165,15 +154,7 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
   // usable as it is only without a mask, gradients or non-finite values
   vtkTextureObject* handed = (mask || this->Gradients || comps != 1)
     ? nullptr
-    : vtkPlumeTextureHandOver::Find(array, window);
-  if (handed &&
-    (handed->GetWidth() != static_cast<unsigned int>(dims[0]) ||
-      handed->GetHeight() != static_cast<unsigned int>(dims[1]) ||
-      handed->GetDepth() != static_cast<unsigned int>(dims[2]) || handed->GetComponents() != 1 ||
-      handed->GetVTKDataType() != VTK_FLOAT))
-  {
-    handed = nullptr;
-  }
+    : vtkPlumeTextureHandOver::Find(array, window, dims, 1);
   if (handed)
   {
     if (!(sig == this->Analysed) || this->ValueShift != 0.0 || this->ValueScale != 1.0)

@@ -57,6 +57,20 @@ vtkTextureObject* vtkPlumeTextureHandOver::Find(vtkDataArray* array, vtkOpenGLRe
   return handOver->Texture;
 }
 
+vtkTextureObject* vtkPlumeTextureHandOver::Find(
+  vtkDataArray* array, vtkOpenGLRenderWindow* window, const int dims[3], int components)
+{
+  vtkTextureObject* texture = vtkPlumeTextureHandOver::Find(array, window);
+  if (!texture || texture->GetWidth() != static_cast<unsigned int>(dims[0]) ||
+    texture->GetHeight() != static_cast<unsigned int>(dims[1]) ||
+    texture->GetDepth() != static_cast<unsigned int>(dims[2]) || texture->GetComponents() != components ||
+    texture->GetVTKDataType() != VTK_FLOAT)
+  {
+    return nullptr;
+  }
+  return texture;
+}
+
 void vtkPlumeTextureHandOver::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

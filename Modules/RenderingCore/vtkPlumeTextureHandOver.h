@@ -66,6 +66,14 @@ public:
   /** The GPU copy of `array` usable in `window`, or nullptr (see the class documentation). */
   static vtkTextureObject* Find(vtkDataArray* array, vtkOpenGLRenderWindow* window);
 
+  /**
+   * Find(array, window) if the texture also has the layout the consumer
+   * needs: dims[0] x dims[1] x dims[2] texels of `components` float channels;
+   * else nullptr.
+   */
+  static vtkTextureObject* Find(
+    vtkDataArray* array, vtkOpenGLRenderWindow* window, const int dims[3], int components);
+
 protected:
   vtkPlumeTextureHandOver();
   ~vtkPlumeTextureHandOver() override;

@@ -1,5 +1,6 @@
 #include "vtkPlumeVectorTexture3D.h"
 
+#include "vtkPlumeTexture3DSize.h"
 #include "vtkPlumeTextureHandOver.h"
 
 #include "vtkDataArray.h"
@@ -145,20 +146,9 @@ bool vtkPlumeVectorTexture3D::Update(
 
   int dims[3];
   image->GetDimensions(dims);
-  if (this->Max3DTextureSize == 0)
+  this->LastError = plume::Check3DTextureSize(window, dims, this->Max3DTextureSize);
+  if (!this->LastError.empty())
   {
-    GLint maxSize = 0;
-    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
-    this->Max3DTextureSize = maxSize;
-  }
-  if (dims[0] > this->Max3DTextureSize || dims[1] > this->Max3DTextureSize ||
-    dims[2] > this->Max3DTextureSize)
-  {
-    std::ostringstream msg;
-    msg << "grid " << dims[0] << "x" << dims[1] << "x" << dims[2]
-        << " exceeds GL_MAX_3D_TEXTURE_SIZE = " << this->Max3DTextureSize
-        << " along at least one axis; resample the data to a coarser image";
-    this->LastError = msg.str();
     return false;
   }
 
@@ -166,15 +156,7 @@ bool vtkPlumeVectorTexture3D::Update(
     std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 }) };
 
   // the producer's GPU copy (same context, array unchanged, our layout), never with a mask
-  vtkTextureObject* handed = mask ? nullptr : vtkPlumeTextureHandOver::Find(vectors, window);
-  if (handed &&
-    (handed->GetWidth() != static_cast<unsigned int>(dims[0]) ||
-      handed->GetHeight() != static_cast<unsigned int>(dims[1]) ||
-      handed->GetDepth() != static_cast<unsigned int>(dims[2]) || handed->GetComponents() != 4 ||
-      handed->GetVTKDataType() != VTK_FLOAT))
-  {
-    handed = nullptr;
-  }
+  vtkTextureObject* handed = mask ? nullptr : vtkPlumeTextureHandOver::Find(vectors, window, dims, 4);
   this->HandedOver = handed != nullptr;
   if (handed)
   {
