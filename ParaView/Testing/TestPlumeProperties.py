@@ -17,6 +17,7 @@ Splat filter, for every property generated from the class's parameter table:
 Also checks that each representation exposes every property of its mapper
 proxy (nothing of the table is missing from the panel).
 """
+import math
 import os
 import sys
 
@@ -51,6 +52,15 @@ def elements(prop):
     return [prop.GetElement(i) for i in range(prop.GetNumberOfElements())]
 
 
+def same_numbers(got, want):
+    """Equal to 1e-12 relative; NaN equals NaN (an "automatic" parameter's unset default)."""
+    def close(a, b):
+        if math.isnan(a) or math.isnan(b):
+            return math.isnan(a) and math.isnan(b)
+        return abs(a - b) <= 1e-12 * max(1.0, abs(b))
+    return len(got) == len(want) and all(close(a, b) for a, b in zip(got, want))
+
+
 def new_value(prop):
     """A valid value different from the property's default."""
     cls = prop.GetClassName()
@@ -67,6 +77,9 @@ def new_value(prop):
     rng = prop.FindDomain("vtkSMIntRangeDomain") or prop.FindDomain("vtkSMDoubleRangeDomain")
     out = []
     for i, d in enumerate(default):
+        if math.isnan(d):  # automatic (unset): any finite value sets it
+            out.append(0.25 + 0.125 * i)
+            continue
         lo = rng.GetMinimum(i) if rng is not None and rng.GetMinimumExists(i) else None
         hi = rng.GetMaximum(i) if rng is not None and rng.GetMaximumExists(i) else None
         if cls == "vtkSMIntVectorProperty":
@@ -95,7 +108,7 @@ def check(label, proxy, setter):
         if prop.GetClassName() == "vtkSMStringVectorProperty":
             same = got == default
         else:
-            same = len(got) == len(default) and all(abs(a - b) <= 1e-12 * max(1.0, abs(b)) for a, b in zip(got, default))
+            same = same_numbers(got, default)
         if not same:
             fail("%s.%s: C++ default %s, XML default %s" % (label, name, got, default))
     changed = {}
@@ -109,7 +122,7 @@ def check(label, proxy, setter):
         if isinstance(value[0], str):
             same = got == value
         else:
-            same = len(got) == len(value) and all(abs(a - b) <= 1e-12 * max(1.0, abs(b)) for a, b in zip(got, value))
+            same = same_numbers(got, value)
         if not same:
             fail("%s.%s: set %s, C++ returns %s" % (label, name, value, got))
     print("%s: %d properties, defaults and set values reach the C++ object" % (label, len(names)))
