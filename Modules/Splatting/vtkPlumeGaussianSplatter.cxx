@@ -28,6 +28,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
+#include <array>
+#include <set>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -43,6 +45,18 @@ namespace
 bool Finite3(const double v[3])
 {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+
+bool LinePointIsGhost(const vtkUnsignedCharArray* ghosts, vtkIdType id)
+{
+  return ghosts && id < ghosts->GetNumberOfValues() &&
+    (ghosts->GetValue(id) & vtkDataSetAttributes::DUPLICATEPOINT) != 0;
+}
+
+bool LineCellIsGhost(const vtkUnsignedCharArray* ghosts, vtkIdType id)
+{
+  return ghosts && id < ghosts->GetNumberOfValues() &&
+    (ghosts->GetValue(id) & (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)) != 0;
 }
 
 double Now()
@@ -367,14 +381,30 @@ int vtkPlumeGaussianSplatter::RequestData(
   if (lines && lines->GetNumberOfLines() > 0)
   {
     vtkDataArray* radii = radiusArray(lines);
+    // Where a line continues in another cell (here or, through
+    // LineContinuations, on another rank), the vertex it ends on is that
+    // cell's first vertex: splatted there, with the forward difference.
+    std::vector<double> starts;
+    vtkPlumeGaussianSplatter::CollectLineStarts(lines, starts);
+    starts.insert(starts.end(), this->LineContinuations.begin(), this->LineContinuations.end());
+    std::set<std::array<double, 3>> continued;
+    for (size_t k = 0; k + 2 < starts.size(); k += 3)
+    {
+      continued.insert({ starts[k], starts[k + 1], starts[k + 2] });
+    }
+    const vtkUnsignedCharArray* pointGhosts = lines->GetPointGhostArray();
+    const vtkUnsignedCharArray* cellGhosts = lines->GetCellGhostArray();
+    const vtkIdType firstLineId = lines->GetNumberOfVerts(); // cell ids: verts, then lines
     vtkCellArray* cells = lines->GetLines();
     vtkIdType npts;
     const vtkIdType* ids;
+    vtkIdType cellIndex = -1;
     for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
     {
-      if (npts < 1)
+      ++cellIndex;
+      if (npts < 1 || LineCellIsGhost(cellGhosts, firstLineId + cellIndex))
       {
-        continue;
+        continue; // another piece owns the whole cell
       }
       double first[3], last[3];
       lines->GetPoint(ids[0], first);
@@ -382,8 +412,13 @@ int vtkPlumeGaussianSplatter::RequestData(
       const bool closed = npts > 1 && (ids[0] == ids[npts - 1] ||
         (first[0] == last[0] && first[1] == last[1] && first[2] == last[2]));
       const vtkIdType m = closed ? npts - 1 : npts;
+      const bool continues = !closed && npts > 1 && continued.count({ last[0], last[1], last[2] }) > 0;
       for (vtkIdType i = 0; i < m; ++i)
       {
+        if (LinePointIsGhost(pointGhosts, ids[i]) || (continues && i == m - 1))
+        {
+          continue; // splatted by the piece or cell that owns the vertex
+        }
         double p[3], q[3];
         lines->GetPoint(ids[i], p);
         double d[3] = { 0, 0, 0 };
@@ -619,4 +654,38 @@ void vtkPlumeGaussianSplatter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntegrateOverVoxel: " << this->IntegrateOverVoxel << "\n";
   os << indent << "AutoGPUThreshold: " << this->AutoGPUThreshold << "\n";
   os << indent << "GPUHandOver: " << this->GPUHandOver << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeGaussianSplatter::CollectLineStarts(vtkPolyData* lines, std::vector<double>& starts)
+{
+  if (!lines || lines->GetNumberOfLines() == 0)
+  {
+    return;
+  }
+  const vtkUnsignedCharArray* pointGhosts = lines->GetPointGhostArray();
+  const vtkUnsignedCharArray* cellGhosts = lines->GetCellGhostArray();
+  const vtkIdType firstLineId = lines->GetNumberOfVerts();
+  vtkCellArray* cells = lines->GetLines();
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkIdType cellIndex = -1;
+  for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
+  {
+    ++cellIndex;
+    // only a start that is splatted here takes the vertex over from the line ending on it
+    if (npts < 2 || ids[0] == ids[npts - 1] || LineCellIsGhost(cellGhosts, firstLineId + cellIndex) ||
+      LinePointIsGhost(pointGhosts, ids[0]))
+    {
+      continue;
+    }
+    double first[3], last[3];
+    lines->GetPoint(ids[0], first);
+    lines->GetPoint(ids[npts - 1], last);
+    if (first[0] == last[0] && first[1] == last[1] && first[2] == last[2])
+    {
+      continue; // a closed loop
+    }
+    starts.insert(starts.end(), first, first + 3);
+  }
 }

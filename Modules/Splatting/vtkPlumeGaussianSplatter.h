@@ -18,6 +18,13 @@
  *    equal to the first, or the same position) wraps around as in the seed's
  *    torus; the last vertex of an open line uses the backward difference.
  *    Zero-length segments and single-vertex lines contribute nothing (sums).
+ *    Lines cut into pieces (over ranks, or into cells) splat each vertex once,
+ *    as the uncut line does: a line cell flagged DUPLICATECELL or HIDDENCELL
+ *    in vtkGhostType is not splatted, nor is a vertex flagged DUPLICATEPOINT
+ *    (it is still the neighbour of the next), and an open line's last vertex
+ *    is not splatted when another open line starts at the same position (the
+ *    line continues there; that start splats it with the forward difference).
+ *    vtkPlumePGaussianSplatter applies the last rule across MPI ranks.
  *
  * Splat radius σ: Radius (world units, default 0.1), or per point the
  * point array RadiusArrayName when set and present (in either input).
@@ -78,6 +85,7 @@
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkImageData;
 class vtkPlumeParameterTable;
@@ -253,6 +261,19 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   vtkMTimeType GetMTime() override;
+
+  /**
+   * Appends the position (x, y, z) of the first vertex of every open line
+   * cell of lines that is splatted (not a ghost): where a line ending on the
+   * same position continues.
+   */
+  static void CollectLineStarts(vtkPolyData* lines, std::vector<double>& starts);
+  /**
+   * Line starts held elsewhere (other ranks), x, y, z each, added to the
+   * local ones for the continuation rule. Default empty; set by
+   * vtkPlumePGaussianSplatter around an execution.
+   */
+  std::vector<double> LineContinuations;
 
   int Mode = VECTOR_SUM;
   int Backend = BACKEND_AUTO;

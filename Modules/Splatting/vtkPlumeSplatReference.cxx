@@ -3,6 +3,7 @@
 #include "vtkPlumeGaussianSplatter.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
@@ -151,12 +152,40 @@ void vtkPlumeSplatReference::Configure(vtkPlumeGaussianSplatter* splatter)
     vtkDataArray* radii = radiusName.empty() ? nullptr : lines->GetPointData()->GetArray(radiusName.c_str());
     const double factor = splatter->GetLineScaleFactor();
     vtkCellArray* cells = lines->GetLines();
+    // pieces of cut lines: ghost cells and ghost vertices belong to another
+    // piece; an open line's end where another open line starts is that one's
+    vtkDataArray* cellGhost = lines->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+    vtkDataArray* pointGhost = lines->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+    auto flagged = [](vtkDataArray* ghost, vtkIdType id, int bits) {
+      return ghost && id < ghost->GetNumberOfTuples() && (static_cast<int>(ghost->GetComponent(id, 0)) & bits);
+    };
+    auto cellSkipped = [&](vtkIdType cell) {
+      return flagged(cellGhost, lines->GetNumberOfVerts() + cell, vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL);
+    };
+    std::vector<std::array<double, 3>> openStarts;
     for (vtkIdType cell = 0; cells && cell < cells->GetNumberOfCells(); ++cell)
     {
       vtkIdType n;
       const vtkIdType* ids;
       cells->GetCellAtId(cell, n, ids);
-      if (n == 0)
+      if (n < 2 || cellSkipped(cell) || flagged(pointGhost, ids[0], vtkDataSetAttributes::DUPLICATEPOINT))
+      {
+        continue;
+      }
+      std::array<double, 3> a, b;
+      lines->GetPoint(ids[0], a.data());
+      lines->GetPoint(ids[n - 1], b.data());
+      if (ids[0] != ids[n - 1] && a != b)
+      {
+        openStarts.push_back(a);
+      }
+    }
+    for (vtkIdType cell = 0; cells && cell < cells->GetNumberOfCells(); ++cell)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      cells->GetCellAtId(cell, n, ids);
+      if (n == 0 || cellSkipped(cell))
       {
         continue;
       }
@@ -167,8 +196,17 @@ void vtkPlumeSplatReference::Configure(vtkPlumeGaussianSplatter* splatter)
       }
       bool closed = n > 1 && (ids[0] == ids[n - 1] || p[0] == p[n - 1]);
       const vtkIdType m = closed ? n - 1 : n;
+      bool continues = false;
+      for (const auto& start : openStarts)
+      {
+        continues = continues || (!closed && n > 1 && start == p[n - 1]);
+      }
       for (vtkIdType i = 0; i < m; ++i)
       {
+        if (flagged(pointGhost, ids[i], vtkDataSetAttributes::DUPLICATEPOINT) || (continues && i == m - 1))
+        {
+          continue;
+        }
         // velocity: to the next vertex (wrapping on a loop), backward at an open end
         double vel[3] = { 0, 0, 0 };
         const std::array<double, 3>* from = nullptr;
