@@ -10,10 +10,12 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <array>
+#include <vector>
 
 vtkStandardNewMacro(vtkPlumePGaussianSplatter);
 vtkCxxSetObjectMacro(vtkPlumePGaussianSplatter, Controller, vtkMultiProcessController);
@@ -50,6 +52,34 @@ int vtkPlumePGaussianSplatter::RequestData(
   {
     return this->Superclass::RequestData(request, inputVector, outputVector);
   }
+  // Lines cut over the ranks: where a rank's line ends on the start of
+  // another rank's line, the line continues there (the start splats the
+  // vertex; see the class documentation of vtkPlumeGaussianSplatter). Every
+  // rank's open-line starts go to every rank, 3 doubles each.
+  {
+    std::vector<double> starts;
+    CollectLineStarts(vtkPolyData::GetData(inputVector[1], 0), starts);
+    const vtkIdType mine = static_cast<vtkIdType>(starts.size());
+    std::vector<vtkIdType> lengths(ranks), offsets(ranks);
+    c->AllGather(&mine, lengths.data(), 1);
+    vtkIdType total = 0;
+    for (int r = 0; r < ranks; ++r)
+    {
+      offsets[r] = total;
+      total += lengths[r];
+    }
+    this->LineContinuations.assign(static_cast<size_t>(total), 0.0);
+    if (total > 0)
+    {
+      c->AllGatherV(starts.data(), this->LineContinuations.data(), mine, lengths.data(), offsets.data());
+    }
+  }
+  struct ClearContinuations
+  {
+    std::vector<double>& Starts;
+    ~ClearContinuations() { this->Starts.clear(); }
+  } clearAfter{ this->LineContinuations };
+
   const bool sum = this->Mode != DISTANCE_MAX;
   const double* mb = this->ModelBounds;
   const bool boundsGiven = this->GetReferenceImage() ||
@@ -103,7 +133,9 @@ int vtkPlumePGaussianSplatter::RequestData(
     return 0;
   }
   vtkImageData* output = vtkImageData::GetData(outputVector, 0);
-  vtkDataArray* field = output->GetPointData()->GetScalars();
+  // the field is the active vectors in VECTOR_SUM, the active scalars otherwise
+  const bool vectors = this->Mode == VECTOR_SUM;
+  vtkDataArray* field = vectors ? output->GetPointData()->GetVectors() : output->GetPointData()->GetScalars();
   if (!field)
   {
     vtkErrorMacro(<< "the splat produced no field to combine over ranks");
@@ -119,7 +151,14 @@ int vtkPlumePGaussianSplatter::RequestData(
     vtkErrorMacro(<< "combining the ranks' grids failed");
     return 0;
   }
-  output->GetPointData()->SetScalars(combined);
+  if (vectors)
+  {
+    output->GetPointData()->SetVectors(combined);
+  }
+  else
+  {
+    output->GetPointData()->SetScalars(combined);
+  }
 
   // this rank's piece of the grid
   const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())

@@ -7,7 +7,10 @@
  * under mpirun), every rank splats the points and lines it holds into the
  * same global grid and the grids are combined (summed; maximum in
  * DISTANCE_MAX) with an all-reduce, so the field is the serial one: each
- * splat is a term of a sum, whichever rank holds it.
+ * splat is a term of a sum, whichever rank holds it. Flow lines cut over
+ * the ranks splat each vertex once (ghost cells and ghost points are left to
+ * their owner, and a line ending where another rank's line starts continues
+ * there: the ranks exchange their open lines' first vertices first).
  *
  * The global grid: the reference image's, or ModelBounds when valid, or (the
  * default) the union of the ranks' automatic bounds. The automatic bounds
