@@ -8,8 +8,14 @@
  * each shallow-copied with cells marked as ghosts cropped away (pieces of a
  * distributed image then meet without overlap). Several leaves on one rank
  * are merged into one image (vtkImageAppend, extents preserved) when they
- * are pieces of one grid that tile a box; otherwise the first is drawn, with
- * a warning through `owner`. Other datasets give nullptr.
+ * are pieces of one grid that tile a box. Other pieces (AMR levels, blocks
+ * of different spacing or origin, overlapping ones) are resampled onto one
+ * image over the union of their bounds at the finest spacing among them
+ * (coarsened evenly when over the memory budget, PLUME_MEMORY_BUDGET_MB):
+ * each point takes the trilinear value of the finest piece that contains it,
+ * points no piece covers the array's minimum; the point arrays common to all
+ * pieces, as float. A warning through `owner` says what was done. Other
+ * datasets give nullptr.
  */
 #ifndef vtkPlumeImageInput_h
 #define vtkPlumeImageInput_h
