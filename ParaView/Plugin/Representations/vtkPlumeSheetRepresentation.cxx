@@ -82,18 +82,9 @@ int vtkPlumeSheetRepresentation::RequestData(
         cache->ShallowCopy(append->GetOutput());
       }
     }
-    if (cache->HasAnyGhostCells())
-    {
-      // Cells another rank owns (a filter that asked for ghost levels, e.g.
-      // a contour of image slabs, returns a layer of them at each seam): the
-      // owner draws them, and the smoke of a cell drawn twice is twice as
-      // dense. Measured: 2-rank images 99.06 % within one level of serial
-      // (max 32, rings where the vessels cross the seam) with them.
-      vtkNew<vtkPolyData> owned;
-      owned->DeepCopy(cache);
-      owned->RemoveGhostCells();
-      cache->ShallowCopy(owned);
-    }
+    // Cells another rank owns (ghost cells, e.g. the seam layer of a
+    // contour of image slabs) stay in the mesh: the mapper skips cells
+    // flagged DUPLICATECELL or HIDDENCELL itself (TestSheetGhostCells).
     if (cache->GetNumberOfPoints() > 0)
     {
       cache->GetBounds(this->DataBounds);
