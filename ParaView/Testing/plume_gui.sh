@@ -28,4 +28,6 @@ rc=$?
 rm -rf "$fbdir"
 echo "plume_gui: paraview exited with $rc; result: $(cat "$out/TestPlumeGUI.result" 2>/dev/null || echo none)"
 cat "$out/TestPlumeGUI.result.log" 2>/dev/null
+# the playback's checks (plume_gui_exit.xml) fail paraview's exit status
+[ "$rc" = 0 ] || { echo "plume_gui: the event playback failed (paraview exit status $rc)"; exit 1; }
 grep -qx OK "$out/TestPlumeGUI.result" 2>/dev/null
