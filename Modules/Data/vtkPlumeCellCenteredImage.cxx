@@ -1,5 +1,7 @@
 #include "vtkPlumeCellCenteredImage.h"
 
+#include "vtkPlumeWholeInput.h"
+
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -221,13 +223,7 @@ int vtkPlumeCellCenteredImage::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // the whole input always (the output's extent is not in the input's index space)
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
-  if (inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
-  {
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
-      inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
-  }
+  plume::RequestWholeExtent(inputVector[0]->GetInformationObject(0));
   return 1;
 }
 

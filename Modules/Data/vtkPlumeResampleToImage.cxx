@@ -1,6 +1,7 @@
 #include "vtkPlumeResampleToImage.h"
 
 #include "vtkPlumeInputValidation.h"
+#include "vtkPlumeWholeInput.h"
 
 #include "vtkCellData.h"
 #include "vtkCellDataToPointData.h"
@@ -326,12 +327,7 @@ int vtkPlumeResampleToImage::RequestUpdateExtent(
 {
   // Always ask for the whole input (our extents are not in the input's index space).
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT());
-  if (inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
-  {
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
-      inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
-  }
+  plume::RequestWholeExtent(inInfo);
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);

@@ -1,6 +1,5 @@
 #include "vtkPlumeScalarTexture3D.h"
 
-#include "vtkPlumeTexture3DSize.h"
 #include "vtkPlumeTextureHandOver.h"
 
 #include "vtkDataArray.h"
@@ -49,29 +48,8 @@ void Extract(const T* src, vtkIdType n, int comps, int component, std::vector<do
 }
 }
 
-vtkPlumeScalarTexture3D::vtkPlumeScalarTexture3D()
-  : Texture(vtkSmartPointer<vtkTextureObject>::New())
-{
-}
-
+vtkPlumeScalarTexture3D::vtkPlumeScalarTexture3D() = default;
 vtkPlumeScalarTexture3D::~vtkPlumeScalarTexture3D() = default;
-
-namespace
-{
-void SetSampling(vtkTextureObject* texture)
-{
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetWrapR(vtkTextureObject::ClampToEdge);
-  texture->SetMinificationFilter(vtkTextureObject::Linear);
-  texture->SetMagnificationFilter(vtkTextureObject::Linear);
-}
-}
-
-vtkTextureObject* vtkPlumeScalarTexture3D::GetTextureObject()
-{
-  return this->Bound ? this->Bound : this->Texture.Get();
-}
 
 void vtkPlumeScalarTexture3D::GetScaleBias(const double range[2], double scaleBias[2]) const
 {
@@ -90,13 +68,8 @@ void vtkPlumeScalarTexture3D::GetScaleBias(const double range[2], double scaleBi
 
 void vtkPlumeScalarTexture3D::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->Texture->ReleaseGraphicsResources(window);
-  this->Bound = nullptr;
-  this->HandedOver = false;
-  this->Uploaded = Signature();
-  this->Handed = Signature();
-  this->Max3DTextureSize = 0;
-  this->Window = nullptr;
+  this->Superclass::ReleaseGraphicsResources(window);
+  this->Handed = Signature(); // a hand-over bound again after a release counts again
 }
 
 bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData* image,
@@ -136,13 +109,7 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
     this->LastError = msg.str();
     return false;
   }
-  if (this->Window && this->Window != window)
-  {
-    this->ReleaseGraphicsResources(this->Window); // textures belong to one context
-  }
-  this->Window = window;
-  this->LastError = plume::Check3DTextureSize(window, dims, this->Max3DTextureSize);
-  if (!this->LastError.empty())
+  if (!this->BeginUpdate(window, dims))
   {
     return false;
   }
@@ -174,17 +141,8 @@ bool vtkPlumeScalarTexture3D::Update(vtkOpenGLRenderWindow* window, vtkImageData
   this->HandedOver = handed != nullptr;
   if (handed)
   {
-    if (this->Texture->GetHandle())
+    if (this->BindHandOver(handed, window, sig))
     {
-      this->Texture->ReleaseGraphicsResources(window); // not needed meanwhile
-    }
-    this->Uploaded = Signature();
-    SetSampling(handed);
-    this->Bound = handed;
-    if (!(sig == this->Handed))
-    {
-      this->Handed = sig;
-      ++this->HandOverCount;
       ++this->DataVersion;
     }
     return true;
@@ -419,7 +377,4 @@ void vtkPlumeScalarTexture3D::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
      << this->Dimensions[2] << "\n";
   os << indent << "NonFiniteCount: " << this->NonFiniteCount << "\n";
-  os << indent << "HandedOver: " << this->HandedOver << "\n";
-  os << indent << "UploadCount: " << this->UploadCount << "\n";
-  os << indent << "HandOverCount: " << this->HandOverCount << "\n";
 }

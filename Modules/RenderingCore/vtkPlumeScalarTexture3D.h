@@ -68,24 +68,15 @@
 #define vtkPlumeScalarTexture3D_h
 
 #include "PlumeRenderingCoreModule.h" // For export macro
-#include "vtkObject.h"
-#include "vtkSmartPointer.h" // For members
-#include "vtkWeakPointer.h"  // For members
+#include "vtkPlumeFieldTexture3D.h"
 
-#include <string> // For std::string
 #include <vector> // For std::vector
 
-class vtkDataArray;
-class vtkImageData;
-class vtkOpenGLRenderWindow;
-class vtkTextureObject;
-class vtkWindow;
-
-class PLUMERENDERINGCORE_EXPORT vtkPlumeScalarTexture3D : public vtkObject
+class PLUMERENDERINGCORE_EXPORT vtkPlumeScalarTexture3D : public vtkPlumeFieldTexture3D
 {
 public:
   static vtkPlumeScalarTexture3D* New();
-  vtkTypeMacro(vtkPlumeScalarTexture3D, vtkObject);
+  vtkTypeMacro(vtkPlumeScalarTexture3D, vtkPlumeFieldTexture3D);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -101,12 +92,6 @@ public:
 
   /** True if the last upload had masked nodes: a two-channel (u w, w) texture. */
   bool GetMasked() const { return this->Masked; }
-
-  /** The texture to bind after a successful Update: the handed-over one or our own. */
-  vtkTextureObject* GetTextureObject();
-
-  /** True if the last Update bound the producer's texture instead of ours. */
-  bool GetHandedOver() const { return this->HandedOver; }
 
   /** Finite range of the values in data units (of the valid nodes with a mask). */
   const double* GetScalarRange() const { return this->ScalarRange; }
@@ -170,12 +155,6 @@ public:
   /** Number of values that were NaN or infinite in the last upload. */
   vtkGetMacro(NonFiniteCount, long long);
 
-  /** Number of uploads so far (tests check that re-renders do not upload). */
-  vtkGetMacro(UploadCount, int);
-
-  /** Number of distinct data versions that were bound from a hand-over instead of uploaded. */
-  vtkGetMacro(HandOverCount, int);
-
   /**
    * Number of distinct data versions seen (uploaded or handed over): what the
    * block summary and the range were computed from; consumers that derive
@@ -183,11 +162,8 @@ public:
    */
   vtkGetMacro(DataVersion, int);
 
-  /** Description of the last failure, "" after a successful Update. */
-  const std::string& GetLastError() const { return this->LastError; }
-
   /** Release the GL texture (the next Update uploads again). */
-  void ReleaseGraphicsResources(vtkWindow* window);
+  void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
   vtkPlumeScalarTexture3D();
@@ -197,43 +173,17 @@ protected:
   bool Analyse(vtkDataArray* array, int component, vtkDataArray* mask, const int dims[3],
     std::vector<float>* texels);
 
-  vtkSmartPointer<vtkTextureObject> Texture;
-  vtkTextureObject* Bound = nullptr; // Texture or the handed-over one
-  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
-  int Max3DTextureSize = 0;
-  bool HandedOver = false;
-  int HandOverCount = 0;
   int DataVersion = 0;
   double ValueShift = 0.0;
   double ValueScale = 1.0;
   double ScalarRange[2] = { 0, 0 };
   int Dimensions[3] = { 0, 0, 0 };
   long long NonFiniteCount = 0;
-  int UploadCount = 0;
   int BlockSize = 8;
   bool Gradients = false;
   bool HasGradients = false;
   int BlockDimensions[3] = { 0, 0, 0 };
   std::vector<float> BlockRanges;
-  std::string LastError;
-
-  // what the texture (or the last hand-over) holds
-  struct Signature
-  {
-    vtkImageData* Image = nullptr;
-    vtkDataArray* Array = nullptr;
-    vtkDataArray* Mask = nullptr;
-    int Component = -2;
-    bool Gradients = false;
-    vtkMTimeType Time = 0;
-    bool operator==(const Signature& o) const
-    {
-      return this->Image == o.Image && this->Array == o.Array && this->Mask == o.Mask &&
-        this->Component == o.Component && this->Gradients == o.Gradients && this->Time == o.Time;
-    }
-  };
-  Signature Uploaded;
-  Signature Handed;
   Signature Analysed; // what ScalarRange, the block summary and Masked describe
   bool Masked = false;
 

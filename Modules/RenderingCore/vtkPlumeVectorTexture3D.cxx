@@ -1,6 +1,5 @@
 #include "vtkPlumeVectorTexture3D.h"
 
-#include "vtkPlumeTexture3DSize.h"
 #include "vtkPlumeTextureHandOver.h"
 
 #include "vtkDataArray.h"
@@ -44,28 +43,10 @@ void ApplyMask(const T* src, vtkIdType begin, vtkIdType end, int comps, float* r
     }
   }
 }
-
-void SetSampling(vtkTextureObject* texture)
-{
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetWrapR(vtkTextureObject::ClampToEdge);
-  texture->SetMinificationFilter(vtkTextureObject::Linear);
-  texture->SetMagnificationFilter(vtkTextureObject::Linear);
-}
 } // namespace
 
-vtkPlumeVectorTexture3D::vtkPlumeVectorTexture3D()
-  : Texture(vtkSmartPointer<vtkTextureObject>::New())
-{
-}
-
+vtkPlumeVectorTexture3D::vtkPlumeVectorTexture3D() = default;
 vtkPlumeVectorTexture3D::~vtkPlumeVectorTexture3D() = default;
-
-vtkTextureObject* vtkPlumeVectorTexture3D::GetTextureObject()
-{
-  return this->Bound ? this->Bound : this->Texture.Get();
-}
 
 void vtkPlumeVectorTexture3D::ConvertSlab(
   vtkDataArray* vectors, vtkDataArray* mask, vtkIdType begin, vtkIdType end, float* rgba)
@@ -138,40 +119,25 @@ bool vtkPlumeVectorTexture3D::Update(
     this->LastError = msg.str();
     return false;
   }
-  if (this->Window && this->Window != window)
-  {
-    this->ReleaseGraphicsResources(this->Window); // textures belong to one context
-  }
-  this->Window = window;
-
   int dims[3];
   image->GetDimensions(dims);
-  this->LastError = plume::Check3DTextureSize(window, dims, this->Max3DTextureSize);
-  if (!this->LastError.empty())
+  if (!this->BeginUpdate(window, dims))
   {
     return false;
   }
 
-  const Signature sig{ image, vectors, mask,
-    std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 }) };
+  Signature sig;
+  sig.Image = image;
+  sig.Array = vectors;
+  sig.Mask = mask;
+  sig.Time = std::max({ image->GetMTime(), vectors->GetMTime(), mask ? mask->GetMTime() : 0 });
 
   // the producer's GPU copy (same context, array unchanged, our layout), never with a mask
   vtkTextureObject* handed = mask ? nullptr : vtkPlumeTextureHandOver::Find(vectors, window, dims, 4);
   this->HandedOver = handed != nullptr;
   if (handed)
   {
-    if (this->Texture->GetHandle())
-    {
-      this->Texture->ReleaseGraphicsResources(window); // not needed meanwhile
-    }
-    this->Uploaded = Signature();
-    SetSampling(handed);
-    this->Bound = handed;
-    if (!(sig == this->Handed))
-    {
-      this->Handed = sig;
-      ++this->HandOverCount;
-    }
+    this->BindHandOver(handed, window, sig);
     return true;
   }
   this->Bound = this->Texture;
@@ -219,20 +185,7 @@ bool vtkPlumeVectorTexture3D::Upload(
   return true;
 }
 
-void vtkPlumeVectorTexture3D::ReleaseGraphicsResources(vtkWindow* window)
-{
-  this->Texture->ReleaseGraphicsResources(window);
-  this->Bound = nullptr;
-  this->HandedOver = false;
-  this->Uploaded = Signature();
-  this->Max3DTextureSize = 0;
-  this->Window = nullptr;
-}
-
 void vtkPlumeVectorTexture3D::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "HandedOver: " << this->HandedOver << "\n";
-  os << indent << "UploadCount: " << this->UploadCount << "\n";
-  os << indent << "HandOverCount: " << this->HandOverCount << "\n";
 }

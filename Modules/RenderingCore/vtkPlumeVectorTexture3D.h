@@ -36,23 +36,13 @@
 #define vtkPlumeVectorTexture3D_h
 
 #include "PlumeRenderingCoreModule.h" // For export macro
-#include "vtkObject.h"
-#include "vtkSmartPointer.h" // For members
-#include "vtkWeakPointer.h"  // For members
+#include "vtkPlumeFieldTexture3D.h"
 
-#include <string> // For std::string
-
-class vtkDataArray;
-class vtkImageData;
-class vtkOpenGLRenderWindow;
-class vtkTextureObject;
-class vtkWindow;
-
-class PLUMERENDERINGCORE_EXPORT vtkPlumeVectorTexture3D : public vtkObject
+class PLUMERENDERINGCORE_EXPORT vtkPlumeVectorTexture3D : public vtkPlumeFieldTexture3D
 {
 public:
   static vtkPlumeVectorTexture3D* New();
-  vtkTypeMacro(vtkPlumeVectorTexture3D, vtkObject);
+  vtkTypeMacro(vtkPlumeVectorTexture3D, vtkPlumeFieldTexture3D);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -64,24 +54,6 @@ public:
    */
   bool Update(vtkOpenGLRenderWindow* window, vtkImageData* image, vtkDataArray* vectors,
     vtkDataArray* mask = nullptr);
-
-  /** The texture to bind after a successful Update: the handed-over one or our own. */
-  vtkTextureObject* GetTextureObject();
-
-  /** True if the last Update bound the producer's texture instead of ours. */
-  bool GetHandedOver() const { return this->HandedOver; }
-
-  /** Number of uploads so far (tests check that re-renders do not upload). */
-  vtkGetMacro(UploadCount, int);
-
-  /** Number of distinct data versions that were bound from a hand-over instead of uploaded. */
-  vtkGetMacro(HandOverCount, int);
-
-  /** Description of the last failure, "" after a successful Update. */
-  const std::string& GetLastError() const { return this->LastError; }
-
-  /** Release the GL texture (the next Update uploads again). */
-  void ReleaseGraphicsResources(vtkWindow* window);
 
   /**
    * The texture's layout, for CPU code that must see the same values (range
@@ -100,31 +72,6 @@ protected:
   ~vtkPlumeVectorTexture3D() override;
 
   bool Upload(vtkOpenGLRenderWindow* window, vtkDataArray* vectors, vtkDataArray* mask, const int dims[3]);
-
-  vtkSmartPointer<vtkTextureObject> Texture;
-  vtkTextureObject* Bound = nullptr; // Texture or the handed-over one
-  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
-  int Max3DTextureSize = 0;
-  bool HandedOver = false;
-  int UploadCount = 0;
-  int HandOverCount = 0;
-  std::string LastError;
-
-  // what the texture (or the last hand-over) holds
-  struct Signature
-  {
-    vtkImageData* Image = nullptr;
-    vtkDataArray* Vectors = nullptr;
-    vtkDataArray* Mask = nullptr;
-    vtkMTimeType Time = 0;
-    bool operator==(const Signature& o) const
-    {
-      return this->Image == o.Image && this->Vectors == o.Vectors && this->Mask == o.Mask &&
-        this->Time == o.Time;
-    }
-  };
-  Signature Uploaded;
-  Signature Handed;
 
 private:
   vtkPlumeVectorTexture3D(const vtkPlumeVectorTexture3D&) = delete;

@@ -3,36 +3,19 @@
 // size or the window changes.
 #include "vtkPlumeLookupTexture.h"
 
+#include "plumeRenderingCoreTestUtil.h"
+
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkRenderWindow.h"
 #include "vtkTextureObject.h"
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
-
-#define CHECK(c)                                                                                   \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(c))                                                                                      \
-    {                                                                                              \
-      std::printf("%s:%d: check failed: %s\n", __FILE__, __LINE__, #c);                            \
-      ++failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
 
 int TestLookupTexture(int, char*[])
 {
   int failures = 0;
-  auto makeWindow = [] {
-    vtkNew<vtkRenderWindow> w;
-    w->SetOffScreenRendering(1);
-    w->SetSize(8, 8);
-    w->Render();
-    return vtkSmartPointer<vtkRenderWindow>(w.Get());
-  };
-  auto window = makeWindow();
+  auto window = plumetest::MakeTestWindow();
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
   int calls = 0;
   auto ramp = [&calls](double v, float rgba[4]) {
@@ -57,7 +40,7 @@ int TestLookupTexture(int, char*[])
   const int another = 0;
   CHECK(table->Update(gl, &another, 6, other, 5, ramp) && table->GetUploadCount() == 4);
   CHECK(table->Update(gl, &another, 6, other, 7, ramp) && table->GetUploadCount() == 5);
-  auto second = makeWindow();
+  auto second = plumetest::MakeTestWindow();
   CHECK(table->Update(vtkOpenGLRenderWindow::SafeDownCast(second), &another, 6, other, 7, ramp));
   CHECK(table->GetUploadCount() == 6);
   table->ReleaseGraphicsResources(second);

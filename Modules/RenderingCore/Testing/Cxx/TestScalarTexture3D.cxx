@@ -9,60 +9,26 @@
 #include "vtkPlumeScalarTexture3D.h"
 #include "vtkPlumeTextureHandOver.h"
 
+#include "plumeRenderingCoreTestUtil.h"
+
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
-#include "vtkRenderWindow.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "vtk_glew.h"
-
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <vector>
 
-#define CHECK(c)                                                                                   \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(c))                                                                                      \
-    {                                                                                              \
-      std::printf("%s:%d: check failed: %s\n", __FILE__, __LINE__, #c);                            \
-      ++failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
-
-namespace
-{
-// channels per texel as stored (1: R32F, 2: RG32F), read back as RGBA
-std::vector<float> ReadBack(vtkTextureObject* texture)
-{
-  const size_t n = size_t(texture->GetWidth()) * texture->GetHeight() * texture->GetDepth();
-  std::vector<float> texels(4 * n);
-  texture->Activate();
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, texels.data());
-  texture->Deactivate();
-  return texels;
-}
-}
-
 int TestScalarTexture3D(int, char*[])
 {
   int failures = 0;
-  auto makeWindow = [] {
-    vtkNew<vtkRenderWindow> w;
-    w->SetOffScreenRendering(1);
-    w->SetSize(8, 8);
-    w->Render();
-    return vtkSmartPointer<vtkRenderWindow>(w.Get());
-  };
-  auto window = makeWindow();
+  auto window = plumetest::MakeTestWindow();
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
 
   // 6x5x4 grid, far from zero (300 +- 0.06: a normalised-in-float copy would
@@ -100,7 +66,7 @@ int TestScalarTexture3D(int, char*[])
   vtkTextureObject* t = texture->GetTextureObject();
   CHECK(t->GetWidth() == 6 && t->GetHeight() == 5 && t->GetDepth() == 4 && t->GetComponents() == 1);
   {
-    std::vector<float> texels = ReadBack(t);
+    std::vector<float> texels = plumetest::ReadBack3D(t);
     const double range[2] = { lo, hi };
     double sb[2];
     texture->GetScaleBias(range, sb);
@@ -140,7 +106,7 @@ int TestScalarTexture3D(int, char*[])
   CHECK(texture->Update(gl, image, v, 0) && texture->GetUploadCount() == 4 && texture->GetHasGradients());
   texture->SetGradients(false);
   CHECK(texture->Update(gl, image, v, 0) && texture->GetUploadCount() == 5);
-  auto second = makeWindow();
+  auto second = plumetest::MakeTestWindow();
   CHECK(texture->Update(vtkOpenGLRenderWindow::SafeDownCast(second), image, v, 0));
   CHECK(texture->GetUploadCount() == 6);
   texture->ReleaseGraphicsResources(second);
@@ -156,7 +122,7 @@ int TestScalarTexture3D(int, char*[])
   CHECK(texture->Update(gl, image, v, -1, mask) && texture->GetMasked() && texture->GetUploadCount() == 8);
   CHECK(texture->GetScalarRange()[1] == hi);
   {
-    std::vector<float> texels = ReadBack(texture->GetTextureObject());
+    std::vector<float> texels = plumetest::ReadBack3D(texture->GetTextureObject());
     CHECK(texels[4 * 11] == 0.0f && texels[4 * 11 + 1] == 0.0f);
     CHECK(texels[4 * 12 + 1] == 1.0f &&
       texels[4 * 12] == static_cast<float>(v->GetValue(12) - texture->GetValueShift()));
@@ -192,7 +158,7 @@ int TestScalarTexture3D(int, char*[])
   w->Modified();
   CHECK(texture->Update(gl, image, w) && !texture->GetHandedOver());
   CHECK(texture->GetUploadCount() == 11 && texture->GetScalarRange()[1] == 9.0);
-  CHECK(ReadBack(texture->GetTextureObject())[0] == 9.0f - float(texture->GetValueShift()));
+  CHECK(plumetest::ReadBack3D(texture->GetTextureObject())[0] == 9.0f - float(texture->GetValueShift()));
   // a wrong-size producer texture is ignored too
   vtkNew<vtkFloatArray> u;
   u->DeepCopy(w);
@@ -207,7 +173,7 @@ int TestScalarTexture3D(int, char*[])
   withNaN->SetValue(3, std::numeric_limits<float>::quiet_NaN());
   vtkPlumeTextureHandOver::Attach(withNaN, produced, gl);
   CHECK(texture->Update(gl, image, withNaN) && !texture->GetHandedOver() && texture->GetUploadCount() == 13);
-  CHECK(ReadBack(texture->GetTextureObject())[4 * 3] == 0.0f); // NaN -> the minimum
+  CHECK(plumetest::ReadBack3D(texture->GetTextureObject())[4 * 3] == 0.0f); // NaN -> the minimum
 
   // bad input: one message naming the counts
   vtkNew<vtkDoubleArray> shortArray;

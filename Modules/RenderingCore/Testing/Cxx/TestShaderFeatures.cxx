@@ -6,24 +6,14 @@
 #include "vtkPlumeShaderProgramCache.h"
 #include "vtkPlumeShaderVariants.h"
 
+#include "plumeRenderingCoreTestUtil.h"
+
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkRenderWindow.h"
 #include "vtkShaderProgram.h"
 
-#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
-
-#define CHECK(c)                                                                                   \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(c))                                                                                      \
-    {                                                                                              \
-      std::printf("%s:%d: check failed: %s\n", __FILE__, __LINE__, #c);                            \
-      ++failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
 
 namespace
 {
@@ -86,10 +76,7 @@ int TestShaderFeatures(int, char*[])
 
   // the cache: one build per variant and window
   vtkNew<vtkPlumeShaderProgramCache> cache;
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(8, 8);
-  window->Render();
+  auto window = plumetest::MakeTestWindow();
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
   vtkPlumeShaderFeatures red, blue1, blue2;
   red.Enable("RED");
@@ -102,10 +89,7 @@ int TestShaderFeatures(int, char*[])
   CHECK(b1 && b2 && b1 != b2 && b1 != r && cache->GetBuildCount() == 3);
   CHECK(cache->Ready(gl, VS, nullptr, FS, red) == r && cache->GetBuildCount() == 3);
   CHECK(cache->Ready(gl, VS, nullptr, FS, blue1) == b1 && cache->GetBuildCount() == 3);
-  vtkNew<vtkRenderWindow> other;
-  other->SetOffScreenRendering(1);
-  other->SetSize(8, 8);
-  other->Render();
+  auto other = plumetest::MakeTestWindow();
   CHECK(cache->Ready(vtkOpenGLRenderWindow::SafeDownCast(other), VS, nullptr, FS, red) != nullptr);
   CHECK(cache->GetBuildCount() == 4);
   cache->ReleaseGraphicsResources(other);

@@ -6,59 +6,26 @@
 #include "vtkPlumeTextureHandOver.h"
 #include "vtkPlumeVectorTexture3D.h"
 
+#include "plumeRenderingCoreTestUtil.h"
+
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
-#include "vtkRenderWindow.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "vtk_glew.h"
-
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <vector>
 
-#define CHECK(c)                                                                                   \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(c))                                                                                      \
-    {                                                                                              \
-      std::printf("%s:%d: check failed: %s\n", __FILE__, __LINE__, #c);                            \
-      ++failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
-
-namespace
-{
-std::vector<float> ReadBack(vtkTextureObject* texture)
-{
-  const size_t n = size_t(texture->GetWidth()) * texture->GetHeight() * texture->GetDepth();
-  std::vector<float> texels(4 * n);
-  texture->Activate();
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, texels.data());
-  texture->Deactivate();
-  return texels;
-}
-}
-
 int TestVectorTexture3D(int, char*[])
 {
   int failures = 0;
-  auto makeWindow = [] {
-    vtkNew<vtkRenderWindow> w;
-    w->SetOffScreenRendering(1);
-    w->SetSize(8, 8);
-    w->Render();
-    return vtkSmartPointer<vtkRenderWindow>(w.Get());
-  };
-  auto window = makeWindow();
+  auto window = plumetest::MakeTestWindow();
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
 
   // 5x4x3 grid, far-from-zero doubles (raw values, not a normalised range)
@@ -86,7 +53,7 @@ int TestVectorTexture3D(int, char*[])
   CHECK(texture->GetUploadCount() == 1 && !texture->GetHandedOver());
   vtkTextureObject* t = texture->GetTextureObject();
   CHECK(t->GetWidth() == 5 && t->GetHeight() == 4 && t->GetDepth() == 3);
-  std::vector<float> texels = ReadBack(t);
+  std::vector<float> texels = plumetest::ReadBack3D(t);
   int wrong = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -109,8 +76,8 @@ int TestVectorTexture3D(int, char*[])
   v->Modified();
   CHECK(texture->Update(gl, image, v, mask) && texture->GetUploadCount() == 2);
   CHECK(texture->Update(gl, image, v, nullptr) && texture->GetUploadCount() == 3);
-  CHECK(ReadBack(texture->GetTextureObject())[4 * 11 + 3] == 1.0f); // unmasked now
-  auto second = makeWindow();
+  CHECK(plumetest::ReadBack3D(texture->GetTextureObject())[4 * 11 + 3] == 1.0f); // unmasked now
+  auto second = plumetest::MakeTestWindow();
   CHECK(texture->Update(vtkOpenGLRenderWindow::SafeDownCast(second), image, v, nullptr));
   CHECK(texture->GetUploadCount() == 4);
   texture->ReleaseGraphicsResources(second);
@@ -136,7 +103,7 @@ int TestVectorTexture3D(int, char*[])
   w->SetTuple3(0, 9, 9, 9);
   w->Modified();
   CHECK(texture->Update(gl, image, w, nullptr) && !texture->GetHandedOver());
-  CHECK(texture->GetUploadCount() == 7 && ReadBack(texture->GetTextureObject())[0] == 9.0f);
+  CHECK(texture->GetUploadCount() == 7 && plumetest::ReadBack3D(texture->GetTextureObject())[0] == 9.0f);
   // a wrong-size producer texture is ignored too
   vtkNew<vtkFloatArray> u;
   u->DeepCopy(w);
