@@ -20,10 +20,12 @@
 #include "vtkPlane.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRibbonFilter.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamSurface.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStreamTracer.h"
 #include "vtkTableBasedClipDataSet.h"
 #include "vtkThreshold.h"
@@ -272,6 +274,27 @@ int vtkPlumeDerivedGeometry::FillInputPortInformation(int port, vtkInformation* 
   if (port == 1)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int vtkPlumeDerivedGeometry::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Every input whole: the executive would otherwise pass the dataset's
+  // structured extent on to structured seeds of another size (an error
+  // "outside the whole extent" for an image of seed points).
+  for (int port = 0; port < this->GetNumberOfInputPorts(); ++port)
+  {
+    for (int i = 0; i < inputVector[port]->GetNumberOfInformationObjects(); ++i)
+    {
+      vtkInformation* info = inputVector[port]->GetInformationObject(i);
+      if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+      {
+        info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+          info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      }
+    }
   }
   return 1;
 }
@@ -687,6 +710,22 @@ bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDa
   else if (seedData->GetNumberOfPoints() < (this->Operation == STREAM_SURFACE ? 2 : 1))
   {
     return fail("the seeds dataset has " + std::to_string(seedData->GetNumberOfPoints()) + " points");
+  }
+  else if (!vtkPolyData::SafeDownCast(seedData))
+  {
+    // Only the seeds' points matter. Structured seeds (an image, a grid) on the
+    // tracer's source port get the input's update extent requested of them,
+    // which VTK reports as errors ("outside the whole extent"): pass the points.
+    vtkNew<vtkPolyData> points;
+    vtkNew<vtkPoints> copy;
+    copy->SetDataTypeToDouble();
+    copy->SetNumberOfPoints(seedData->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < seedData->GetNumberOfPoints(); ++i)
+    {
+      copy->SetPoint(i, seedData->GetPoint(i));
+    }
+    points->SetPoints(copy);
+    seedData = points;
   }
   const double length = this->MaximumLength > 0 ? this->MaximumLength : diagonal;
   // Steps to reach the length with cells of the mean size. vtkStreamSurface also
