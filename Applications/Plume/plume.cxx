@@ -221,13 +221,43 @@ std::string QuickLookSummary(const nlohmann::json& scene)
   return what + " and the outline";
 }
 
+/**
+ * --camera FILE: a camera saved by plume view (key c), {"camera": {...}}, or a
+ * bare camera object; it replaces the scene's camera.
+ */
+nlohmann::json ReadCamera(const std::string& path)
+{
+  const std::string notRegular = vtkPlumeInputValidation::CheckRegularFile(path);
+  if (!notRegular.empty())
+  {
+    throw plume::SceneError("--camera: " + notRegular);
+  }
+  std::ifstream in(path);
+  if (!in)
+  {
+    throw plume::SceneError("--camera: cannot open '" + path + "'");
+  }
+  const nlohmann::json file = plume::Scene::Parse(in, "--camera file '" + path + "'");
+  const nlohmann::json camera = file.is_object() && file.contains("camera") ? file["camera"] : file;
+  if (!camera.is_object())
+  {
+    throw plume::SceneError("--camera file '" + path + "' must hold a camera object (as plume view's key c saves), "
+                            "got " + camera.dump().substr(0, 80));
+  }
+  return camera;
+}
+
 /** A scene file, or a quick look's scene for a dataset file (stated; printed with --print-scene). */
-nlohmann::json LoadScene(const std::string& scenePath, bool printScene)
+nlohmann::json LoadScene(const std::string& scenePath, bool printScene, const std::string& cameraFile = "")
 {
   // a folder is not a quick look: the scene reader says it is a directory
   const bool quickLook = !vtksys::SystemTools::FileIsDirectory(scenePath) &&
     vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(scenePath)) != ".json";
-  const nlohmann::json scene = quickLook ? QuickLookScene(scenePath) : plume::Scene::ReadFile(scenePath);
+  nlohmann::json scene = quickLook ? QuickLookScene(scenePath) : plume::Scene::ReadFile(scenePath);
+  if (!cameraFile.empty())
+  {
+    scene["camera"] = ReadCamera(cameraFile); // checked like any scene camera when the scene is built
+  }
   if (printScene)
   {
     // the scene chosen, for the user to edit (stderr keeps stdout for --print-scene)
@@ -242,20 +272,21 @@ nlohmann::json LoadScene(const std::string& scenePath, bool printScene)
 }
 
 /** `plume view`: the scene plume render would render, in an interactive window. */
-int View(const std::string& scenePath, const std::string& size, plume::ViewOptions options, bool printScene)
+int View(const std::string& scenePath, const std::string& size, plume::ViewOptions options, bool printScene,
+  const std::string& cameraFile)
 {
   if (!size.empty() && !ParseSize(size, options.Width, options.Height))
   {
     throw plume::SceneError("--size must be WxH with positive integers up to 16384, got '" + size + "'");
   }
-  const nlohmann::json scene = LoadScene(scenePath, printScene);
+  const nlohmann::json scene = LoadScene(scenePath, printScene, cameraFile);
   const std::string directory =
     vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(scenePath));
   return plume::View(scene, directory, options, std::cout);
 }
 
 int Render(const std::string& scenePath, const std::string& output, const std::string& size, plume::Backend backend,
-  const std::string& timeSteps, const std::string& video, bool printScene)
+  const std::string& timeSteps, const std::string& video, bool printScene, const std::string& cameraFile)
 {
   plume::SceneOptions options;
   if (!size.empty() && !ParseSize(size, options.Width, options.Height))
@@ -306,7 +337,7 @@ int Render(const std::string& scenePath, const std::string& output, const std::s
   {
     steps = ParseTimeSteps(timeSteps, 0);
   }
-  const nlohmann::json scene = LoadScene(scenePath, printScene);
+  const nlohmann::json scene = LoadScene(scenePath, printScene, cameraFile);
   std::string directory = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(scenePath));
   vtkSmartPointer<vtkRenderWindow> window;
   // One frame per step: the scene is built again for each (every series read at that step).
@@ -511,6 +542,9 @@ int main(int argc, char* argv[])
   render->add_option("--time-steps", timeSteps,
     "render these time steps to numbered images OUT_0000.png ...: all, A:B or A,B,C");
   render->add_option("--video", video, "with --time-steps: also assemble the frames into this video (ffmpeg)");
+  std::string cameraFile;
+  render->add_option("--camera", cameraFile,
+    "use this camera instead of the scene's: a JSON camera object, e.g. one plume view saved with key c");
 
   auto* view = app.add_subcommand("view", "show a scene (or a dataset's quick look) in an interactive window (X display)");
   std::string viewScene, viewSize;
@@ -530,6 +564,8 @@ int main(int argc, char* argv[])
   view->add_option("--scripted-keys", viewOptions.ScriptedKeys,
     "with --scripted-moves: keys pressed after its r and screenshot, before q (e.g. ps1s)");
   view->add_flag("--print-scene", viewPrint, "print the scene shown (JSON) on stdout");
+  std::string viewCamera;
+  view->add_option("--camera", viewCamera, "start from this camera (a JSON camera object, as key c saves)");
   view->footer(plume::ViewKeys());
 
   auto* info = app.add_subcommand("info", "describe what a dataset holds");
@@ -591,11 +627,11 @@ int main(int argc, char* argv[])
   {
     if (*render)
     {
-      status = Render(scene, output, size, backend, timeSteps, video, printScene);
+      status = Render(scene, output, size, backend, timeSteps, video, printScene, cameraFile);
     }
     else if (*view)
     {
-      status = View(viewScene, viewSize, viewOptions, viewPrint);
+      status = View(viewScene, viewSize, viewOptions, viewPrint, viewCamera);
     }
     else if (*info)
     {

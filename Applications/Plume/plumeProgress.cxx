@@ -6,6 +6,8 @@
 #include "vtkNew.h"
 
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <unistd.h>
 
 namespace plume
@@ -13,7 +15,15 @@ namespace plume
 
 bool ProgressEnabled()
 {
-  static const bool enabled = isatty(fileno(stderr)) != 0;
+  // on a terminal; PLUME_PROGRESS=1 forces the bar (logs, tests), 0 turns it off
+  static const bool enabled = [] {
+    const char* forced = std::getenv("PLUME_PROGRESS");
+    if (forced && *forced)
+    {
+      return std::string(forced) != "0";
+    }
+    return isatty(fileno(stderr)) != 0;
+  }();
   return enabled;
 }
 

@@ -295,7 +295,11 @@ std::array<double, 2> Coloring::RobustRange(
     // (nearly) constant bulk with a few other values: those should still show
     return { *minmax.first, *minmax.second };
   }
-  return { p1, p99 };
+  // A percentile a rounding residue away from zero (resampled or interpolated
+  // zero velocities at walls: 9.15e-19 on the kitchen) is zero: the colour bar
+  // then reads 0, not 9.15e-19.
+  const double residue = 1e-9 * (p99 - p1);
+  return { std::fabs(p1) < residue ? 0.0 : p1, std::fabs(p99) < residue ? 0.0 : p99 };
 }
 
 vtkSmartPointer<vtkScalarsToColors> Coloring::Table(vtkDataArray* array, int component, vtkDataArray* mask) const

@@ -18,6 +18,8 @@
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
 
+#include <array>
+
 namespace plume
 {
 namespace
@@ -27,8 +29,23 @@ void BuildSheet(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   const std::string dataset = p.String("dataset", "");
   // every mapper parameter comes from the mapper's own table
   vtkNew<vtkPlumeSheetMapper> mapper;
+  const bool colorGiven = p.Has("smoke_color");
   p.Apply(vtkPlumeSheetMapper::GetParameterTable(), mapper);
   p.RejectUnknown();
+  if (!colorGiven)
+  {
+    // The mapper's default smoke only absorbs (black): on the scene's default
+    // dark background it drew nothing visible. Light smoke there, absorbing
+    // smoke on a light background (where the overlay text is dark too).
+    const std::array<double, 3> behind = BackgroundAt(renderer, 0.5);
+    if (TextColorOn(behind.data())[0] > 0.5)
+    {
+      const double light[3] = { 0.85, 0.85, 0.88 };
+      mapper->SetSmokeColor(light);
+      Note(p.Where() + ": smoke_color [0.85, 0.85, 0.88] (light smoke on the dark background; set 'smoke_color' "
+                       "to choose)");
+    }
+  }
   if (dataset.empty())
   {
     throw SceneError(p.Where() + ": 'dataset' is required");

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -28,8 +29,25 @@ const char* ViewKeys()
 {
   return "keys in the window: left drag rotate, middle drag (or shift+left) pan, right drag (or wheel) zoom, "
          "ctrl+left spin; r back to the scene's camera; s save a screenshot (PREFIX_NNNN.png, the frame as "
-         "shown); n / p (or Right / Left) next / previous time step; 1-9 show/hide representation 1-9 (scene "
+         "shown); c save the camera (PREFIX_camera_NNNN.json: plume render SCENE --camera FILE shows the same "
+         "view); n / p (or Right / Left) next / previous time step; 1-9 show/hide representation 1-9 (scene "
          "order, with its colour bar); q or Escape quit";
+}
+
+nlohmann::json CameraToJson(vtkCamera* camera)
+{
+  auto vector = [](const double* v) { return nlohmann::json::array({ v[0], v[1], v[2] }); };
+  nlohmann::json out;
+  out["position"] = vector(camera->GetPosition());
+  out["focal_point"] = vector(camera->GetFocalPoint());
+  out["view_up"] = vector(camera->GetViewUp());
+  out["view_angle"] = camera->GetViewAngle();
+  if (camera->GetParallelProjection())
+  {
+    out["parallel_projection"] = true;
+    out["parallel_scale"] = camera->GetParallelScale();
+  }
+  return out;
 }
 
 namespace
@@ -47,6 +65,7 @@ struct Viewer
   SceneOptions Built;            // what the last Build reported (steps, props per representation)
   std::vector<bool> Hidden; // representations hidden with keys 1-9 (kept across time steps)
   int Screenshots = 0;
+  int Cameras = 0;
   bool Quit = false;
 
   void Build(int timeStep, vtkCamera* keep)
@@ -90,6 +109,24 @@ struct Viewer
     const std::string path = this->Options.ScreenshotPrefix + name;
     // the frame last shown (not rendered again: a frame taken while moving keeps its interactive look)
     plume::WriteImage(path, plume::ReadBack(this->Window, false), this->Renderer->GetActiveCamera());
+    *this->Out << "wrote " << path << "\n";
+  }
+
+  /** The camera shown, as a scene "camera" object in PREFIX_camera_NNNN.json (for plume render --camera). */
+  void SaveCamera()
+  {
+    char name[32];
+    std::snprintf(name, sizeof(name), "_camera_%04d.json", this->Cameras++);
+    const std::string path = this->Options.ScreenshotPrefix + name;
+    const nlohmann::json camera = { { "camera", CameraToJson(this->Renderer->GetActiveCamera()) } };
+    std::ofstream file(path);
+    file << camera.dump(2) << "\n";
+    file.close();
+    if (!file)
+    {
+      *this->Out << "could not write " << path << "\n";
+      return;
+    }
     *this->Out << "wrote " << path << "\n";
   }
 
@@ -156,6 +193,10 @@ public:
     else if (key == 's' || key == 'S')
     {
       this->View->Screenshot();
+    }
+    else if (key == 'c' || key == 'C')
+    {
+      this->View->SaveCamera();
     }
     else if (key == 'n' || key == 'N' || sym == "Right")
     {
@@ -255,6 +296,7 @@ int View(const nlohmann::json& scene, const std::string& sceneDirectory, const V
   out << "released: update rate " << viewer.Window->GetDesiredUpdateRate() << " per s, "
       << VolumeTimes(viewer.Renderer) << "\n";
   PressKey(iren, 's');
+  PressKey(iren, 'c'); // the moved camera: plume render --camera must show this still frame
   PressKey(iren, 'r');
   out << "camera reset: update rate " << viewer.Window->GetDesiredUpdateRate() << " per s, "
       << VolumeTimes(viewer.Renderer) << "\n";

@@ -18,11 +18,14 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlane.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRibbonFilter.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamSurface.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStreamTracer.h"
 #include "vtkTableBasedClipDataSet.h"
 #include "vtkThreshold.h"
@@ -31,6 +34,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+
+#include <glm/glm.hpp>
 
 vtkStandardNewMacro(vtkPlumeDerivedGeometry);
 
@@ -157,7 +162,7 @@ const vtkPlumeParameterTable& vtkPlumeDerivedGeometry::GetParameterTable()
       .Doc("What is derived from the `input` dataset.")
       .Choice("contour", CONTOUR, "isosurfaces of `array` at `values` (vtkContourFilter)")
       .Choice("slice", SLICE, "the cut by the plane `origin`/`normal` (vtkCutter)")
-      .Choice("streamlines", STREAMLINES, "streamlines (vtkStreamTracer, RK4) from the seed line or `seeds`")
+      .Choice("streamlines", STREAMLINES, "streamlines (vtkStreamTracer, RK4) from the seed line or plane, or `seeds`")
       .Choice("stream_surface", STREAM_SURFACE, "a stream surface from the seed line (vtkStreamSurface)")
       .Choice("ribbon", RIBBON, "streamlines widened into ribbons of `ribbon_width` (vtkRibbonFilter)")
       .Choice("threshold", THRESHOLD, "the cells whose `array` lies in `values` [lower, upper] (vtkThreshold)")
@@ -192,6 +197,20 @@ const vtkPlumeParameterTable& vtkPlumeDerivedGeometry::GetParameterTable()
       .Between(1, 100000)
       .Doc("Segments of the seed line (seeds: one more).")
       .Bind(&T::SetSeedResolution, &T::GetSeedResolution);
+    t.Choice("seed_type", "SeedType", "line")
+      .Doc("Where streamlines and ribbons start without `seeds`.")
+      .Choice("line", SEED_LINE, "`seed_resolution` + 1 seeds from `seed_point1` to `seed_point2`")
+      .Choice("plane", SEED_PLANE,
+        "a lattice on the parallelogram with corner `seed_point1` and sides to `seed_point2` "
+        "(`seed_resolution` segments) and `seed_point3` (`seed_resolution2` segments)")
+      .Bind(&T::SetSeedType, &T::GetSeedType);
+    t.Vector3("seed_point3", "SeedPoint3", { 0.5, 0.1, 0.9 })
+      .Doc("Plane seeds: end of the second side from `seed_point1`.")
+      .Bind(&T::SetSeedPoint3, &T::GetSeedPoint3);
+    t.Integer("seed_resolution2", "SeedResolution2", 10)
+      .Between(1, 100000)
+      .Doc("Plane seeds: segments along the second side (seeds: one more).")
+      .Bind(&T::SetSeedResolution2, &T::GetSeedResolution2);
     t.Choice("direction", "IntegrationDirection", "both")
       .Doc("Direction streamlines and stream surfaces are traced in.")
       .Choice("forward", FORWARD, "along the flow")
@@ -255,6 +274,27 @@ int vtkPlumeDerivedGeometry::FillInputPortInformation(int port, vtkInformation* 
   if (port == 1)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int vtkPlumeDerivedGeometry::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Every input whole: the executive would otherwise pass the dataset's
+  // structured extent on to structured seeds of another size (an error
+  // "outside the whole extent" for an image of seed points).
+  for (int port = 0; port < this->GetNumberOfInputPorts(); ++port)
+  {
+    for (int i = 0; i < inputVector[port]->GetNumberOfInformationObjects(); ++i)
+    {
+      vtkInformation* info = inputVector[port]->GetInformationObject(i);
+      if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+      {
+        info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+          info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      }
+    }
   }
   return 1;
 }
@@ -627,16 +667,65 @@ bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDa
       return fail("parameters 'seed_point1' and 'seed_point2' are the same point " + Vec(p1) +
         ": a stream surface needs a seed line");
     }
-    vtkNew<vtkLineSource> line;
-    line->SetPoint1(p1);
-    line->SetPoint2(p2);
-    line->SetResolution(this->SeedResolution);
-    line->Update();
-    seedData = line->GetOutput();
+    if (this->SeedType == SEED_PLANE)
+    {
+      if (this->Operation == STREAM_SURFACE)
+      {
+        return fail("parameter 'seed_type' \"plane\": a stream surface grows from a seed line (\"line\")");
+      }
+      double p3[3];
+      place(this->SeedPoint3, p3);
+      if (!inside(p3))
+      {
+        return fail("parameter 'seed_point3' " + Vec(this->SeedPoint3) + " lies outside the input's bounds " +
+          boundsText.str() + coordinatesNote);
+      }
+      // the two sides must span a plane (vtkPlaneSource would silently fail)
+      const glm::dvec3 side1 = glm::dvec3(p2[0], p2[1], p2[2]) - glm::dvec3(p1[0], p1[1], p1[2]);
+      const glm::dvec3 side2 = glm::dvec3(p3[0], p3[1], p3[2]) - glm::dvec3(p1[0], p1[1], p1[2]);
+      if (!(glm::length(glm::cross(side1, side2)) > 1e-12 * diagonal * diagonal))
+      {
+        return fail("parameters 'seed_point1' " + Vec(this->SeedPoint1) + ", 'seed_point2' " +
+          Vec(this->SeedPoint2) + " and 'seed_point3' " + Vec(this->SeedPoint3) +
+          " lie on one line: plane seeds need two sides");
+      }
+      vtkNew<vtkPlaneSource> plane;
+      plane->SetOrigin(p1);
+      plane->SetPoint1(p2);
+      plane->SetPoint2(p3);
+      plane->SetResolution(this->SeedResolution, this->SeedResolution2);
+      plane->Update();
+      seedData = plane->GetOutput();
+    }
+    else
+    {
+      vtkNew<vtkLineSource> line;
+      line->SetPoint1(p1);
+      line->SetPoint2(p2);
+      line->SetResolution(this->SeedResolution);
+      line->Update();
+      seedData = line->GetOutput();
+    }
   }
   else if (seedData->GetNumberOfPoints() < (this->Operation == STREAM_SURFACE ? 2 : 1))
   {
     return fail("the seeds dataset has " + std::to_string(seedData->GetNumberOfPoints()) + " points");
+  }
+  else if (!vtkPolyData::SafeDownCast(seedData))
+  {
+    // Only the seeds' points matter. Structured seeds (an image, a grid) on the
+    // tracer's source port get the input's update extent requested of them,
+    // which VTK reports as errors ("outside the whole extent"): pass the points.
+    vtkNew<vtkPolyData> points;
+    vtkNew<vtkPoints> copy;
+    copy->SetDataTypeToDouble();
+    copy->SetNumberOfPoints(seedData->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < seedData->GetNumberOfPoints(); ++i)
+    {
+      copy->SetPoint(i, seedData->GetPoint(i));
+    }
+    points->SetPoints(copy);
+    seedData = points;
   }
   const double length = this->MaximumLength > 0 ? this->MaximumLength : diagonal;
   // Steps to reach the length with cells of the mean size. vtkStreamSurface also
@@ -736,7 +825,8 @@ bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDa
   }
   vtkPolyData* traced = tracedData;
   const std::string seedText = seeds ? "the seeds dataset (" + std::to_string(seeds->GetNumberOfPoints()) + " points)"
-                                     : "the seed line " + Vec(p1) + " - " + Vec(p2);
+    : this->SeedType == SEED_PLANE ? "the seed plane at " + Vec(p1) + " (" + std::to_string(seedData->GetNumberOfPoints()) + " seeds)"
+                                   : "the seed line " + Vec(p1) + " - " + Vec(p2);
   if (!traced || traced->GetNumberOfCells() == 0 ||
     (this->Operation == STREAM_SURFACE && traced->GetNumberOfPolys() + traced->GetNumberOfStrips() == 0))
   {
@@ -772,6 +862,9 @@ void vtkPlumeDerivedGeometry::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeedPoint1: " << Vec(this->SeedPoint1) << "\n";
   os << indent << "SeedPoint2: " << Vec(this->SeedPoint2) << "\n";
   os << indent << "SeedResolution: " << this->SeedResolution << "\n";
+  os << indent << "SeedType: " << (this->SeedType == SEED_PLANE ? "plane" : "line") << "\n";
+  os << indent << "SeedPoint3: " << Vec(this->SeedPoint3) << "\n";
+  os << indent << "SeedResolution2: " << this->SeedResolution2 << "\n";
   os << indent << "IntegrationDirection: " << this->IntegrationDirection << "\n";
   os << indent << "MaximumLength: " << this->MaximumLength << "\n";
   os << indent << "StepLength: " << this->StepLength << "\n";

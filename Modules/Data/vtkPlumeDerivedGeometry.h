@@ -7,7 +7,8 @@
  *  - CONTOUR: isosurface(s) of a scalar array (vtkContourFilter); a vector
  *    array is contoured by its magnitude;
  *  - SLICE: the cut by a plane (vtkCutter);
- *  - STREAMLINES: vtkStreamTracer (RK4) from the seeds;
+ *  - STREAMLINES: vtkStreamTracer (RK4) from the seeds (a line, a plane, or
+ *    the points of a seeds dataset);
  *  - STREAM_SURFACE: vtkStreamSurface from the seed line;
  *  - RIBBON: streamlines widened into ribbons (vtkRibbonFilter, oriented by the
  *    streamlines' vorticity);
@@ -148,6 +149,36 @@ public:
   vtkGetMacro(SeedResolution, int);
   ///@}
 
+  enum SeedTypes
+  {
+    SEED_LINE = 0, ///< seeds along SeedPoint1-SeedPoint2
+    SEED_PLANE     ///< a lattice on the parallelogram SeedPoint1, SeedPoint2, SeedPoint3
+  };
+
+  ///@{
+  /**
+   * Where the built-in seeds lie (SeedTypes; without `seeds` on port 1).
+   * SEED_PLANE: a (SeedResolution + 1) x (SeedResolution2 + 1) lattice on the
+   * parallelogram with corner SeedPoint1 and sides to SeedPoint2 and
+   * SeedPoint3 (streamlines and ribbons; a stream surface needs a line).
+   * Default SEED_LINE.
+   */
+  vtkSetClampMacro(SeedType, int, SEED_LINE, SEED_PLANE);
+  vtkGetMacro(SeedType, int);
+  ///@}
+
+  ///@{
+  /** Plane seeds: end of the second side from SeedPoint1. Default (0.5, 0.1, 0.9) (relative coordinates). */
+  vtkSetVector3Macro(SeedPoint3, double);
+  vtkGetVector3Macro(SeedPoint3, double);
+  ///@}
+
+  ///@{
+  /** Plane seeds: segments along the second side. Default 10, in [1, 100000]. */
+  vtkSetClampMacro(SeedResolution2, int, 1, 100000);
+  vtkGetMacro(SeedResolution2, int);
+  ///@}
+
   ///@{
   /** Integration direction (Directions). Default BOTH. */
   vtkSetClampMacro(IntegrationDirection, int, FORWARD, BOTH);
@@ -219,6 +250,7 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Operation = CONTOUR;
@@ -230,6 +262,9 @@ protected:
   double SeedPoint1[3] = { 0.5, 0.1, 0.5 };
   double SeedPoint2[3] = { 0.5, 0.9, 0.5 };
   int SeedResolution = 20;
+  int SeedType = SEED_LINE;
+  double SeedPoint3[3] = { 0.5, 0.1, 0.9 };
+  int SeedResolution2 = 10;
   int IntegrationDirection = BOTH;
   double MaximumLength = 0;
   double StepLength = 0.25;
