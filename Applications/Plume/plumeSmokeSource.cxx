@@ -17,6 +17,7 @@
 
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPointSet.h"
 #include "vtkPolyData.h"
 #include "vtkInformation.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -135,12 +136,30 @@ vtkSmartPointer<vtkPlumeSmokeSolver> ConfigureSmokeSolver(
       solver->AddSource(center.data(), radius, density, temperature, velocity.data());
     }
   }
-  else
+  else if (!p.Has("source_points"))
   {
     const double center[3] = { origin[0] + 0.5 * (dims[0] - 1) * spacing[0],
       origin[1] + 0.5 * (dims[1] - 1) * spacing[1], origin[2] + 0.1 * (dims[2] - 1) * spacing[2] };
     const double velocity[3] = { 0, 0, 0 };
     solver->AddSource(center, 0.1 * (dims[0] - 1) * spacing[0], 1.0, 1.0, velocity);
+  }
+  // Sources given as points: another dataset's points (a .vtp of marked
+  // inlets, a threshold of the data ...) with their rate/temperature/radius/velocity arrays.
+  if (p.Has("source_points"))
+  {
+    const std::string pointsName = p.String("source_points", "");
+    vtkDataObject* data = datasets.Get(pointsName, where + ".source_points");
+    auto* points = vtkPointSet::SafeDownCast(data);
+    if (!points)
+    {
+      throw SceneError(where + ": source_points: dataset '" + pointsName + "' is a " +
+        (data ? data->GetClassName() : "nothing") + ", not a point set (a .vtp, .vtu, a threshold ...)");
+    }
+    if (points->GetNumberOfPoints() == 0)
+    {
+      throw SceneError(where + ": source_points: dataset '" + pointsName + "' has no points");
+    }
+    solver->SetSourcePointsData(points);
   }
   if (const nlohmann::json* obstacles = p.Raw("obstacles"))
   {

@@ -81,6 +81,7 @@ struct vtkPlumePressureSolver::HypreState
   HYPRE_StructSolver Preconditioner = nullptr;
   double Tolerance = -1;
   int MaximumIterations = -1;
+  int SmoothingSweeps = -1;
   std::vector<double> Buffer;
 };
 
@@ -106,6 +107,13 @@ const vtkPlumeParameterTable& vtkPlumePressureSolver::GetParameterTable()
       .Panel("Pressure")
       .Doc("Most iterations of one pressure solve (the seed runs 40 Jacobi iterations).")
       .Bind(&T::SetMaximumIterations, &T::GetMaximumIterations);
+    t.Integer("pressure_smoothing_sweeps", "SmoothingSweeps", 2)
+      .Between(1, 10)
+      .Panel("Pressure")
+      .Advanced()
+      .Doc("PCG: Gauss-Seidel sweeps before and after the coarse-grid correction in each multigrid level; 2 "
+           "needs fewer iterations than 1 (10 against 15-18 from 64^3 to 256^3) in less time per solve.")
+      .Bind(&T::SetSmoothingSweeps, &T::GetSmoothingSweeps);
     t.Real("jacobi_weight", "JacobiWeight", 0.8)
       .Between(0.05, 1.0)
       .Panel("Pressure")
@@ -543,14 +551,18 @@ bool vtkPlumePressureSolver::SetupHypre()
 
   // One V-cycle of PFMG: symmetric red-black Gauss–Seidel smoothing and
   // Galerkin coarse operators (which keep obstacles' walls on coarse grids).
+  // Two sweeps each way (not one) keep the iterations flat from 64^3 to
+  // 256^3 (10, 10, 11 against 15, 16, 18) and cost less per solve; unequal
+  // pre and post sweeps make the preconditioner unsymmetric and CG stall.
   HYPRE_StructPFMGCreate(MPI_COMM_SELF, &h.Preconditioner);
   HYPRE_StructPFMGSetMaxIter(h.Preconditioner, 1);
   HYPRE_StructPFMGSetTol(h.Preconditioner, 0.0);
   HYPRE_StructPFMGSetZeroGuess(h.Preconditioner);
   HYPRE_StructPFMGSetRelaxType(h.Preconditioner, 2);
   HYPRE_StructPFMGSetRAPType(h.Preconditioner, 0);
-  HYPRE_StructPFMGSetNumPreRelax(h.Preconditioner, 1);
-  HYPRE_StructPFMGSetNumPostRelax(h.Preconditioner, 1);
+  HYPRE_StructPFMGSetNumPreRelax(h.Preconditioner, this->SmoothingSweeps);
+  HYPRE_StructPFMGSetNumPostRelax(h.Preconditioner, this->SmoothingSweeps);
+  h.SmoothingSweeps = this->SmoothingSweeps;
   HYPRE_StructPFMGSetSkipRelax(h.Preconditioner, 0);
   HYPRE_StructPFMGSetPrintLevel(h.Preconditioner, 0);
   HYPRE_StructPFMGSetLogging(h.Preconditioner, 0);
@@ -563,6 +575,10 @@ bool vtkPlumePressureSolver::SetupHypre()
 bool vtkPlumePressureSolver::SolvePCG(const double* b, double* q)
 {
   double start = Seconds();
+  if (this->Hypre && this->Hypre->SmoothingSweeps != this->SmoothingSweeps)
+  {
+    this->ReleaseHypre(); // the V-cycle changed: set up again
+  }
   if (!this->Hypre && !this->SetupHypre())
   {
     this->LastError = "hypre could not set up the PFMG-preconditioned CG solver (error " +
@@ -615,6 +631,7 @@ void vtkPlumePressureSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
   os << indent << "JacobiWeight: " << this->JacobiWeight << "\n";
+  os << indent << "SmoothingSweeps: " << this->SmoothingSweeps << "\n";
   os << indent << "Cells: " << this->Cells[0] << " " << this->Cells[1] << " " << this->Cells[2] << "\n";
   os << indent << "LastIterations: " << this->LastIterations << "\n";
   os << indent << "LastRelativeResidual: " << this->LastRelativeResidual << "\n";

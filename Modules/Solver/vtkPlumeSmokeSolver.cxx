@@ -13,6 +13,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPolyData.h"
 #include "vtkSelectEnclosedPoints.h"
 #include "vtkSMPTools.h"
@@ -278,6 +279,43 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
       .Doc("Project the given velocity once (remove the divergence its resampling leaves, make walls and "
            "obstacles tight).")
       .Bind(&T::SetProjectExternalVelocity, &T::GetProjectExternalVelocity);
+    t.Text("source_rate_array", "SourceRateArrayName", "rate")
+      .Panel("Sources")
+      .Doc("Point array of the source points (input port 2) giving each point's smoke mass rate (density x "
+           "volume per second); points without it use source_rate.")
+      .Bind(&T::SetSourceRateArrayName, &T::GetSourceRateArrayName);
+    t.Text("source_temperature_array", "SourceTemperatureArrayName", "temperature")
+      .Panel("Sources")
+      .Doc("Point array of the source points giving the temperature set around each point; points without it "
+           "use source_temperature.")
+      .Bind(&T::SetSourceTemperatureArrayName, &T::GetSourceTemperatureArrayName);
+    t.Text("source_radius_array", "SourceRadiusArrayName", "radius")
+      .Panel("Sources")
+      .Doc("Point array of the source points giving each point's radius; points without it use source_radius.")
+      .Bind(&T::SetSourceRadiusArrayName, &T::GetSourceRadiusArrayName);
+    t.Text("source_velocity_array", "SourceVelocityArrayName", "velocity")
+      .Panel("Sources")
+      .Doc("Point array (3 components) of the source points giving the velocity injected around each point; "
+           "points without it inject none.")
+      .Bind(&T::SetSourceVelocityArrayName, &T::GetSourceVelocityArrayName);
+    t.Real("source_rate", "SourceRate", 1.0)
+      .Between(0.0, 1e30)
+      .Units("density x model units^3 / s")
+      .Panel("Sources")
+      .Doc("Smoke mass per second each source point injects (spread over the fluid cells within its radius) "
+           "when the points have no rate array.")
+      .Bind(&T::SetSourceRate, &T::GetSourceRate);
+    t.Real("source_temperature", "SourceTemperature", 1.0)
+      .Between(-1e30, 1e30)
+      .Panel("Sources")
+      .Doc("Temperature set around each source point when the points have no temperature array.")
+      .Bind(&T::SetSourceTemperature, &T::GetSourceTemperature);
+    t.Real("source_radius", "SourceRadius", 0.0)
+      .Between(0.0, 1e30)
+      .Units("model units")
+      .Panel("Sources")
+      .Doc("Radius of each source point when the points have no radius array; 0 = the cell holding the point.")
+      .Bind(&T::SetSourceRadius, &T::GetSourceRadius);
     // the pressure solve's parameters are declared once, by vtkPlumePressureSolver
     t.Include(vtkPlumePressureSolver::GetParameterTable(),
       [](vtkObject* o) -> vtkObject* { return static_cast<T*>(o)->GetPressureSolver(); }, "Pressure");
@@ -292,16 +330,17 @@ vtkPlumeSmokeSolver::vtkPlumeSmokeSolver()
   , LastRequestedTime(std::numeric_limits<double>::quiet_NaN())
 {
   this->HeldVelocityTime = std::numeric_limits<double>::quiet_NaN();
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(1);
   GetParameterTable().ApplyDefaults(this);
 }
 
 vtkPlumeSmokeSolver::~vtkPlumeSmokeSolver() = default;
 
-int vtkPlumeSmokeSolver::FillInputPortInformation(int, vtkInformation* info)
+int vtkPlumeSmokeSolver::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  // ports 0 (obstacles) and 1 (velocity) are images, port 2 the source points
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 2 ? "vtkPointSet" : "vtkImageData");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
@@ -1471,6 +1510,149 @@ void vtkPlumeSmokeSolver::ApplySources()
 }
 
 //------------------------------------------------------------------------------
+bool vtkPlumeSmokeSolver::ApplyPointSources(double dt)
+{
+  this->LastInjectedMass = 0;
+  vtkPointSet* points =
+    this->GetNumberOfInputConnections(2) > 0 ? vtkPointSet::SafeDownCast(this->GetInputDataObject(2, 0)) : nullptr;
+  if (!points || points->GetNumberOfPoints() == 0)
+  {
+    return true;
+  }
+  vtkPointData* pd = points->GetPointData();
+  // a named array that is missing gives the default; a present one must fit
+  auto find = [&](const std::string& name, int components, const char* what, vtkDataArray*& array) {
+    array = name.empty() ? nullptr : pd->GetArray(name.c_str());
+    if (array && array->GetNumberOfComponents() != components)
+    {
+      this->LastError = "smoke solver: source points: the " + std::string(what) + " array '" + name + "' has " +
+        std::to_string(array->GetNumberOfComponents()) + " components, expected " + std::to_string(components);
+      return false;
+    }
+    return true;
+  };
+  vtkDataArray *rates, *temperatures, *radii, *velocities;
+  if (!find(this->SourceRateArrayName, 1, "rate", rates) ||
+    !find(this->SourceTemperatureArrayName, 1, "temperature", temperatures) ||
+    !find(this->SourceRadiusArrayName, 1, "radius", radii) ||
+    !find(this->SourceVelocityArrayName, 3, "velocity", velocities))
+  {
+    return false;
+  }
+  const int* n = this->Cells;
+  const glm::dvec3 origin(this->O[0], this->O[1], this->O[2]);
+  const glm::dvec3 h(this->H[0], this->H[1], this->H[2]);
+  const double cellVolume = h.x * h.y * h.z;
+  const bool injectVelocity = velocities && !this->HasExternalVelocity();
+  std::vector<size_t> cells;
+  double injected = 0;
+  // points one after the other, cells in a fixed order: the same bits whatever the threads
+  for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+  {
+    double x[3], velocity[3] = { 0, 0, 0 };
+    points->GetPoint(p, x);
+    const double rate = rates ? rates->GetComponent(p, 0) : this->SourceRate;
+    const double temperature = temperatures ? temperatures->GetComponent(p, 0) : this->SourceTemperature;
+    const double radius = radii ? radii->GetComponent(p, 0) : this->SourceRadius;
+    if (velocities)
+    {
+      velocities->GetTuple(p, velocity);
+    }
+    for (double v : { x[0], x[1], x[2], rate, temperature, radius, velocity[0], velocity[1], velocity[2] })
+    {
+      if (!std::isfinite(v))
+      {
+        this->LastError = "smoke solver: source point " + std::to_string(p) + " has a non-finite value (" + Text(v) + ")";
+        return false;
+      }
+    }
+    if (rate < 0 || radius < 0)
+    {
+      this->LastError = "smoke solver: source point " + std::to_string(p) + " has a negative " +
+        (rate < 0 ? "rate (" + Text(rate) + ")" : "radius (" + Text(radius) + ")");
+      return false;
+    }
+    // a 2D grid: the point's z does not matter (it is moved into the plane)
+    const glm::dvec3 center(x[0], x[1], n[2] == 1 ? origin.z : x[2]);
+    const glm::dvec3 g = (center - origin) / h; // in cells; walls at -0.5 and n - 0.5
+    bool inside = true;
+    glm::ivec3 home, lo, hi;
+    for (int a = 0; a < 3; ++a)
+    {
+      if (g[a] < -0.5 || g[a] > n[a] - 0.5)
+      {
+        inside = false;
+      }
+      home[a] = std::min(std::max(int(std::lround(g[a])), 0), n[a] - 1);
+      lo[a] = std::max(0, int(std::ceil(g[a] - radius / h[a])));
+      hi[a] = std::min(n[a] - 1, int(std::floor(g[a] + radius / h[a])));
+    }
+    if (!inside)
+    {
+      continue;
+    }
+    cells.clear();
+    const size_t homeCell = home.x + size_t(n[0]) * (home.y + size_t(n[1]) * home.z);
+    for (int k = lo.z; k <= hi.z; ++k)
+      for (int j = lo.y; j <= hi.y; ++j)
+        for (int i = lo.x; i <= hi.x; ++i)
+        {
+          const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
+          if (c != homeCell && !this->Solid[c] &&
+            glm::length(origin + glm::dvec3(i, j, k) * h - center) <= radius)
+          {
+            cells.push_back(c);
+          }
+        }
+    if (!this->Solid[homeCell])
+    {
+      cells.push_back(homeCell);
+    }
+    if (cells.empty())
+    {
+      continue;
+    }
+    const double added = rate * dt / (double(cells.size()) * cellVolume);
+    for (size_t c : cells)
+    {
+      this->Density[c] += added;
+      this->Temperature[c] = temperature;
+    }
+    injected += rate * dt;
+    if (!injectVelocity || (velocity[0] == 0 && velocity[1] == 0 && velocity[2] == 0))
+    {
+      continue;
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+      int m[3] = { n[0], n[1], n[2] };
+      ++m[d];
+      const double reach = std::max(radius, 0.5 * h[d]);
+      glm::ivec3 flo, fhi;
+      for (int a = 0; a < 3; ++a)
+      {
+        const double ga = g[a] + (a == d ? 0.5 : 0.0); // face i of axis d lies at i - 1/2
+        flo[a] = std::max(0, int(std::ceil(ga - reach / h[a])));
+        fhi[a] = std::min(m[a] - 1, int(std::floor(ga + reach / h[a])));
+      }
+      for (int k = flo.z; k <= fhi.z; ++k)
+        for (int j = flo.y; j <= fhi.y; ++j)
+          for (int i = flo.x; i <= fhi.x; ++i)
+          {
+            glm::dvec3 f = origin + glm::dvec3(i, j, k) * h;
+            f[d] -= 0.5 * h[d];
+            if (glm::length(f - center) <= reach && !this->IsWallFace(d, i, j, k))
+            {
+              this->U[d][i + size_t(m[0]) * (j + size_t(m[1]) * k)] = velocity[d];
+            }
+          }
+    }
+  }
+  this->LastInjectedMass = injected;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 namespace
 {
 const char CheckpointMagic[16] = "PLUMESMOKE1";
@@ -1661,6 +1843,10 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
   {
     // passive smoke in a given flow: the velocity does not evolve
     this->ApplySources();
+    if (!this->ApplyPointSources(dt))
+    {
+      return false;
+    }
   }
   else
   {
@@ -1698,6 +1884,10 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
     this->ApplyBuoyancy(dt);
     this->ApplyVorticityConfinement(dt);
     this->ApplySources();
+    if (!this->ApplyPointSources(dt))
+    {
+      return false;
+    }
     if (!this->Project())
     {
       return false;

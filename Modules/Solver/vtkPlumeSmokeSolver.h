@@ -14,7 +14,8 @@
  *     then, if VorticityConfinement > 0, vorticity confinement;
  *  3. impulses: inside each source's sphere (at least the cell containing its
  *     centre) density and temperature are set to the source's values, and
- *     the velocity too if the source's velocity is not zero;
+ *     the velocity too if the source's velocity is not zero; then the
+ *     points of input port 2 inject smoke mass at a rate (see SetSourcePointsData);
  *  4. projection: the divergence of the velocity, a pressure Poisson solve
  *     (vtkPlumePressureSolver: the seed's Jacobi iterations or hypre's
  *     PFMG-preconditioned CG) and the subtraction of the pressure gradient.
@@ -281,6 +282,53 @@ public:
 
   ///@{
   /**
+   * Sources given as points: each point of a vtkPointSet on input port 2
+   * (SetSourcePointsConnection / SetSourcePointsData; e.g. inlets or fire
+   * positions a CFD engineer marked in the data) is a source that every step
+   * injects smoke mass at a rate, where the AddSource spheres set values:
+   *  - point array SourceRateArrayName (default "rate"; else SourceRate,
+   *    default 1): mass per second, mass being density × volume (model
+   *    units³); each step adds rate·dt, spread evenly over the fluid cells
+   *    whose centre lies within the radius (at least the cell holding the
+   *    point), so the total Σ density·cell volume grows by exactly Σ rate·dt
+   *    (with ConserveMass, or with no flow, nothing else changes it);
+   *  - SourceTemperatureArrayName ("temperature"; else SourceTemperature,
+   *    default 1): the temperature set in those cells;
+   *  - SourceRadiusArrayName ("radius"; else SourceRadius, default 0 = the
+   *    cell holding the point only);
+   *  - SourceVelocityArrayName ("velocity", 3 components; else none): if not
+   *    zero, the velocity set on the faces within the radius (at least half a
+   *    spacing), as AddSource's velocity.
+   * An array missing from the points gives its default; one with the wrong
+   * number of components, a non-finite value, or a negative rate or radius
+   * is an error naming the point and the value. Points outside the domain
+   * (beyond the walls) emit nothing; neither do points whose cells are all
+   * solid. The points are those of the last pipeline update (explicit
+   * Step() calls use them as they are); changing them does not restart the
+   * simulation.
+   */
+  void SetSourcePointsConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
+  void SetSourcePointsData(vtkDataObject* points) { this->SetInputData(2, points); }
+  vtkSetStdStringFromCharMacro(SourceRateArrayName);
+  vtkGetCharFromStdStringMacro(SourceRateArrayName);
+  vtkSetStdStringFromCharMacro(SourceTemperatureArrayName);
+  vtkGetCharFromStdStringMacro(SourceTemperatureArrayName);
+  vtkSetStdStringFromCharMacro(SourceRadiusArrayName);
+  vtkGetCharFromStdStringMacro(SourceRadiusArrayName);
+  vtkSetStdStringFromCharMacro(SourceVelocityArrayName);
+  vtkGetCharFromStdStringMacro(SourceVelocityArrayName);
+  vtkSetMacro(SourceRate, double);
+  vtkGetMacro(SourceRate, double);
+  vtkSetMacro(SourceTemperature, double);
+  vtkGetMacro(SourceTemperature, double);
+  vtkSetMacro(SourceRadius, double);
+  vtkGetMacro(SourceRadius, double);
+  /** Smoke mass (Σ density · cell volume) the point sources injected in the last step. */
+  vtkGetMacro(LastInjectedMass, double);
+  ///@}
+
+  ///@{
+  /**
    * Solid obstacles (restart the simulation): a cell whose centre is inside
    * is solid. A box is [xmin, xmax, ymin, ymax, zmin, zmax]. A surface is a
    * closed polygonal surface (a vtkPolyData, copied), voxelised with
@@ -383,6 +431,8 @@ protected:
     std::vector<double>& result) const;
   void ApplyBuoyancy(double dt);
   void ApplySources();
+  /** The point sources of input port 2 (false, with LastError, on bad values). */
+  bool ApplyPointSources(double dt);
   void ApplyVorticityConfinement(double dt);
 
   int Dimensions[3] = { 48, 48, 64 };
@@ -412,6 +462,14 @@ protected:
     double Velocity[3];
   };
   std::vector<Source> Sources;
+  std::string SourceRateArrayName = "rate";
+  std::string SourceTemperatureArrayName = "temperature";
+  std::string SourceRadiusArrayName = "radius";
+  std::string SourceVelocityArrayName = "velocity";
+  double SourceRate = 1.0;
+  double SourceTemperature = 1.0;
+  double SourceRadius = 0.0;
+  double LastInjectedMass = 0.0;
   enum ObstacleKind
   {
     SPHERE,

@@ -163,9 +163,27 @@ void IterationCounts()
               << "\n";
     PLUME_CHECK(r <= 1.0001e-6, n << "^3: residual " << r);
   }
-  PLUME_CHECK(iterations[2] - iterations[0] <= 3 && iterations[1] - iterations[0] <= 3,
+  // the goal: flat within 2 (two smoothing sweeps each way: 9, 9, 10; one sweep gave 13, 15, 16)
+  PLUME_CHECK(iterations[2] - iterations[0] <= 2 && iterations[1] - iterations[0] <= 2,
     "PCG iterations grow with the grid: " << iterations[0] << ", " << iterations[1] << ", " << iterations[2]);
-  PLUME_CHECK(iterations[2] <= 25, "PCG needs " << iterations[2] << " iterations at 128^3");
+  PLUME_CHECK(iterations[2] <= 12, "PCG needs " << iterations[2] << " iterations at 128^3");
+  {
+    // the V-cycle's sweeps are a live parameter: one sweep each way sets hypre up
+    // again and needs more iterations (to the same residual) than the default two
+    const Problem p = MakeProblem(32, 32, 32, false, 11);
+    std::vector<double> q(p.B.size());
+    vtkNew<vtkPlumePressureSolver> pcg;
+    pcg->SetProblem(p.N, p.H, p.Solid.data(), p.Open);
+    PLUME_CHECK(pcg->GetSmoothingSweeps() == 2, pcg->GetSmoothingSweeps());
+    PLUME_CHECK(pcg->Solve(p.B.data(), q.data()), pcg->GetLastError());
+    const int two = pcg->GetLastIterations();
+    pcg->SetSmoothingSweeps(1);
+    PLUME_CHECK(pcg->Solve(p.B.data(), q.data()), pcg->GetLastError());
+    const int one = pcg->GetLastIterations();
+    const double r = IndependentResidual(p, q, true);
+    std::cout << "32^3: PCG with 2 sweeps " << two << " iterations, with 1 sweep " << one << " (residual " << r << ")\n";
+    PLUME_CHECK(one > two && r <= 1.0001e-6, "1 sweep: " << one << " iterations, residual " << r << "; 2 sweeps: " << two);
+  }
 
   int jacobi[2] = { 0, 0 };
   for (int s = 0; s < 2; ++s)
