@@ -510,9 +510,11 @@ std::string vtkPlumeSmokeSolver::Validate() const
       return std::string("smoke solver: origin along ") + axes[a] + " must be finite, got " + Text(this->Origin[a]);
     }
   }
-  // Memory: about 200 bytes a cell (velocity and its advected copy, scalars
+  // Memory: about 384 bytes a cell (velocity and its advected copy, scalars
   // and theirs, pressure, right-hand side, hypre's matrix and multigrid
-  // hierarchy; measured 697 MB peak at 128^3). Refused above half the RAM.
+  // hierarchy; measured peaks: 697 MB at 128^3 = 332 B, 6.0 GB at 256^3 =
+  // 360 B). Refused above half the RAM.
+  const double bytesPerCell = 384.0;
   const double cells = double(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
 #if defined(_SC_PHYS_PAGES) && defined(_SC_PAGE_SIZE)
   const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
@@ -520,9 +522,9 @@ std::string vtkPlumeSmokeSolver::Validate() const
   const long pages = 0, pageSize = 0; // unknown: assume 8 GB of RAM
 #endif
   const double budget = pages > 0 && pageSize > 0 ? 0.5 * double(pages) * double(pageSize) : 4.0 * (1 << 30);
-  if (cells * 200.0 > budget)
+  if (cells * bytesPerCell > budget)
   {
-    return "smoke solver: " + Text(cells) + " cells need about " + Text(std::ceil(cells * 200.0 / (1 << 20))) +
+    return "smoke solver: " + Text(cells) + " cells need about " + Text(std::ceil(cells * bytesPerCell / (1 << 20))) +
       " MB, more than half the memory (" + Text(std::floor(budget / (1 << 20))) + " MB)";
   }
   if (!(this->TimeStep > 0) || !std::isfinite(this->TimeStep))
