@@ -82,7 +82,7 @@ int TestAirlightManyLights(int, char*[])
 {
   int failures = 0;
   // Small: the reference casts exact shadow rays to eleven lights.
-  const int W = 40, H = 30, stride = 5;
+  const int W = 40, H = 30, stride = 4;
 
   // 1. Eleven lights against the reference (skipped while writing the baseline).
   if (!std::getenv("PLUME_AIRLIGHT_WRITE_BASELINE"))
