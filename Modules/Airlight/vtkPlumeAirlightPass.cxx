@@ -260,7 +260,7 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Bind(&T::SetMarchSteps, &T::GetMarchSteps);
     t.Boolean("shadows", "Shadows", true)
       .Panel("Medium")
-      .Doc("Volumetric shadows of opaque geometry: a shadow map per spot light whose cone holds a prop, a cube map (six faces) per point light with any opaque prop; every light (up to 8) shadowed, one sampler each.")
+      .Doc("Volumetric shadows of opaque geometry: a shadow map per spot light whose cone holds a prop, a cube map (six faces) per point light with any opaque prop; every light shadowed (one sampler each; more than 8 lights take further passes).")
       .Bind(&T::SetShadows, &T::GetShadows);
     t.Integer("shadow_steps", "ShadowSteps", 64)
       .Between(1, 1024)
