@@ -260,7 +260,7 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Bind(&T::SetMarchSteps, &T::GetMarchSteps);
     t.Boolean("shadows", "Shadows", true)
       .Panel("Medium")
-      .Doc("Volumetric shadows of opaque geometry: a shadow map per spot light whose cone holds a prop, a cube map (six faces) per point light with any opaque prop; every light (up to 8) shadowed, one sampler each.")
+      .Doc("Volumetric shadows of opaque geometry: a shadow map per spot light whose cone holds a prop, a cube map (six faces) per point light with any opaque prop; every light shadowed (one sampler each; more than 8 lights take further passes).")
       .Bind(&T::SetShadows, &T::GetShadows);
     t.Integer("shadow_steps", "ShadowSteps", 64)
       .Between(1, 1024)
@@ -294,8 +294,11 @@ vtkPlumeAirlightPass::vtkPlumeAirlightPass()
 vtkPlumeAirlightPass::~vtkPlumeAirlightPass()
 {
   // GL objects are released by the renderer (ReleaseGraphicsResources); the
-  // helper holds no context of its own.
-  delete this->Quad;
+  // helpers hold no context of their own.
+  for (auto& q : this->Quads)
+  {
+    delete q.second;
+  }
   for (ShadowMap* m : this->ShadowMaps)
   {
     m->Release();
@@ -628,7 +631,8 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   this->FrameBuffer->RemoveDepthAttachment();
   ostate->PopFramebufferBindings();
 
-  // 2. The lights, in eye coordinates (the delegate has updated their geometry).
+  // 2. The lights, in eye coordinates (the delegate has updated their geometry),
+  // split into groups of at most MaximumLights (one shader pass each).
   vtkCamera* camera = r->GetActiveCamera();
   vtkMatrix4x4* view = camera->GetViewTransformMatrix();
   auto toEye = [view](const double p[3], double w4) {
@@ -638,13 +642,19 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     return glm::dvec3(out[0], out[1], out[2]);
   };
   std::vector<float> positions, intensities, axes, cosCones, exponents;
-  std::vector<int> shadowIndex;
+  std::vector<int> shadowIndex;       // per light: its shadow map's index in ShadowMaps, or -1
   std::vector<double> shadowMatrices; // row-major, eye coordinates -> light clip coordinates
   std::vector<float> shadowRanges;    // near, far per shadow map
   std::vector<int> shadowFaces;       // 1 (spot) or 6 (point) per shadow map
   std::vector<float> shadowLights;    // the light's eye position per shadow map
-  int unshadowed = 0;                 // lights that needed a map beyond the limit
-  bool anySpot = false;
+  int unshadowed = 0;                 // lights that needed a map but got none (no texture unit at all)
+  // A group: lights [First, First + Count) and shadow maps [FirstShadow, FirstShadow + Shadows).
+  struct Group
+  {
+    int First = 0, Count = 0, FirstShadow = 0, Shadows = 0;
+    bool AnySpot = false;
+  };
+  std::vector<Group> groups(1);
   // The opaque props that can cast shadows: their bounds and their latest change.
   struct Occluder
   {
@@ -680,12 +690,11 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   vtkNew<vtkMatrix4x4> inverseView;
   vtkMatrix4x4::Invert(view, inverseView);
   int shadowCount = 0;
-  // One sampler per shadowed light beside the pass's own 4 (colour, depth,
-  // table, low-resolution airlight).
+  // One sampler per shadowed light of a group beside the pass's own 4
+  // (colour, depth, table, low-resolution airlight).
   GLint textureUnits = 16;
   glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &textureUnits);
   const int shadowLimit = std::max(0, std::min<int>(MaximumShadowedLights, textureUnits - 4));
-  int ignoredLights = 0;
   vtkLightCollection* lights = r->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
@@ -695,10 +704,12 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     {
       continue;
     }
-    if (static_cast<int>(cosCones.size()) >= MaximumLights)
+    if (groups.back().Count >= MaximumLights)
     {
-      ++ignoredLights; // reported below: nothing is dropped silently
-      continue;
+      Group next;
+      next.First = static_cast<int>(cosCones.size());
+      next.FirstShadow = shadowCount;
+      groups.push_back(next);
     }
     double position[3], focal[3], color[3], attenuation[3];
     light->GetTransformedPosition(position);
@@ -716,7 +727,6 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     const double axisLength = glm::length(axis);
     axis = axisLength > 0.0 ? axis / axisLength : glm::dvec3(0.0, 0.0, -1.0);
     const bool spot = light->GetConeAngle() < 90.0;
-    anySpot = anySpot || spot;
     for (int c = 0; c < 3; ++c)
     {
       positions.push_back(static_cast<float>(pe[c]));
@@ -753,7 +763,16 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       const std::vector<double> key = { position[0], position[1], position[2], focal[0], focal[1],
         focal[2], spot ? light->GetConeAngle() : 180.0, static_cast<double>(this->ShadowMapSize),
         static_cast<double>(propsTime), static_cast<double>(occluders.size()), r->GetTiledAspectRatio() };
-      if (occluded && shadowCount >= shadowLimit)
+      if (occluded && shadowLimit > 0 && groups.back().Shadows >= shadowLimit)
+      {
+        // The group's samplers are used up (only on a driver with fewer than
+        // 12 units): this light opens the next group.
+        Group next;
+        next.First = static_cast<int>(cosCones.size()) - 1;
+        next.FirstShadow = shadowCount;
+        groups.push_back(next);
+      }
+      if (occluded && shadowLimit == 0)
       {
         ++unshadowed; // reported below
       }
@@ -774,212 +793,228 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
         shadowLights.insert(shadowLights.end(), { static_cast<float>(pe.x), static_cast<float>(pe.y),
           static_cast<float>(pe.z) });
         shadow = shadowCount++;
+        ++groups.back().Shadows;
       }
     }
+    Group& group = groups.back();
+    ++group.Count;
+    group.AnySpot = group.AnySpot || spot;
     shadowIndex.push_back(shadow);
     exponents.push_back(static_cast<float>(light->GetExponent()));
   }
-  const int numberOfLights = static_cast<int>(cosCones.size());
   this->NumberOfShadowedLights = shadowCount;
   this->NumberOfUnshadowedLights = unshadowed;
+  this->NumberOfLightGroups = static_cast<int>(groups.size());
   if (unshadowed > 0 && unshadowed != this->ReportedUnshadowed)
   {
-    vtkWarningMacro("vtkPlumeAirlightPass: " << shadowCount + unshadowed
-      << " lights need a shadow map but at most " << shadowLimit
-      << " are shadowed (one sampler each; the driver has " << textureUnits
-      << " fragment texture units, the pass uses 4 others); the last " << unshadowed
-      << " are rendered unshadowed.");
+    vtkWarningMacro("vtkPlumeAirlightPass: " << unshadowed
+      << " lights need a shadow map but the driver has " << textureUnits
+      << " fragment texture units, all used by the pass's 4 others; they are rendered unshadowed.");
   }
   this->ReportedUnshadowed = unshadowed;
-  this->NumberOfIgnoredLights = ignoredLights;
-  if (ignoredLights > 0 && ignoredLights != this->ReportedIgnored)
-  {
-    vtkWarningMacro("vtkPlumeAirlightPass: the renderer has " << MaximumLights + ignoredLights
-      << " positional lights switched on but the pass scatters light from at most " << MaximumLights
-      << "; the last " << ignoredLights << " add no airlight.");
-  }
-  this->ReportedIgnored = ignoredLights;
-
-  // 3. The program for this variant (lights count, spot lights or not).
-  std::ostringstream defines;
-  defines << "#define NUMBER_OF_LIGHTS " << std::max(numberOfLights, 1) << "\n";
-  std::set<std::string> features;
-  if (anySpot || shadowCount > 0) // the shadowed march uses the spot path's running integral
-  {
-    features.insert("SPOT");
-    defines << "#define HAS_SPOT\n";
-  }
-  if (shadowCount > 0)
-  {
-    features.insert("SHADOW");
-    defines << "#define NUMBER_OF_SHADOWS " << shadowCount << "\n";
-  }
-  if (this->MarchSteps > 0)
-  {
-    defines << "#define MARCH\n#define MARCH_STEPS " << this->MarchSteps << "\n";
-  }
-  const double kt0 = this->Scattering[0] + this->Absorption[0];
-  if (kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2])
-  {
-    defines << "#define GREY\n"; // one table look-up for the three channels
-  }
-  const std::string key = defines.str();
-  if (this->Quad && this->ProgramKey != key)
-  {
-    delete this->Quad;
-    this->Quad = nullptr;
-  }
-  if (!this->Quad)
-  {
-    const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeAirlightFS, features, defines.str());
-    this->Quad = new vtkOpenGLQuadHelper(
-      renWin, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
-    this->ProgramKey = key;
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  vtkShaderProgram* program = this->Quad->Program;
-  if (!program || !program->GetCompiled())
-  {
-    vtkErrorMacro("Could not build the airlight shader program.");
-    return;
-  }
-
-  // 4. Uniforms and the full-screen pass.
-  this->ColorTexture->Activate();
-  this->DepthTexture->Activate();
-  this->TableTexture->Activate();
-  program->SetUniformi("SceneColor", this->ColorTexture->GetTextureUnit());
-  program->SetUniformi("SceneDepth", this->DepthTexture->GetTextureUnit());
-  program->SetUniformi("Table", this->TableTexture->GetTextureUnit());
-  program->SetUniformi("TableSize", this->UploadedTableResolution);
-  {
-    const double g = this->UploadedTableAnisotropy;
-    const float stretch[2] = { static_cast<float>(g > 0.0 ? PhaseStretch(g) : 0.0),
-      static_cast<float>(g < 0.0 ? PhaseStretch(g) : 0.0) };
-    program->SetUniform2f("PhaseStretch", stretch);
-    if (this->MarchSteps > 0)
-    {
-      program->SetUniformf("Anisotropy", static_cast<float>(g));
-    }
-  }
-  const float origin[2] = { static_cast<float>(x), static_cast<float>(y) };
-  program->SetUniform2f("ViewportOrigin", origin);
-  vtkNew<vtkMatrix4x4> inverse;
-  inverse->DeepCopy(camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0));
-  inverse->Invert();
-  plume::SetUniformMatrix4x4(program, "InverseProjection", inverse->GetData());
-  program->SetUniformi("Perspective", camera->GetParallelProjection() ? 0 : 1);
-  const float viewportSize[2] = { static_cast<float>(w), static_cast<float>(h) };
-  program->SetUniform2f("ViewportSize", viewportSize);
-  program->SetUniformi("Downsampling", this->Downsampling);
-  program->SetUniformf("UpsamplingTolerance", static_cast<float>(this->UpsamplingTolerance));
-  float ks[3], kt[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    ks[c] = static_cast<float>(this->Scattering[c]);
-    kt[c] = static_cast<float>(this->Scattering[c] + this->Absorption[c]);
-  }
-  program->SetUniform3f("KappaS", ks);
-  program->SetUniform3f("KappaT", kt);
-  program->SetUniformi("NumberOfLights", numberOfLights);
-  if (this->MarchSteps > 0)
-  {
-    double ktMin = HUGE_VAL;
-    for (int c = 0; c < 3; ++c)
-    {
-      if (kt[c] > 0)
-      {
-        ktMin = std::min(ktMin, static_cast<double>(kt[c]));
-      }
-    }
-    program->SetUniformf("MarchFar", static_cast<float>(std::log(1e6) / ktMin));
-  }
-  if (numberOfLights > 0)
-  {
-    program->SetUniform3fv("LightPosition", numberOfLights, reinterpret_cast<const float(*)[3]>(positions.data()));
-    program->SetUniform3fv("LightI0", numberOfLights, reinterpret_cast<const float(*)[3]>(intensities.data()));
-    if (anySpot || shadowCount > 0)
-    {
-      program->SetUniform3fv("LightAxis", numberOfLights, reinterpret_cast<const float(*)[3]>(axes.data()));
-      program->SetUniform1fv("LightCosCone", numberOfLights, cosCones.data());
-      program->SetUniform1fv("LightExponent", numberOfLights, exponents.data());
-      program->SetUniformi("SpotSteps", this->SpotSteps);
-    }
-    if (shadowCount > 0)
-    {
-      program->SetUniform1iv("LightShadow", numberOfLights, shadowIndex.data());
-      program->SetUniformi("ShadowSteps", this->ShadowSteps);
-      // Cube faces are world-axis aligned: the shader picks one by the world direction.
-      double eyeToWorld[9];
-      for (int i = 0; i < 3; ++i)
-      {
-        for (int j = 0; j < 3; ++j)
-        {
-          eyeToWorld[3 * i + j] = inverseView->GetElement(i, j);
-        }
-      }
-      plume::SetUniformMatrix3x3(program, "EyeToWorld", eyeToWorld);
-      for (int k = 0; k < shadowCount; ++k)
-      {
-        const std::string n = std::to_string(k);
-        this->ShadowMaps[k]->Depth->Activate();
-        program->SetUniformi(("ShadowMap" + n).c_str(), this->ShadowMaps[k]->Depth->GetTextureUnit());
-        for (int f = 0; f < 6; ++f)
-        {
-          plume::SetUniformMatrix4x4(program, ("ShadowMatrix" + n + "[" + std::to_string(f) + "]").c_str(),
-            &shadowMatrices[16 * (6 * k + f)]);
-        }
-        program->SetUniform2f(("ShadowRange" + n).c_str(), &shadowRanges[2 * k]);
-        program->SetUniformi(("ShadowFaces" + n).c_str(), shadowFaces[k]);
-        program->SetUniform3f(("ShadowLight" + n).c_str(), &shadowLights[3 * k]);
-      }
-    }
-  }
 
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   ostate->vtkglDepthMask(GL_TRUE);
-  const bool low = this->Downsampling > 1 && this->LowTexture;
-  if (low)
+  this->ColorTexture->Activate();
+  this->DepthTexture->Activate();
+  this->TableTexture->Activate();
+  for (size_t gi = 0; gi < groups.size(); ++gi)
   {
-    // The airlight alone at one sample per Downsampling^2 pixels.
-    const int lw = static_cast<int>(this->LowTexture->GetWidth());
-    const int lh = static_cast<int>(this->LowTexture->GetHeight());
-    ostate->PushFramebufferBindings();
-    this->LowFrameBuffer->Bind();
-    this->LowFrameBuffer->AddColorAttachment(0, this->LowTexture);
-    this->LowFrameBuffer->ActivateDrawBuffers(1);
-    ostate->vtkglViewport(0, 0, lw, lh);
-    ostate->vtkglScissor(0, 0, lw, lh);
-    program->SetUniformi("Mode", 1);
-    this->Quad->Render();
-    this->LowFrameBuffer->RemoveColorAttachments(1);
-    ostate->PopFramebufferBindings();
-    this->LowTexture->Activate();
-    program->SetUniformi("LowRes", this->LowTexture->GetTextureUnit());
-  }
-  program->SetUniformi("Mode", low ? 2 : 0);
-  ostate->vtkglViewport(x, y, w, h);
-  ostate->vtkglScissor(x, y, w, h);
-  this->Quad->Render();
-  if (low)
-  {
-    this->LowTexture->Deactivate();
+    const Group& group = groups[gi];
+    // 3. The program for this group's variant (lights count, spot lights, shadows).
+    std::ostringstream defines;
+    defines << "#define NUMBER_OF_LIGHTS " << std::max(group.Count, 1) << "\n";
+    std::set<std::string> features;
+    if (group.AnySpot || group.Shadows > 0) // the shadowed march uses the spot path's running integral
+    {
+      features.insert("SPOT");
+      defines << "#define HAS_SPOT\n";
+    }
+    if (group.Shadows > 0)
+    {
+      features.insert("SHADOW");
+      defines << "#define NUMBER_OF_SHADOWS " << group.Shadows << "\n";
+    }
+    if (this->MarchSteps > 0)
+    {
+      defines << "#define MARCH\n#define MARCH_STEPS " << this->MarchSteps << "\n";
+    }
+    const double kt0 = this->Scattering[0] + this->Absorption[0];
+    if (kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2])
+    {
+      defines << "#define GREY\n"; // one table look-up for the three channels
+    }
+    const std::string key = defines.str();
+    vtkOpenGLQuadHelper*& quad = this->Quads[key];
+    if (!quad)
+    {
+      const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeAirlightFS, features, key);
+      quad = new vtkOpenGLQuadHelper(
+        renWin, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
+    }
+    else
+    {
+      renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
+    }
+    vtkShaderProgram* program = quad->Program;
+    if (!program || !program->GetCompiled())
+    {
+      vtkErrorMacro("Could not build the airlight shader program.");
+      break;
+    }
+
+    // 4. Uniforms and the full-screen pass.
+    program->SetUniformi("SceneColor", this->ColorTexture->GetTextureUnit());
+    program->SetUniformi("SceneDepth", this->DepthTexture->GetTextureUnit());
+    program->SetUniformi("Table", this->TableTexture->GetTextureUnit());
+    program->SetUniformi("TableSize", this->UploadedTableResolution);
+    {
+      const double g = this->UploadedTableAnisotropy;
+      const float stretch[2] = { static_cast<float>(g > 0.0 ? PhaseStretch(g) : 0.0),
+        static_cast<float>(g < 0.0 ? PhaseStretch(g) : 0.0) };
+      program->SetUniform2f("PhaseStretch", stretch);
+      if (this->MarchSteps > 0)
+      {
+        program->SetUniformf("Anisotropy", static_cast<float>(g));
+      }
+    }
+    const float origin[2] = { static_cast<float>(x), static_cast<float>(y) };
+    program->SetUniform2f("ViewportOrigin", origin);
+    vtkNew<vtkMatrix4x4> inverse;
+    inverse->DeepCopy(camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0));
+    inverse->Invert();
+    plume::SetUniformMatrix4x4(program, "InverseProjection", inverse->GetData());
+    program->SetUniformi("Perspective", camera->GetParallelProjection() ? 0 : 1);
+    const float viewportSize[2] = { static_cast<float>(w), static_cast<float>(h) };
+    program->SetUniform2f("ViewportSize", viewportSize);
+    program->SetUniformi("Downsampling", this->Downsampling);
+    program->SetUniformf("UpsamplingTolerance", static_cast<float>(this->UpsamplingTolerance));
+    // The first group composites the attenuated surface; the others add airlight only.
+    program->SetUniformi("AirlightOnly", gi == 0 ? 0 : 1);
+    float ks[3], kt[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      ks[c] = static_cast<float>(this->Scattering[c]);
+      kt[c] = static_cast<float>(this->Scattering[c] + this->Absorption[c]);
+    }
+    program->SetUniform3f("KappaS", ks);
+    program->SetUniform3f("KappaT", kt);
+    const int n = group.Count;
+    const int l0 = group.First;
+    program->SetUniformi("NumberOfLights", n);
+    if (this->MarchSteps > 0)
+    {
+      double ktMin = HUGE_VAL;
+      for (int c = 0; c < 3; ++c)
+      {
+        if (kt[c] > 0)
+        {
+          ktMin = std::min(ktMin, static_cast<double>(kt[c]));
+        }
+      }
+      program->SetUniformf("MarchFar", static_cast<float>(std::log(1e6) / ktMin));
+    }
+    if (n > 0)
+    {
+      program->SetUniform3fv("LightPosition", n, reinterpret_cast<const float(*)[3]>(&positions[3 * l0]));
+      program->SetUniform3fv("LightI0", n, reinterpret_cast<const float(*)[3]>(&intensities[3 * l0]));
+      if (group.AnySpot || group.Shadows > 0)
+      {
+        program->SetUniform3fv("LightAxis", n, reinterpret_cast<const float(*)[3]>(&axes[3 * l0]));
+        program->SetUniform1fv("LightCosCone", n, &cosCones[l0]);
+        program->SetUniform1fv("LightExponent", n, &exponents[l0]);
+        program->SetUniformi("SpotSteps", this->SpotSteps);
+      }
+      if (group.Shadows > 0)
+      {
+        // The shader's sampler slots count from the group's first map.
+        std::vector<int> local(n);
+        for (int k = 0; k < n; ++k)
+        {
+          local[k] = shadowIndex[l0 + k] >= 0 ? shadowIndex[l0 + k] - group.FirstShadow : -1;
+        }
+        program->SetUniform1iv("LightShadow", n, local.data());
+        program->SetUniformi("ShadowSteps", this->ShadowSteps);
+        // Cube faces are world-axis aligned: the shader picks one by the world direction.
+        double eyeToWorld[9];
+        for (int i = 0; i < 3; ++i)
+        {
+          for (int j = 0; j < 3; ++j)
+          {
+            eyeToWorld[3 * i + j] = inverseView->GetElement(i, j);
+          }
+        }
+        plume::SetUniformMatrix3x3(program, "EyeToWorld", eyeToWorld);
+        for (int k = 0; k < group.Shadows; ++k)
+        {
+          const int m = group.FirstShadow + k;
+          const std::string ks2 = std::to_string(k);
+          this->ShadowMaps[m]->Depth->Activate();
+          program->SetUniformi(("ShadowMap" + ks2).c_str(), this->ShadowMaps[m]->Depth->GetTextureUnit());
+          for (int f = 0; f < 6; ++f)
+          {
+            plume::SetUniformMatrix4x4(program, ("ShadowMatrix" + ks2 + "[" + std::to_string(f) + "]").c_str(),
+              &shadowMatrices[16 * (6 * m + f)]);
+          }
+          program->SetUniform2f(("ShadowRange" + ks2).c_str(), &shadowRanges[2 * m]);
+          program->SetUniformi(("ShadowFaces" + ks2).c_str(), shadowFaces[m]);
+          program->SetUniform3f(("ShadowLight" + ks2).c_str(), &shadowLights[3 * m]);
+        }
+      }
+    }
+
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    const bool low = this->Downsampling > 1 && this->LowTexture;
+    if (low)
+    {
+      // The group's airlight alone at one sample per Downsampling^2 pixels.
+      ostate->vtkglDisable(GL_BLEND);
+      const int lw = static_cast<int>(this->LowTexture->GetWidth());
+      const int lh = static_cast<int>(this->LowTexture->GetHeight());
+      ostate->PushFramebufferBindings();
+      this->LowFrameBuffer->Bind();
+      this->LowFrameBuffer->AddColorAttachment(0, this->LowTexture);
+      this->LowFrameBuffer->ActivateDrawBuffers(1);
+      ostate->vtkglViewport(0, 0, lw, lh);
+      ostate->vtkglScissor(0, 0, lw, lh);
+      program->SetUniformi("Mode", 1);
+      quad->Render();
+      this->LowFrameBuffer->RemoveColorAttachments(1);
+      ostate->PopFramebufferBindings();
+      this->LowTexture->Activate();
+      program->SetUniformi("LowRes", this->LowTexture->GetTextureUnit());
+    }
+    if (gi == 0)
+    {
+      ostate->vtkglDisable(GL_BLEND);
+    }
+    else
+    {
+      // The single-scattering airlight is a sum over lights: later groups add
+      // theirs to the colour and keep the alpha.
+      ostate->vtkglEnable(GL_BLEND);
+      ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+    }
+    program->SetUniformi("Mode", low ? 2 : 0);
+    ostate->vtkglViewport(x, y, w, h);
+    ostate->vtkglScissor(x, y, w, h);
+    quad->Render();
+    if (low)
+    {
+      this->LowTexture->Deactivate();
+    }
+    for (int k = 0; k < group.Shadows; ++k)
+    {
+      this->ShadowMaps[group.FirstShadow + k]->Depth->Deactivate();
+    }
   }
   this->ColorTexture->Deactivate();
   this->DepthTexture->Deactivate();
   this->TableTexture->Deactivate();
-  for (int k = 0; k < shadowCount; ++k)
-  {
-    this->ShadowMaps[k]->Depth->Deactivate();
-  }
   vtkOpenGLCheckErrorMacro("failed after vtkPlumeAirlightPass::Render");
 }
 
@@ -987,9 +1022,11 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
 void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  delete this->Quad;
-  this->Quad = nullptr;
-  this->ProgramKey.clear();
+  for (auto& q : this->Quads)
+  {
+    delete q.second;
+  }
+  this->Quads.clear();
   for (vtkTextureObject** t : { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->LowTexture })
   {
     if (*t)

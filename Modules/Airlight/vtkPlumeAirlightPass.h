@@ -49,7 +49,9 @@
  * ignored for the airlight (VTK's default (1, 0, 0) is no falloff, which a
  * point source in a medium cannot have). A cone angle below 90 degrees makes
  * a spot light with VTK's rule (inside the cone w = pow(cos angle, exponent),
- * outside 0). At most 8 lights are used.
+ * outside 0). Any number of lights: one shader pass takes up to 8, further
+ * lights are drawn in further passes of up to 8 (light groups), each adding
+ * its airlight (additive blending); the surface is attenuated once.
  *
  * Skipped work: with ks = ka = 0 in every channel the delegate renders
  * directly (no framebuffer, no pass). The table is built once per process
@@ -65,8 +67,8 @@
  * sub-intervals uniform in the angle seen from the light, each adding
  * w * [Phi(x_k) - Phi(x_{k-1})] when a jittered point of it is lit, Phi the
  * closed-form running integral (so a fully lit ray with exponent 0 is the
- * unshadowed result; no arctan in the loop). Up to MaximumShadowedLights
- * (8, every light the pass renders) are shadowed, one sampler each.
+ * unshadowed result; no arctan in the loop). Every light can be shadowed
+ * (MaximumShadowedLights = 8 per light group, one sampler each).
  *
  * Limits: a light exactly on a view ray (the integral of 1/d^2 diverges)
  * gives a huge but finite value, clamped to 1e20.
@@ -77,6 +79,7 @@
 #include "PlumeAirlightModule.h" // For export macro
 #include "vtkImageProcessingPass.h"
 
+#include <map>    // For std::map
 #include <string> // For std::string
 #include <vector> // For std::vector
 
@@ -222,25 +225,36 @@ public:
 
   /**
    * How many lights needed a shadow map in the last frame but were left
-   * unshadowed because MaximumShadowedLights were already shadowed (a warning
-   * names the numbers when this count changes to a value above 0).
+   * unshadowed (only on a driver with no texture unit left for a shadow map;
+   * a warning names the numbers when this count changes to a value above 0).
    */
   vtkGetMacro(NumberOfUnshadowedLights, int);
 
   /**
-   * How many switched-on positional lights beyond the 8 the pass scatters
-   * from were left out of the airlight in the last frame (a warning names the
-   * numbers when this count changes to a value above 0).
+   * Deprecated, always 0: no light is left out any more (lights beyond 8 are
+   * drawn in further passes, see GetNumberOfLightGroups). Kept so that code
+   * that checked it still compiles.
    */
   vtkGetMacro(NumberOfIgnoredLights, int);
 
   /**
-   * At most this many lights are shadowed per frame (one shadow-map sampler
-   * each: GLSL 1.50 cannot index samplers dynamically): 8, the number of
-   * positional lights the pass renders at all, so every light can be
-   * shadowed. A driver with fewer than 12 fragment texture units (GL 3.2
-   * guarantees 16) lowers it to the units left after the pass's 4 others;
-   * lights beyond it get their airlight unshadowed, with a warning.
+   * How many full-screen passes the last frame's lights took: one shader takes
+   * at most 8 positional lights (and at most MaximumShadowedLights shadowed
+   * ones); further lights go into further groups, each a full-screen pass
+   * that adds its airlight to the frame (additive blending; the surface
+   * attenuation is applied once, by the first). 1 for up to 8 lights
+   * (also for none).
+   */
+  vtkGetMacro(NumberOfLightGroups, int);
+
+  /**
+   * At most this many lights are shadowed per light group, i.e. per shader
+   * pass (one shadow-map sampler each: GLSL 1.50 cannot index samplers
+   * dynamically): 8, the number of lights a group holds, so every light can
+   * be shadowed. A driver with fewer than 12 fragment texture units (GL 3.2
+   * guarantees 16) lowers it to the units left after the pass's 4 others and
+   * a shadowed light beyond it opens a new group; only a driver with no unit
+   * left renders shadowed lights unshadowed, with a warning.
    */
   static constexpr int MaximumShadowedLights = 8;
 
@@ -297,8 +311,8 @@ protected:
   int NumberOfShadowedLights = 0;
   int NumberOfUnshadowedLights = 0;
   int ReportedUnshadowed = 0;
-  int NumberOfIgnoredLights = 0;
-  int ReportedIgnored = 0;
+  int NumberOfIgnoredLights = 0; // always 0 (kept for compatibility)
+  int NumberOfLightGroups = 0;
 
   struct ShadowMap;
   std::vector<ShadowMap*> ShadowMaps;
@@ -314,8 +328,9 @@ protected:
   vtkTextureObject* LowTexture = nullptr;
   int UploadedTableResolution = 0;
   double UploadedTableAnisotropy = 0.0;
-  vtkOpenGLQuadHelper* Quad = nullptr;
-  std::string ProgramKey; // the variant Quad was built for
+  // One full-screen program per variant (lights, spots, shadows of a group),
+  // keyed by its defines: a frame with several light groups switches between them.
+  std::map<std::string, vtkOpenGLQuadHelper*> Quads;
 
 private:
   vtkPlumeAirlightPass(const vtkPlumeAirlightPass&) = delete;

@@ -163,7 +163,7 @@ void vtkPlumeAirlightReference::SetLights(vtkRenderer* renderer)
   lights->InitTraversal(it);
   while (vtkLight* light = lights->GetNextLight(it))
   {
-    if (!light->GetSwitch() || !light->GetPositional() || this->Lights.size() >= 8)
+    if (!light->GetSwitch() || !light->GetPositional())
     {
       continue;
     }

@@ -147,6 +147,7 @@ public:
     vtkDataArray* Mask = nullptr; // valid-point mask (one component) or null
     vtkVolumeProperty* Property = nullptr;
     bool Shade = false;           // shaded composite
+    bool IsoDepth = false;        // the isosurface writes gl_FragDepth (ISO, lattice 1)
     bool PreInt = false;          // pre-integrated composite
     double Range[2] = { 0, 0 };   // the transfer functions' range (data units)
     double ScaleBias[2] = { 0, 0 }; // texel -> u over Range
@@ -1118,6 +1119,12 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
   coarseFeatures = features;
   coarseFeatures.Enable("COARSE");
   features.Enable("REFINE", lattice > 1);
+  // An opaque isosurface writes its depth (as opaque geometry does), so what
+  // draws after it, e.g. vtkPlumeAirlightPass's medium, stops there. Only
+  // when every pixel casts its own ray: interpolated lattice pixels have no
+  // depth of their own.
+  frame.IsoDepth = frame.Mode == "ISO" && lattice == 1;
+  features.Enable("ISO_DEPTH", frame.IsoDepth);
   vtkShaderProgram*& coarse = frame.Coarse;
   if (lattice > 1)
   {
@@ -1370,8 +1377,20 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
   vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  if (frame.IsoDepth)
+  {
+    // the hit's depth, z-tested (a nearer surface already drawn wins); depth
+    // writes need the test enabled
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LEQUAL);
+    state->vtkglDepthMask(GL_TRUE);
+  }
+  else
+  {
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+  }
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   state->vtkglEnable(GL_CULL_FACE);

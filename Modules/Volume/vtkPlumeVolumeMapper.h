@@ -19,7 +19,10 @@
  * and every ray stops at it, so the volume composites correctly in front of,
  * around and behind opaque VTK actors. Where a ray gathers nothing, nothing is
  * written. Output is premultiplied colour blended with (ONE, ONE_MINUS_SRC_ALPHA);
- * depth is neither tested nor written.
+ * depth is neither tested nor written, except by an isosurface (ISOSURFACE_BLEND,
+ * ImageSampleDistance 1), which is opaque and writes its hit's depth (z-tested
+ * with GL_LEQUAL), so that what draws after it (e.g. vtkPlumeAirlightPass's
+ * medium) stops at it as at opaque geometry.
  *
  * Sampling: samples sit at the midpoints of segments of SampleDistance voxels
  * (index-space length) along the ray; the first segment is shortened by a

@@ -167,6 +167,23 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
   renderer->SetBackground(0.1, 0.15, 0.3);
   window->AddRenderer(renderer);
   BuildScene(renderer);
+  if (job.rfind("lights:", 0) == 0)
+  {
+    // "lights:N": the scene's two lights plus N - 2 weak point lights under
+    // the ceiling; above 8 the lights take a second (third...) light group.
+    const int n = std::stoi(job.substr(7));
+    for (int k = 2; k < n; ++k)
+    {
+      vtkNew<vtkLight> extra;
+      extra->SetLightTypeToSceneLight();
+      extra->SetPositional(true);
+      extra->SetConeAngle(180);
+      extra->SetPosition(-4.0 + 0.55 * k, 3.0 + 0.2 * (k % 3), -3.5 + 0.35 * k);
+      extra->SetColor(0.9, 0.9, 0.8);
+      extra->SetIntensity(0.3);
+      renderer->AddLight(extra);
+    }
+  }
   vtkNew<vtkRenderStepsPass> steps;
   vtkNew<vtkPlumeAirlightPass> pass;
   pass->SetDelegatePass(steps);
@@ -232,7 +249,8 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
     }
   }
   nlohmann::json result = { { "frame_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() },
-    { "shadowed_lights", pass->GetNumberOfShadowedLights() }, { "bakes", pass->GetNumberOfShadowMapBakes() } };
+    { "shadowed_lights", pass->GetNumberOfShadowedLights() }, { "bakes", pass->GetNumberOfShadowMapBakes() },
+    { "light_groups", pass->GetNumberOfLightGroups() } };
   if (job == "opaque" || job == "shadow_rebake" || job == "floor" || job == "copy")
   {
     return result;
@@ -288,7 +306,8 @@ std::vector<std::string> Jobs(bool quick)
 {
   const std::string half = quick ? "@64" : "@256";
   std::vector<std::string> jobs = { "opaque", "ours", "grey", "shadow", "shadow_rebake", "opaque" + half,
-    "ours" + half, "floor", "copy", "down:2", "down:4", "down:2:0.25", "down:4:0.25", "down:2:1", "down:4:1" };
+    "ours" + half, "floor", "copy", "down:2", "down:4", "down:2:0.25", "down:4:0.25", "down:2:1", "down:4:1",
+    "lights:7", "lights:8", "lights:9", "lights:16", "lights:17" };
   for (int n : MarchSteps(quick))
   {
     jobs.push_back("march:" + std::to_string(n));
@@ -424,6 +443,32 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
       line["added_ms"] = 1e3 * (downTime - opaque->second.value("frame_s", 0.0));
     }
     lines.push_back(line);
+  }
+  // Light groups: the frame with N lights against 8 (one group); the cost of a
+  // group beyond the first is what a 9th light costs over an 8th.
+  const auto eight = results.find("lights:8");
+  const auto seven = results.find("lights:7");
+  if (eight != results.end() && seven != results.end())
+  {
+    const double t8 = eight->second.value("frame_s", 0.0);
+    const double perLight = t8 - seven->second.value("frame_s", 0.0);
+    for (const char* n : { "9", "16", "17" })
+    {
+      const auto more = results.find(std::string("lights:") + n);
+      if (more == results.end())
+      {
+        continue;
+      }
+      const double t = more->second.value("frame_s", 0.0);
+      const int groups = more->second.value("light_groups", 0);
+      lines.push_back({ { "bench", "airlight" },
+        { "case", size + " " + n + " point lights (" + std::to_string(groups) + " light groups)" },
+        { "ours_s", t }, { "peer", "ours with 8 lights (one group)" }, { "peer_s", t8 },
+        { "ratio", t > 0 ? t8 / t : 0.0 }, { "light_groups", groups },
+        { "added_ms", 1e3 * (t - t8) }, { "eighth_light_ms", 1e3 * perLight },
+        { "error", more->second.value("error", 0.0) }, { "error_max", more->second.value("error_max", 0.0) },
+        { "peak_rss_mb", more->second.value("peak_rss_mb", 0.0) } });
+    }
   }
   const auto floorJob = results.find("floor");
   const auto copyJob = results.find("copy");

@@ -32,6 +32,9 @@ uniform int Mode;
 uniform int Downsampling;
 uniform sampler2D LowRes;
 uniform float UpsamplingTolerance;
+// 0: the frame (surface attenuated + airlight); 1: the airlight alone, for a
+// light group after the first, blended additively onto the frame.
+uniform int AirlightOnly;
 
 uniform vec3 KappaS;
 uniform vec3 KappaT;
@@ -642,5 +645,5 @@ void main()
   // The surface as the window would show it without the medium (the float
   // target keeps values above 1 that an 8-bit window clamps), then attenuated.
   vec3 result = clamp(color.rgb, 0.0, 1.0) * transmittance + airlight;
-  gl_FragData[0] = vec4(result, 1.0);
+  gl_FragData[0] = AirlightOnly == 1 ? vec4(airlight, 0.0) : vec4(result, 1.0);
 }

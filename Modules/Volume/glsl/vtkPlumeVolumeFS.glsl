@@ -31,6 +31,8 @@
 //                    nearest lattice rays agree within LatticeTolerance (every
 //                    premultiplied channel) and, with DEPTH, whose opaque depth
 //                    is what theirs predict, interpolates them; else casts its own
+//   ISO_DEPTH        ISO without REFINE: the hit writes its window depth
+//                    (gl_FragDepth), as opaque geometry does
 // Values (#define): PLUME_LIGHTS n (lit modes), PLUME_ISO_MARGIN (SKIP_ISO).
 
 //PLUME::Defines
@@ -606,6 +608,12 @@ void main()
   }
   vec3 color = phong(transfer(IsoValue).rgb, gradientAt(p0 + tHit * d), viewDir);
   dst = vec4(color, 1.0);
+//PLUME::IF ISO_DEPTH
+  // The hit's window depth: along the ray the homogeneous index point is
+  // (1 - s) a + s b for window depth s (a, b at the near and far planes), and
+  // p0 + tHit d is its dehomogenised form, so s = tHit a.w / ((1 - tHit) b.w + tHit a.w).
+  gl_FragDepth = clamp(tHit * a.w / ((1.0 - tHit) * b.w + tHit * a.w), 0.0, 1.0);
+//PLUME::ENDIF
 //PLUME::ENDIF
   if (dst.a <= 0.0)
   {

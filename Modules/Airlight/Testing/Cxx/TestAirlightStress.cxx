@@ -4,8 +4,8 @@
 // A0 and arctan argument blow up), a light at the eye (every ray diverges),
 // ks -> 0 and very large ks, surfaces 1e4 mean free paths away (far beyond
 // any table), a camera inside an opaque box, a light inside the sphere, spot
-// cones of 0.5 and 89.9 degrees with exponent 128, more lights than the
-// pass uses, and the unchanged frame after it all. Every case: no NaN or Inf
+// cones of 0.5 and 89.9 degrees with exponent 128, more lights than one
+// shader takes, and the unchanged frame after it all. Every case: no NaN or Inf
 // pixel, no GL error; where the reference is finite, the float image matches
 // it to 0.5 % RMS / 2 % max of the airlight range.
 #include "plumeAirlightTestUtil.h"
@@ -198,7 +198,7 @@ int TestAirlightStress(int, char*[])
     Against(s, "camera inside the box", plainInside, inside);
   }
 
-  // Spot cones of 0.5 and 89.9 degrees, exponent 128, and 10 lights (8 are used).
+  // Spot cones of 0.5 and 89.9 degrees, exponent 128, and 10 lights (two light groups).
   {
     airtest::Scene s(W, H);
     s.AddRoom();
