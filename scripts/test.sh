@@ -5,17 +5,17 @@
 #  2. the ParaView plugin's tests (scripts/test-paraview.sh: built and run
 #     inside a private Debian root, because ParaView's packages conflict with
 #     the VTK 9.1 build's); PLUME_SKIP_PARAVIEW=1 skips them;
-#  3. with PLUME_SANITIZE=1, the label "sanitize" alone: the suite again in a
-#     clang ASan + UBSan build, then the fuzzers (scripts/test-sanitize.sh).
-#     Not by default: it doubles the build and triples the suite's time, which
-#     with the ParaView root would take CI past 30 minutes.
+#  3. the label "sanitize" alone: the libraries, the command line, the tests
+#     of Plume's CPU code and the fuzz targets in a clang ASan + UBSan + LSan
+#     build, those tests, then 15 s of each fuzzer (scripts/test-sanitize.sh);
+#     PLUME_SANITIZE=0 skips it.
 # Arguments go to the first ctest instead (e.g. -R Volume), and then only
 # part 1 runs. See Documentation/Testing.md.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${PLUME_BUILD_DIR:-$root/build}"
-sanitize=OFF
-if [ "${PLUME_SANITIZE:-0}" = 1 ]; then sanitize=ON; fi
+sanitize=ON
+if [ "${PLUME_SANITIZE:-1}" = 0 ]; then sanitize=OFF; fi
 bash "$root/scripts/build.sh" -DPLUME_SANITIZE_SUITE=$sanitize
 status=0
 if [ $# -gt 0 ]; then
@@ -28,7 +28,7 @@ fi
 if [ "${PLUME_SKIP_PARAVIEW:-0}" != 1 ]; then
   bash "$root/scripts/test-paraview.sh" || status=$?
 fi
-if [ "${PLUME_SANITIZE:-0}" = 1 ]; then
+if [ "$sanitize" = ON ]; then
   (cd "$build" && ctest --output-on-failure -L sanitize) || status=$?
 fi
 exit $status

@@ -6,10 +6,12 @@
 #include "plumeScene.h"
 #include "plumeSceneError.h"
 
+#include "vtkPlumeInputValidation.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeVelocityGlyphMapper.h"
 
 #include "vtkActor.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkContourFilter.h"
 #include "vtkDataArray.h"
@@ -20,12 +22,14 @@
 #include "vtkOutlineFilter.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
 #include "vtkSphereSource.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -161,6 +165,34 @@ void AddPolyActor(vtkAlgorithmOutput* port, vtkDataSet* sample, const std::strin
   renderer->AddActor(actor);
 }
 
+// The surface's own size against the memory budget, before anything is drawn:
+// the check when a dataset is read bounds it only loosely (up to 6 faces per
+// cell). Counted as the filter's output plus what the mapper uploads (point,
+// normal and colour per point: 28 bytes; three 4-byte indices per triangle).
+void CheckSurfaceBudget(vtkDataSetSurfaceFilter* surface, const std::string& where, const std::string& dataset)
+{
+  surface->Update();
+  vtkPolyData* out = surface->GetOutput();
+  double triangles = 0;
+  for (vtkCellArray* cells : { out->GetPolys(), out->GetStrips() })
+  {
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+    {
+      triangles += std::max<vtkIdType>(cells->GetCellSize(c) - 2, 0);
+    }
+  }
+  const double points = static_cast<double>(out->GetNumberOfPoints());
+  const double bytes = 1024.0 * static_cast<double>(out->GetActualMemorySize()) + 28.0 * points + 12.0 * triangles;
+  std::ostringstream what;
+  what << "dataset '" << dataset << "': the surface's " << static_cast<long long>(triangles) << " triangles and "
+       << static_cast<long long>(points) << " points";
+  const std::string tooBig = vtkPlumeInputValidation::CheckMemory(bytes, what.str());
+  if (!tooBig.empty())
+  {
+    throw SceneError(where + ": " + tooBig);
+  }
+}
+
 void BuildSurface(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
 {
   const std::string dataset = p.String("dataset", "");
@@ -194,6 +226,7 @@ void BuildSurface(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
     }
     vtkNew<vtkDataSetSurfaceFilter> surface;
     surface->SetInputData(cells);
+    CheckSurfaceBudget(surface, p.Where(), dataset);
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputConnection(surface->GetOutputPort());
     const int component = array->GetNumberOfComponents() == 1 ? 0 : -1;
@@ -218,6 +251,7 @@ void BuildSurface(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
     WithPointArrays(RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset), { colorArray });
   vtkNew<vtkDataSetSurfaceFilter> surface;
   surface->SetInputData(data);
+  CheckSurfaceBudget(surface, p.Where(), dataset);
   AddPolyActor(surface->GetOutputPort(), data, colorArray, coloring, opacity, p.Where(), dataset, renderer, wireframe);
 }
 

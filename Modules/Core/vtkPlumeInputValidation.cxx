@@ -102,11 +102,23 @@ double PositiveEnv(const char* name, double fallback)
   return fallback;
 }
 
+// Three significant digits below 100 MB (1.19 MB), whole megabytes up to
+// 10^7 MB (28160 MB), then three significant digits in scientific notation
+// (3.81e+09 MB): a header that lies about its size must not print 12 digits.
 std::string Megabytes(double bytes)
 {
+  const double mb = bytes / (1 << 20);
   std::ostringstream s;
-  s.precision(bytes < 1e3 * (1 << 20) ? 3 : 12);
-  s << bytes / (1 << 20) << " MB";
+  if (std::isfinite(mb) && mb >= 100 && mb < 1e7)
+  {
+    s << std::fixed;
+    s.precision(0);
+  }
+  else
+  {
+    s.precision(3);
+  }
+  s << mb << " MB";
   return s.str();
 }
 }

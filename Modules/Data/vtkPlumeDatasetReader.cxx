@@ -501,6 +501,17 @@ struct FirstError : public vtkCommand
   }
 };
 
+// The number of points of a whole extent, in double (an absurd header overflows any integer).
+double ExtentPoints(const int* we)
+{
+  double points = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    points *= std::max(0.0, double(we[2 * a + 1]) - double(we[2 * a]) + 1.0);
+  }
+  return points;
+}
+
 // What the in-process read will do, in the child of RunIsolated(); returns the
 // reader's first error, "" when it read without one (or stopped before reading
 // on a problem the in-process read reports itself).
@@ -564,6 +575,16 @@ std::string ProbeRead(const std::string& kind, const std::string& path, const st
     {
       return std::string();
     }
+  }
+  // an extent over the memory budget is refused in process, with its own message,
+  // before the reader allocates it (under AddressSanitizer that allocation would end
+  // the child instead of throwing std::bad_alloc)
+  vtkInformation* info = reader->GetOutputInformation(0);
+  if (info && info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()) &&
+    !vtkPlumeInputValidation::CheckMemory(ExtentPoints(info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())), "")
+       .empty())
+  {
+    return std::string();
   }
   SelectArrays(reader, patches);
   reader->Update();
@@ -1264,11 +1285,7 @@ int vtkPlumeDatasetReader::RequestInformation(
       // reader allocates them (one byte per point, the least any point array takes; the
       // renderers check their own, larger needs later).
       const int* we = innerInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
-      double points = 1;
-      for (int a = 0; a < 3; ++a)
-      {
-        points *= std::max(0.0, double(we[2 * a + 1]) - double(we[2 * a]) + 1.0);
-      }
+      const double points = ExtentPoints(we);
       const std::string tooBig = vtkPlumeInputValidation::CheckMemory(points,
         "the extent [" + std::to_string(we[0]) + ", " + std::to_string(we[1]) + ", " + std::to_string(we[2]) +
           ", " + std::to_string(we[3]) + ", " + std::to_string(we[4]) + ", " + std::to_string(we[5]) +

@@ -202,6 +202,11 @@ int TestPlumeInputValidation(int, char*[])
   CHECK(V::CheckMemory(1 << 20, "a grid").empty());
   CHECK(Has(V::CheckMemory(3.0 * (1 << 20), "a grid"), "a grid needs about 3 MB, over the memory budget of 2 MB (PLUME_MEMORY_BUDGET_MB)"));
   CHECK(Has(V::CheckMemory(std::nan(""), "a grid"), "over the memory budget"));
+  // sizes rounded sensibly: 3 significant digits, whole MB, then scientific (never 12 digits)
+  CHECK(Has(V::CheckMemory(12.34 * (1 << 20), "a"), "needs about 12.3 MB, over"));
+  CHECK(Has(V::CheckMemory(123.6 * (1 << 20), "a"), "needs about 124 MB, over"));
+  CHECK(Has(V::CheckMemory(28160.0 * (1 << 20), "a"), "needs about 28160 MB, over"));
+  CHECK(Has(V::CheckMemory(4e15, "a"), "needs about 3.81e+09 MB, over"));
   unsetenv("PLUME_MEMORY_BUDGET_MB");
   CHECK(V::MemoryBudgetBytes() > (1 << 20));
   setenv("PLUME_WORK_BUDGET", "1000", 1);
