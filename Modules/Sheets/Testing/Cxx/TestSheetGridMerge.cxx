@@ -10,10 +10,11 @@
 // (48x40, every second pixel), the merged frame's RMS at most 0.1 % and its
 // max at most 0.5 % of the transmittance range above the unmerged frame's,
 // and both within the grid mode's goal (RMS 1 %, max 5 %); the merged field
-// against the unmerged field at the grid nodes, max <= 4 % of the field's
-// peak (measured 0.5 % on the ring, 3.0 % where the sheets cross: one cell's
-// points of two normals become one Gaussian); merging must cut the Gaussians
-// at least fourfold. The merged field is the same, bit for bit, with one
+// against the unmerged field at the grid nodes, max <= 1.5 % of the field's
+// peak on the ring (measured 0.55 %; 3.6 % when the merged covariance drops
+// the points' spread) and <= 4 % where the sheets cross (measured 3.0 %: one
+// cell's points of two normals become one Gaussian); merging must cut the
+// Gaussians at least fourfold. The merged field is the same, bit for bit, with one
 // thread and with the STDThread backend.
 #include "plumeSheetMeshes.h"
 #include "plumeSheetTestUtil.h"
@@ -65,7 +66,7 @@ std::vector<float> Field(vtkPolyData* mesh, double merge, double blur, double th
 }
 
 int CheckScene(vtkPolyData* mesh, const std::string& name, double blur, double thick, const double eye[3],
-  const double focus[3])
+  const double focus[3], double fieldBound)
 {
   int failures = 0;
   std::printf("%s: %lld cells\n", name.c_str(), static_cast<long long>(mesh->GetNumberOfCells()));
@@ -87,7 +88,7 @@ int CheckScene(vtkPolyData* mesh, const std::string& name, double blur, double t
   const double fieldMax = worst / std::max(peak, 1e-30);
   const double fieldRMS = exact.empty() ? 0.0 : std::sqrt(sum / exact.size()) / std::max(peak, 1e-30);
   std::printf("  field (spacing %.4g): merged vs every point, max %.4f RMS %.5f of the peak\n", h, fieldMax, fieldRMS);
-  PLUME_CHECK(fieldMax <= 0.04);
+  PLUME_CHECK(fieldMax <= fieldBound);
 
   // the frame against the reference, merged (default) and not
   sheettest::Scene s(mesh, 48, 40);
@@ -119,7 +120,7 @@ int TestSheetGridMerge(int, char*[])
     const double centre[3] = { 0.1, 0, 0 };
     auto ring = sheettest::Ring(80, 28, 0.8, 0.25, centre);
     const double eye[3] = { 1.0, 3.0, 3.6 }, focus[3] = { 0, 0, 0 };
-    failures += CheckScene(ring, "fine ring", 0.06, 0.04, eye, focus);
+    failures += CheckScene(ring, "fine ring", 0.06, 0.04, eye, focus, 0.015);
   }
   {
     auto a = sheettest::Plane(40, 30, -1.0, 1.0, -0.75, 0.75, 0.0);
@@ -135,7 +136,7 @@ int TestSheetGridMerge(int, char*[])
     both->Update();
     vtkPolyData* cross = both->GetOutput();
     const double eye[3] = { 1.2, 1.6, 3.8 }, focus[3] = { 0, 0, 0 };
-    failures += CheckScene(cross, "crossing sheets", 0.05, 0.03, eye, focus);
+    failures += CheckScene(cross, "crossing sheets", 0.05, 0.03, eye, focus, 0.04);
 
     // the merged field does not depend on the thread count
     const std::vector<float> threads = Field(cross, 2.0, 0.05, 0.03);
