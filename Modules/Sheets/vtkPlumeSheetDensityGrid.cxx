@@ -18,6 +18,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <utility>
 #include <sstream>
 #include <vector>
 
@@ -52,6 +53,21 @@ struct Corner
 
 // one quadrature point: a Gaussian of mass M (64 bytes: a million-triangle
 // mesh's points take tens of MB, not hundreds)
+// every Gaussian is evaluated inside its ellipsoid r^T A r <= 2 Cutoff^2
+// (sqrt(2) Cutoff standard deviations: the mass outside is 2e-5 at the
+// default Cutoff 3.5)
+const double RadiusScale = 2.0;
+
+// a Gaussian to splat: centre, peak value (mass / ((2 pi)^1.5 sqrt(det S))),
+// precision A = S^-1 (xx xy xz yy yz zz) and the covariance's yy, yz, zz, xx
+struct Blob
+{
+  glm::dvec3 P;
+  double Norm;
+  double A[6];
+  double S[4];
+};
+
 struct Source
 {
   glm::dvec3 P;
@@ -169,10 +185,27 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
   // ---- the work this mesh asks for, bounded before any of it is done: a
   // small triangle is one point; the bisection below makes about
   // max(1, 2 area / target^2) pieces of a larger one (at most 2^24), 3
-  // quadrature points each, and every point visits the nodes of its Cutoff
-  // box (an upper bound of the ellipsoid rows).
+  // quadrature points each, and every Gaussian visits the nodes of its
+  // ellipsoid (pi/6 of its box). Merged, the Gaussians are at most one per
+  // occupied merge cell (a triangle no wider than a cell: the cell of its
+  // centroid; a larger one: 3 area / cell^2 + 2 longest / cell + 1 cells),
+  // each as wide as the widest sigma plus a cell's spread.
+  const double mergeCell = this->MergeCellSize * h;
+  const double cutoff2 = this->Cutoff * this->Cutoff;
+  const double radius2 = RadiusScale * cutoff2;
+  auto nodesOf = [&](double sigma) {
+    const double side = std::min(double(std::max({ dims[0], dims[1], dims[2] })), 2.0 * std::sqrt(radius2) * sigma / h + 1.0);
+    return 0.5236 * side * side * side;
+  };
+  double points = 0.0, work = 0.0, gaussians = 0.0;
   {
-    double points = 0.0, work = 0.0;
+    double sigmaTop = 0.0;
+    std::vector<unsigned long long> smallCells;
+    long long mdims[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      mdims[a] = mergeCell > 0.0 ? static_cast<long long>(std::floor((dims[a] - 1) * h / mergeCell)) + 1 : 1;
+    }
     for (const auto& ids : tris)
     {
       Corner c[3];
@@ -183,6 +216,7 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
         sb = std::min(sb, std::max(q.SB, this->SigmaFloor));
         sMaxT = std::max({ sMaxT, std::max(q.SB, this->SigmaFloor), std::max(q.ST, this->SigmaFloor) });
       }
+      sigmaTop = std::max(sigmaTop, sMaxT);
       const double target = this->SubTriangleSize * sb;
       const double area = 0.5 * glm::length(glm::cross(c[1].P - c[0].P, c[2].P - c[0].P));
       const double longest =
@@ -190,15 +224,54 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
       const double n = longest <= this->SmallTriangleSize * sb
         ? 1.0
         : 3.0 * std::min(16777216.0, std::max({ 1.0, 2.0 * area / (target * target), longest / target }));
-      const double side =
-        std::min(double(std::max({ dims[0], dims[1], dims[2] })), 2.0 * this->Cutoff * sMaxT / h + 1.0);
       points += n;
-      work += n * side * side * side;
+      if (mergeCell > 0.0)
+      {
+        if (longest <= mergeCell)
+        {
+          const glm::dvec3 g = (c[0].P + c[1].P + c[2].P) / 3.0;
+          long long k[3];
+          for (int a = 0; a < 3; ++a)
+          {
+            k[a] = std::min(mdims[a] - 1, std::max(0LL, static_cast<long long>(std::floor((g[a] - origin[a]) / mergeCell))));
+          }
+          smallCells.push_back(static_cast<unsigned long long>((k[2] * mdims[1] + k[1]) * mdims[0] + k[0]));
+        }
+        else
+        {
+          gaussians += std::min(n, 3.0 * area / (mergeCell * mergeCell) + 2.0 * longest / mergeCell + 1.0);
+        }
+      }
+      else
+      {
+        work += n * nodesOf(sMaxT);
+      }
     }
+    if (mergeCell > 0.0)
+    {
+      std::sort(smallCells.begin(), smallCells.end());
+      gaussians += static_cast<double>(std::unique(smallCells.begin(), smallCells.end()) - smallCells.begin());
+      gaussians = std::min({ gaussians, points, double(mdims[0]) * mdims[1] * mdims[2] });
+      // (the sort and the moments: a few dozen operations per point)
+      work = gaussians * nodesOf(std::sqrt(sigmaTop * sigmaTop + 0.75 * mergeCell * mergeCell)) + 64.0 * points;
+    }
+    else
+    {
+      gaussians = points;
+    }
+  }
+  {
     std::ostringstream what;
-    what << "the sheet grid of " << tris.size() << " triangles (about " << points << " quadrature points on "
-         << dims[0] << "x" << dims[1] << "x" << dims[2] << " nodes)";
-    std::string tooMuch = vtkPlumeInputValidation::CheckMemory(points * sizeof(Source), what.str());
+    what << "the sheet grid of " << tris.size() << " triangles (about " << points << " quadrature points";
+    if (mergeCell > 0.0)
+    {
+      what << " merged into about " << gaussians << " Gaussians";
+    }
+    what << " on " << dims[0] << "x" << dims[1] << "x" << dims[2] << " nodes)";
+    // the points and their merge keys, and the merged Gaussians
+    const double bytes = mergeCell > 0.0 ? points * (sizeof(Source) + 16.0) + gaussians * sizeof(Blob)
+                                         : points * sizeof(Source);
+    std::string tooMuch = vtkPlumeInputValidation::CheckMemory(bytes, what.str());
     if (tooMuch.empty())
     {
       tooMuch = vtkPlumeInputValidation::CheckWork(work, what.str());
@@ -231,7 +304,6 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
   // the smallest sigma_b (a sliver is cut along its length only: the number
   // of pieces follows its area over sigma^2, not its length^2), each piece
   // adding its edge midpoints (degree 2).
-  const double cutoff2 = this->Cutoff * this->Cutoff;
   const vtkIdType blockSize = 4096;
   const vtkIdType blocks = (static_cast<vtkIdType>(tris.size()) + blockSize - 1) / blockSize;
   std::vector<std::vector<Source>> perBlock(blocks);
@@ -342,32 +414,139 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
     }
   }
   std::vector<std::array<vtkIdType, 3>>().swap(tris);
-  // the node box of a source within Cutoff (inclusive)
-  auto nodeBox = [&](const Source& s, int lo[3], int hi[3]) {
-    const double r = this->Cutoff * std::max(s.SB, s.ST);
+  this->PointCount = static_cast<vtkIdType>(sources.size());
+  const auto quadratureDone = std::chrono::steady_clock::now();
+  this->QuadratureSeconds = std::chrono::duration<double>(quadratureDone - start).count();
+
+  // ---- the Gaussians to splat. Without merging, one per quadrature point.
+  // With MergeCellSize > 0, the points falling in one cubic merge cell (edge
+  // MergeCellSize x the spacing) become one Gaussian with their total mass,
+  // their mass centroid and their total second moment (each point's own
+  // covariance plus the spread of the points): a sheet crossing a cell is
+  // one anisotropic Gaussian instead of tens, at the price of the mixture's
+  // higher moments (the error grows as (cell / sigma)^3; measured in
+  // Documentation/Renderers.md and TestSheetGridMerge). Cells are visited in
+  // index order and points in their own order within a cell, so the sums do
+  // not depend on the thread count.
+  const double twoPi15 = std::pow(2.0 * 3.14159265358979323846, 1.5);
+  auto covarianceOf = [](const Source& s) { // sb^2 I + (st^2 - sb^2) n n^T
+    const glm::dvec3 n(s.N);
+    return glm::dmat3(s.SB * s.SB) + (s.ST * s.ST - s.SB * s.SB) * glm::outerProduct(n, n);
+  };
+  auto blobOf = [&](const glm::dvec3& p, double mass, const glm::dmat3& cov) {
+    Blob b;
+    b.P = p;
+    const double det = glm::determinant(cov);
+    b.Norm = det > 0.0 ? mass / (twoPi15 * std::sqrt(det)) : 0.0;
+    const glm::dmat3 a = det > 0.0 ? glm::inverse(cov) : glm::dmat3(0.0);
+    b.A[0] = a[0][0];
+    b.A[1] = a[0][1];
+    b.A[2] = a[0][2];
+    b.A[3] = a[1][1];
+    b.A[4] = a[1][2];
+    b.A[5] = a[2][2];
+    b.S[0] = cov[1][1];
+    b.S[1] = cov[1][2];
+    b.S[2] = cov[2][2];
+    b.S[3] = cov[0][0];
+    return b;
+  };
+  std::vector<Blob> blobs;
+  if (mergeCell > 0.0 && !sources.empty())
+  {
+    long long mdims[3];
     for (int a = 0; a < 3; ++a)
     {
+      mdims[a] = static_cast<long long>(std::floor((dims[a] - 1) * h / mergeCell)) + 1;
+    }
+    auto cellOf = [&](const glm::dvec3& p, int a) {
+      return std::min(mdims[a] - 1,
+        std::max(0LL, static_cast<long long>(std::floor((p[a] - origin[a]) / mergeCell))));
+    };
+    std::vector<std::pair<unsigned long long, unsigned int>> keys(sources.size());
+    vtkSMPTools::For(0, static_cast<vtkIdType>(sources.size()), [&](vtkIdType i0, vtkIdType i1) {
+      for (vtkIdType i = i0; i < i1; ++i)
+      {
+        const glm::dvec3& p = sources[i].P;
+        keys[i] = { static_cast<unsigned long long>(
+                      (cellOf(p, 2) * mdims[1] + cellOf(p, 1)) * mdims[0] + cellOf(p, 0)),
+          static_cast<unsigned int>(i) };
+      }
+    });
+    // (key, index) pairs are unique: any sort gives the same order
+    vtkSMPTools::Sort(keys.begin(), keys.end());
+    std::vector<size_t> runs;
+    for (size_t i = 0; i < keys.size(); ++i)
+    {
+      if (i == 0 || keys[i].first != keys[i - 1].first)
+      {
+        runs.push_back(i);
+      }
+    }
+    runs.push_back(keys.size());
+    blobs.resize(runs.size() - 1);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(blobs.size()), [&](vtkIdType r0, vtkIdType r1) {
+      for (vtkIdType r = r0; r < r1; ++r)
+      {
+        // moments about the first point (no cancellation far from the origin)
+        const glm::dvec3 c0 = sources[keys[runs[r]].second].P;
+        double mass = 0.0;
+        glm::dvec3 first(0.0);
+        glm::dmat3 second(0.0);
+        for (size_t k = runs[r]; k < runs[r + 1]; ++k)
+        {
+          const Source& s = sources[keys[k].second];
+          const glm::dvec3 d = s.P - c0;
+          mass += s.M;
+          first += s.M * d;
+          second += s.M * (covarianceOf(s) + glm::outerProduct(d, d));
+        }
+        const glm::dvec3 mean = first / mass;
+        const glm::dmat3 cov = second / mass - glm::outerProduct(mean, mean);
+        blobs[r] = blobOf(c0 + mean, mass, cov);
+      }
+    });
+    std::vector<Source>().swap(sources);
+  }
+  // without merging each point is made a Gaussian where it is splatted (no
+  // second copy of the points)
+  const bool merged = !blobs.empty() || sources.empty();
+  const size_t count = merged ? blobs.size() : sources.size();
+  auto gaussian = [&](size_t i) {
+    return merged ? blobs[i] : blobOf(sources[i].P, sources[i].M, covarianceOf(sources[i]));
+  };
+  this->GaussianCount = static_cast<vtkIdType>(count);
+  const auto mergeDone = std::chrono::steady_clock::now();
+  this->MergeSeconds = std::chrono::duration<double>(mergeDone - quadratureDone).count();
+
+  // the node box of a Gaussian: its ellipsoid's axis-aligned box,
+  // half-width sqrt(2 Sigma_aa) Cutoff
+  auto nodeBox = [&](const Blob& s, int lo[3], int hi[3]) {
+    const double var[3] = { s.S[3], s.S[0], s.S[2] };
+    for (int a = 0; a < 3; ++a)
+    {
+      const double r = std::sqrt(radius2 * std::max(var[a], 0.0));
       lo[a] = std::max(0, static_cast<int>(std::ceil((s.P[a] - r - origin[a]) / h)));
       hi[a] = std::min(dims[a] - 1, static_cast<int>(std::floor((s.P[a] + r - origin[a]) / h)));
     }
   };
-  this->PointCount = static_cast<vtkIdType>(sources.size());
 
   // ---- splat: z-slabs of 4 planes, each owned by one thread
   const int slab = 4;
   const int slabs = (dims[2] + slab - 1) / slab;
-  std::vector<std::vector<int>> bins(slabs);
-  for (size_t i = 0; i < sources.size(); ++i)
+  std::vector<std::vector<unsigned int>> bins(slabs);
+  for (size_t i = 0; i < count; ++i)
   {
+    const Blob s = gaussian(i);
     int lo[3], hi[3];
-    nodeBox(sources[i], lo, hi);
-    if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2])
+    nodeBox(s, lo, hi);
+    if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2] || !(s.Norm > 0.0))
     {
       continue;
     }
     for (int b = lo[2] / slab; b <= hi[2] / slab; ++b)
     {
-      bins[b].push_back(static_cast<int>(i));
+      bins[b].push_back(static_cast<unsigned int>(i));
     }
   }
   const size_t nx = dims[0], ny = dims[1];
@@ -381,30 +560,42 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
     for (vtkIdType b = b0; b < b1; ++b)
     {
       const int z0 = static_cast<int>(b) * slab, z1 = std::min(dims[2], z0 + slab) - 1;
-      for (int i : bins[b])
+      for (unsigned int i : bins[b])
       {
-        const Source& s = sources[i];
+        const Blob s = gaussian(i);
         int sLo[3], sHi[3];
         nodeBox(s, sLo, sHi);
-        // exponent r^T A r with A = I / sb^2 + (1/st^2 - 1/sb^2) n n^T
-        const double ib = 1.0 / (s.SB * s.SB), it = 1.0 / (s.ST * s.ST);
-        const double norm = s.M / (std::pow(2.0 * 3.14159265358979323846, 1.5) * s.SB * s.SB * s.ST);
-        // q(rx) = A rx^2 + B rx + C along each row: only the x range inside
-        // the Cutoff ellipsoid is visited (a thin sheet's Gaussian fills a
-        // small part of its bounding cube), and exp(-q/2) advances by two
+        // exponent r^T A r; q(rx) = A rx^2 + B rx + C along each row: only
+        // the x range inside the Cutoff ellipsoid is visited, and only the y
+        // range of its (y, z) shadow; exp(-q/2) advances by two
         // multiplications per node
-        const double dq = it - ib;
-        const double A = ib + dq * s.N.x * s.N.x;
-        const double limit = 2.0 * cutoff2;
+        const double A = s.A[0];
+        const double limit = radius2;
+        const double r = std::exp(-A * h * h);
+        // the (y, z) marginal: [ry rz] S_yz^-1 [ry rz]^T <= Cutoff^2
+        const double detYZ = s.S[0] * s.S[2] - s.S[1] * s.S[1];
         for (int z = std::max(z0, sLo[2]); z <= std::min(z1, sHi[2]); ++z)
         {
           const double rz = origin.z + z * h - s.P.z;
-          for (int y = sLo[1]; y <= sHi[1]; ++y)
+          int y0 = sLo[1], y1 = sHi[1];
+          if (detYZ > 0.0 && s.S[2] > 0.0)
+          {
+            // ry = (S_yz / S_zz) rz +- sqrt(detYZ / S_zz (Cutoff^2 - rz^2 / S_zz))
+            const double rest = limit - rz * rz / s.S[2];
+            if (!(rest > 0.0))
+            {
+              continue;
+            }
+            const double mid = s.S[1] / s.S[2] * rz + s.P.y - origin.y;
+            const double half = std::sqrt(detYZ / s.S[2] * rest);
+            y0 = std::max(y0, static_cast<int>(std::ceil((mid - half) / h)));
+            y1 = std::min(y1, static_cast<int>(std::floor((mid + half) / h)));
+          }
+          for (int y = y0; y <= y1; ++y)
           {
             const double ry = origin.y + y * h - s.P.y;
-            const double cn = s.N.y * ry + s.N.z * rz;
-            const double B = 2.0 * dq * s.N.x * cn;
-            const double C = ib * (ry * ry + rz * rz) + dq * cn * cn;
+            const double B = 2.0 * (s.A[1] * ry + s.A[2] * rz);
+            const double C = s.A[3] * ry * ry + 2.0 * s.A[4] * ry * rz + s.A[5] * rz * rz;
             const double disc = B * B - 4.0 * A * (C - limit);
             if (!(disc > 0.0))
             {
@@ -421,9 +612,8 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
             }
             float* row = rho + (static_cast<size_t>(z) * ny + y) * nx;
             const double rx = origin.x + x0 * h - s.P.x;
-            double g = norm * std::exp(-0.5 * ((A * rx + B) * rx + C));
+            double g = s.Norm * std::exp(-0.5 * ((A * rx + B) * rx + C));
             double f = std::exp(-0.5 * (A * (2.0 * rx * h + h * h) + B * h));
-            const double r = std::exp(-A * h * h);
             for (int x = x0; x <= x1; ++x)
             {
               row[x] += static_cast<float>(g);
@@ -435,7 +625,8 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
       }
     }
   });
-
+  this->SplatSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - mergeDone).count();
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(dims);
   image->SetOrigin(origin.x, origin.y, origin.z);

@@ -13,11 +13,15 @@
  * The triangle integral is a quadrature, not a vertex splat: each triangle is
  * cut by longest-edge bisection into pieces no wider than SubTriangleSize x
  * its smallest sigma_b (slivers are cut along their length only), and each
- * piece contributes its three edge midpoints
- * (degree-2 rule) as Gaussians with the interpolated d and sigmas, evaluated
- * exactly at every node within Cutoff standard deviations (Mahalanobis).
- * Triangles no wider than SmallTriangleSize x sigma_b are one Gaussian at
- * their mass centroid, widened by their own second moment.
+ * piece contributes its three edge midpoints (degree-2 rule) as Gaussians with
+ * the interpolated d and sigmas. Triangles no wider than SmallTriangleSize x
+ * sigma_b are one Gaussian at their mass centroid, widened by their own
+ * second moment. The points in each cubic cell of MergeCellSize grid spacings
+ * are then merged into one Gaussian (total mass, mass centroid, total second
+ * moment: a general anisotropic covariance), so the splat costs one Gaussian
+ * per occupied cell however fine the mesh; each Gaussian is evaluated exactly
+ * at every node inside its sqrt(2) x Cutoff ellipsoid (exp advances by two
+ * multiplications along each row).
  *
  * Spacing: the smallest sigma of the mesh (sigma_b, and sigma_t unless thin)
  * divided by SamplesPerSigma, isotropic; the grid covers the mesh padded by
@@ -29,9 +33,11 @@
  * Bad values: as the mapper (non-finite or negative densities and sigmas count
  * as zero, triangles with a non-finite corner or zero area are skipped).
  * Threads: vtkSMPTools over fixed blocks of triangles (quadrature points,
- * joined in block order) and over z-slabs (each thread owns its planes): the
- * result does not depend on the thread count. Memory: 64 bytes per
- * quadrature point plus the grid (4 bytes per node, written in place).
+ * joined in block order), merge cells (sorted by cell, then point order) and
+ * z-slabs (each thread owns its planes): the result does not depend on the
+ * thread count. Memory: 80 bytes per quadrature point (64 without merging)
+ * and 128 per merged Gaussian, plus the grid (4 bytes per node, written in
+ * place).
  */
 #ifndef vtkPlumeSheetDensityGrid_h
 #define vtkPlumeSheetDensityGrid_h
@@ -97,6 +103,17 @@ public:
   vtkGetMacro(SmallTriangleSize, double);
   ///@}
 
+  ///@{
+  /**
+   * Merge the quadrature points of each cubic cell of this many grid spacings
+   * into one Gaussian (their mass, mass centroid and total second moment:
+   * each point's covariance plus their spread) before splatting. 0: every
+   * point is splatted exactly. Default 2. Clamped to 0..4.
+   */
+  vtkSetClampMacro(MergeCellSize, double, 0.0, 4.0);
+  vtkGetMacro(MergeCellSize, double);
+  ///@}
+
   /**
    * Compute the grid. Returns false (with an error, also in GetLastError()) if
    * the input is unusable or its quadrature would exceed the memory budget or
@@ -122,8 +139,13 @@ public:
   vtkGetMacro(SigmaFloor, double);
   /** Quadrature points splatted by the last Compute. */
   vtkGetMacro(PointCount, vtkIdType);
-  /** Seconds the last Compute took. */
+  /** Gaussians splatted by the last Compute (PointCount without merging). */
+  vtkGetMacro(GaussianCount, vtkIdType);
+  /** Seconds the last Compute took, and its parts: the quadrature points, their merging, the splat. */
   vtkGetMacro(ComputeSeconds, double);
+  vtkGetMacro(QuadratureSeconds, double);
+  vtkGetMacro(MergeSeconds, double);
+  vtkGetMacro(SplatSeconds, double);
 
 protected:
   vtkPlumeSheetDensityGrid();
@@ -149,7 +171,12 @@ protected:
   double SmallTriangleSize = 0.5;
   double SigmaFloor = 0.0;
   vtkIdType PointCount = 0;
+  double MergeCellSize = 2.0;
+  vtkIdType GaussianCount = 0;
   double ComputeSeconds = 0.0;
+  double QuadratureSeconds = 0.0;
+  double MergeSeconds = 0.0;
+  double SplatSeconds = 0.0;
 
 private:
   vtkPlumeSheetDensityGrid(const vtkPlumeSheetDensityGrid&) = delete;

@@ -301,6 +301,17 @@ public:
 
   ///@{
   /**
+   * Grid mode: the quadrature points in each cubic cell of this many grid
+   * spacings become one Gaussian (mass, centroid and second moment kept)
+   * before the grid is computed (vtkPlumeSheetDensityGrid::SetMergeCellSize);
+   * 0 splats every point (exact, minutes on large meshes). Default 2. Clamped to 0..4.
+   */
+  vtkSetClampMacro(GridMergeCellSize, double, 0.0, 4.0);
+  vtkGetMacro(GridMergeCellSize, double);
+  ///@}
+
+  ///@{
+  /**
    * Grid mode: coarse while the camera moves, refined when it stops (VTK's
    * convention, as vtkPlumeVolumeMapper's AutoAdjustSampleDistances): a frame
    * is interactive when the actor's allocated render time is below 1 s, i.e.
@@ -347,6 +358,8 @@ public:
   vtkGetMacro(GridSpacing, double);
   /** Grid mode: seconds the last grid took to compute. */
   vtkGetMacro(GridComputeSeconds, double);
+  /** Grid mode: the density grid builder (its last Compute's parts and counts). */
+  vtkPlumeSheetDensityGrid* GetDensityGrid();
 
   /** Draw calls of the sheet's triangles in the last render (MaximumTrianglesPerDraw splits them). */
   vtkGetMacro(LastDrawCount, int);
@@ -406,6 +419,7 @@ protected:
   double GridSamplesPerSigma = 2.0;
   double GridSampleDistance = 1.0;
   double GridMaximumNodes = 33554432.0;
+  double GridMergeCellSize = 2.0;
   bool AutoAdjustQuality = true;
   double InteractiveGridSampleDistance = 2.0;
   int InteractiveImageSampleDistance = 2;

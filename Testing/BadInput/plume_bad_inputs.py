@@ -472,7 +472,7 @@ def build(c):
         ("exact", {"PLUME_MEMORY_BUDGET_MB": "1"},
          r"representations\[0\] \(sheet\): dataset 's': the vertex data of the sheet's 2\d{4} triangles needs about [\d.]+ MB, over the memory budget of 1 MB \(PLUME_MEMORY_BUDGET_MB\)"),
         ("grid", {"PLUME_WORK_BUDGET": "1e6"},
-         r"the sheet grid of 2\d{4} triangles \(about [\d.e+]+ quadrature points on \d+x\d+x\d+ nodes\) needs about [\d.e+]+ operations, "
+         r"the sheet grid of 2\d{4} triangles \(about [\d.e+]+ quadrature points merged into about [\d.e+]+ Gaussians on \d+x\d+x\d+ nodes\) needs about [\d.e+]+ operations, "
          r"over the work budget of 1e\+06 \(PLUME_WORK_BUDGET\); use fewer triangles"),
     ]:
         scene = c.scene("sheet_budget_" + mode, {"datasets": {"s": {"path": sheet_path}},

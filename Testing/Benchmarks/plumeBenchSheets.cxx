@@ -18,11 +18,17 @@
 // 1.3 M-triangle fire runs every mode and the peers with errors against the
 // reference of the unsplit surface (splitting a flat triangle at its edge
 // midpoints leaves the smoke unchanged: same density, same sigmas).
+// The grid mode's build is its own case (`grid build` lines: seconds and
+// parts, merged per cell against every quadrature point splatted), and the
+// floors of a grid-mode frame are measured in the same window (`floor`
+// lines: empty renderer, a screen-filling rectangle, the grid frames with a
+// negligible density so no ray terminates early).
 // Each job runs in its own process.
 // Slow jobs time fewer frames (at least one after the first; see Frames()).
 #include "plumeBenchmarks.h"
 #include "plumeTestSupport.h"
 
+#include "vtkPlumeSheetDensityGrid.h"
 #include "vtkPlumeSheetMapper.h"
 #include "vtkPlumeSheetReference.h"
 
@@ -39,13 +45,18 @@
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPlaneSource.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "vtkUnstructuredGrid.h"
+
+#include <glm/glm.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -284,6 +295,84 @@ vtkSmartPointer<vtkImageData> Splat(vtkPolyData* mesh, int n, double density, do
   return out;
 }
 
+// The floors of a grid-mode frame on this machine, same window, view and
+// frame loop as the ours:SIZE:I|V jobs: "clear" renders the empty white
+// renderer (clear, swap, read-back wait); "quad" one screen-filling
+// rectangle with a trivial fragment shader (one fragment per pixel); "faintI"
+// and "faintV" the grid mode's interactive and still frames with the density
+// scaled by 1e-9 (the same grid, blocks, rays, steps and skipping, but no ray
+// ever terminates early: the cost of marching the occupied blocks).
+nlohmann::json Floor(vtkRenderWindow* window, vtkRenderer* renderer, vtkPolyData* mesh, const std::string& what,
+  int size)
+{
+  vtkNew<vtkActor> actor;
+  vtkNew<vtkPlumeSheetMapper> sheet;
+  vtkNew<vtkPolyDataMapper> quadMapper;
+  if (what == "quad")
+  {
+    vtkNew<vtkPlaneSource> plane; // covers the view: the camera looks at it face-on from close by
+    vtkCamera* cam = renderer->GetActiveCamera();
+    double p[3], f[3], up[3];
+    cam->GetPosition(p);
+    cam->GetFocalPoint(f);
+    cam->GetViewUp(up);
+    const glm::dvec3 eye(p[0], p[1], p[2]), dir = glm::normalize(glm::dvec3(f[0], f[1], f[2]) - eye);
+    const glm::dvec3 u = glm::normalize(glm::cross(dir, glm::dvec3(up[0], up[1], up[2])));
+    const glm::dvec3 v = glm::cross(u, dir); // (the view-up is not orthogonal to the view direction)
+    const glm::dvec3 c = eye + 5.0 * dir, o = c - 10.0 * u - 10.0 * v, a = c + 10.0 * u - 10.0 * v,
+                     b = c - 10.0 * u + 10.0 * v;
+    plane->SetOrigin(o.x, o.y, o.z);
+    plane->SetPoint1(a.x, a.y, a.z);
+    plane->SetPoint2(b.x, b.y, b.z);
+    plane->Update();
+    quadMapper->SetInputConnection(plane->GetOutputPort());
+    actor->SetMapper(quadMapper);
+    actor->GetProperty()->LightingOff();
+    actor->GetProperty()->SetColor(0.5, 0.5, 0.5);
+    renderer->AddActor(actor);
+  }
+  else if (what == "faintI" || what == "faintV")
+  {
+    sheet->SetInputData(mesh);
+    sheet->SetDensity(Density * 1e-9);
+    sheet->SetBlurRadius(Blur);
+    sheet->SetThickness(Thick);
+    sheet->SetRenderMode(vtkPlumeSheetMapper::RENDER_GRID);
+    actor->SetMapper(sheet);
+    renderer->AddActor(actor);
+    window->SetDesiredUpdateRate(what == "faintI" ? 15.0 : 0.0001);
+  }
+  else if (what != "clear")
+  {
+    throw std::runtime_error("unknown floor '" + what + "'");
+  }
+  window->Render();
+  window->WaitForCompletion();
+  std::vector<double> times;
+  for (int f = 0; f < 5; ++f)
+  {
+    SetCamera(renderer, (f % 2) ? 1.0 : -1.0);
+    if (what == "quad")
+    {
+      SetCamera(renderer, 0.0); // the rectangle must keep covering the view
+      renderer->GetActiveCamera()->Roll((f % 2) ? 0.5 : -0.5);
+    }
+    const double t0 = Now();
+    window->Render();
+    window->WaitForCompletion();
+    times.push_back(Now() - t0);
+  }
+  nlohmann::json result = { { "render_s", Median(times) }, { "frames", times.size() },
+    { "coverage", Coverage(window, size) }, { "peak_rss_mb", PeakRSSMB() } };
+  if (what == "faintI" || what == "faintV")
+  {
+    result["interactive"] = sheet->GetLastInteractive();
+    result["lattice"] = sheet->GetLastImageSampleDistance();
+    result["grid_step"] = sheet->GetLastGridSampleDistance();
+  }
+  return result;
+}
+
 std::vector<std::string> Split(const std::string& job)
 {
   std::vector<std::string> parts;
@@ -323,6 +412,11 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   window->Render();
   window->WaitForCompletion();
 
+  if (kind == "floor")
+  {
+    return Floor(window, renderer, mesh, part[2], size);
+  }
+
   if (kind == "reference" || fireReference)
   {
     vtkNew<vtkPlumeSheetReference> ref;
@@ -347,11 +441,16 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
 
   // ours:SIZE:MODE:ARG, peer:SIZE:gpu|fixed:N; tris/cover:X:ours|peer (default settings / fixed 64^3)
   const std::string who = scaling ? part[2] : "";
-  const bool isOurs = kind == "ours" || who == "ours" || who == "grid" || who == "gridi";
+  const bool isOurs = kind == "ours" || who == "ours" || who == "grid" || who == "gridi" || who == "grid0";
   const std::string mode = scaling
-    ? (who == "ours" ? "A" : who == "grid" ? "V" : who == "gridi" ? "I" : who == "gpu" ? "gpu" : "fixed")
+    ? (who == "ours" ? "A"
+        : who == "grid" ? "V"
+        : who == "gridi" ? "I"
+        : who == "grid0" ? "M"
+        : who == "gpu" ? "gpu"
+                        : "fixed")
     : part[2];
-  const std::string arg = scaling ? (who == "ours" ? "8" : (isOurs ? "2" : "64")) : part[3];
+  const std::string arg = scaling ? (who == "ours" ? "8" : who == "grid0" ? "0" : (isOurs ? "2" : "64")) : part[3];
   // interactive frames: the rate vtkRenderWindowInteractor asks for while the camera moves
   window->SetDesiredUpdateRate(mode == "I" ? 15.0 : 0.0001);
   vtkNew<vtkActor> actor;
@@ -371,6 +470,12 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
       // grid mode: the smoke on a grid of ARG nodes per sigma, raycast
       ours->SetRenderMode(vtkPlumeSheetMapper::RENDER_GRID);
       ours->SetGridSamplesPerSigma(std::stod(arg));
+    }
+    else if (mode == "M")
+    {
+      // grid mode, default nodes per sigma, quadrature points merged in cells of ARG spacings (0: none)
+      ours->SetRenderMode(vtkPlumeSheetMapper::RENDER_GRID);
+      ours->SetGridMergeCellSize(std::stod(arg));
     }
     else if (mode == "A" || mode == "F")
     {
@@ -458,6 +563,17 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     if (ours->GetRenderMode() == vtkPlumeSheetMapper::RENDER_GRID)
     {
       result["grid_s"] = ours->GetGridComputeSeconds();
+      result["grid_quadrature_s"] = ours->GetDensityGrid()->GetQuadratureSeconds();
+      result["grid_merge_s"] = ours->GetDensityGrid()->GetMergeSeconds();
+      result["grid_splat_s"] = ours->GetDensityGrid()->GetSplatSeconds();
+      result["grid_points"] = ours->GetDensityGrid()->GetPointCount();
+      result["grid_gaussians"] = ours->GetDensityGrid()->GetGaussianCount();
+      result["grid_merge_cell"] = ours->GetGridMergeCellSize();
+      if (vtkImageData* grid = ours->GetDensityGrid()->GetOutput())
+      {
+        const int* dims = grid->GetDimensions();
+        result["grid_nodes"] = double(dims[0]) * dims[1] * dims[2];
+      }
       result["grid_spacing"] = ours->GetGridSpacing();
       result["grids"] = ours->GetGridComputeCount();
       result["interactive"] = ours->GetLastInteractive();
@@ -486,7 +602,7 @@ std::vector<std::string> OursJobs(bool quick, int size)
   }
   if (size == 512)
   {
-    return { p + "V:0.5", p + "V:1", p + "V:1.5", p + "V:2", p + "V:3", p + "I:1", p + "I:2", p + "A:2",
+    return { p + "V:0.5", p + "V:1", p + "V:1.5", p + "V:2", p + "V:3", p + "M:0", p + "M:1", p + "M:4", p + "I:1", p + "I:2", p + "A:2",
       p + "A:4", p + "A:8",
       p + "F:8", p + "G:2x1", p + "G:8x5", p + "G:16x10" };
   }
@@ -520,7 +636,7 @@ std::vector<std::string> ScalingJobs(bool quick)
   if (!quick)
   {
     jobs.push_back("tris:reference");
-    for (const char* who : { "grid", "gridi", "gpu" })
+    for (const char* who : { "grid", "gridi", "grid0", "gpu" })
     {
       jobs.push_back(std::string("tris:5:") + who);
     }
@@ -531,6 +647,18 @@ std::vector<std::string> ScalingJobs(bool quick)
     jobs.push_back("cover:" + z + ":peer");
   }
   return jobs;
+}
+
+// the floors of a grid-mode frame (see Floor)
+// (not in --quick: its error runs have no default grid-mode frame to compare with)
+std::vector<std::string> FloorJobs(bool quick)
+{
+  if (quick)
+  {
+    return {};
+  }
+  const std::string p = "floor:512:";
+  return { p + "clear", p + "quad", p + "faintI", p + "faintV" };
 }
 
 // RMS and max error as fractions of the reference's dynamic range
@@ -568,6 +696,11 @@ std::string Describe(const std::string& job)
     {
       return "grid mode, " + arg + " nodes per sigma" + (arg == "2" ? " (default)" : "") +
         ", interactive frames (DesiredUpdateRate 15)";
+    }
+    if (part[2] == "M")
+    {
+      return "grid mode, 2 nodes per sigma, quadrature points merged per " + arg +
+        "-spacing cell" + (arg == "0" ? " (none: every point splatted)" : "") + ", still frames";
     }
     if (part[2] == "F")
     {
@@ -663,6 +796,80 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
         { "peak_rss_mb", def->second["peak_rss_mb"] }, { "peer_peak_rss_mb", it->second["peak_rss_mb"] } });
     }
   }
+  // the density grid's build as its own case: merged (default) against every
+  // quadrature point splatted (MergeCellSize 0, the build before merging),
+  // both with their frame's error against the reference
+  {
+    const std::string s = quick ? "128" : "512";
+    const auto fireRef0 = results.find("tris:reference");
+    const auto ref512 = results.find("reference:" + s);
+    struct Pair
+    {
+      std::string Ours, Before, Name;
+      std::map<std::string, nlohmann::json>::const_iterator Ref;
+    };
+    const std::vector<Pair> pairs = { { "ours:" + s + ":V:2", "ours:" + s + ":M:0", "office stream sheet", ref512 },
+      { "tris:5:grid", "tris:5:grid0", "fire mfrac isosurface split 5x (1.3 M triangles)", fireRef0 } };
+    for (const auto& pr : pairs)
+    {
+      const auto it = results.find(pr.Ours);
+      if (it == results.end() || !it->second.contains("grid_s") || pr.Ref == results.end())
+      {
+        continue;
+      }
+      const auto err = Error(pr.Ref->second, it->second);
+      nlohmann::json line = { { "bench", "sheets" },
+        { "case", "grid build: " + pr.Name + ", 2 nodes per sigma, points merged per 2-spacing cell (default)" },
+        { "ours_s", it->second["grid_s"] }, { "error", err.first }, { "error_max", err.second },
+        { "grid_quadrature_s", it->second["grid_quadrature_s"] }, { "grid_merge_s", it->second["grid_merge_s"] },
+        { "grid_splat_s", it->second["grid_splat_s"] }, { "grid_points", it->second["grid_points"] },
+        { "grid_gaussians", it->second["grid_gaussians"] }, { "grid_nodes", it->second["grid_nodes"] },
+        { "peak_rss_mb", it->second["peak_rss_mb"] } };
+      const auto before = results.find(pr.Before);
+      if (before == results.end() || !before->second.contains("grid_s"))
+      {
+        continue; // (every line has a peer)
+      }
+      {
+        const auto berr = Error(pr.Ref->second, before->second);
+        line["peer"] = "same grid, every quadrature point splatted (MergeCellSize 0: the build before merging)";
+        line["peer_s"] = before->second["grid_s"];
+        line["peer_error"] = berr.first;
+        line["peer_error_max"] = berr.second;
+        line["ratio"] = before->second["grid_s"].get<double>() / std::max(1e-9, it->second["grid_s"].get<double>());
+        line["peer_peak_rss_mb"] = before->second["peak_rss_mb"];
+      }
+      lines.push_back(line);
+    }
+  }
+  // the floors of a grid-mode frame, next to the frame itself
+  for (const auto& job : FloorJobs(quick))
+  {
+    const auto it = results.find(job);
+    if (it == results.end())
+    {
+      continue;
+    }
+    const std::string what = Split(job)[2];
+    static const std::map<std::string, std::string> names = {
+      { "clear", "empty renderer (clear + swap)" }, { "quad", "one screen-filling rectangle, trivial shader" },
+      { "faintI", "grid mode interactive frame, density x 1e-9 (same rays and skipping, no early termination)" },
+      { "faintV", "grid mode still frame, density x 1e-9 (same rays and skipping, no early termination)" } };
+    nlohmann::json line = { { "bench", "sheets" },
+      { "case", "floor: office view " + Split(job)[1] + "^2, " + names.at(what) }, { "ours_s", it->second["render_s"] },
+      { "frames", it->second["frames"] }, { "peak_rss_mb", it->second["peak_rss_mb"] } };
+    // the "peer" is the real grid-mode frame: ratio = how far it is above this floor
+    const std::string frameJob = std::string("ours:") + Split(job)[1] + (what == "faintV" ? ":V:2" : ":I:2");
+    const auto frame = results.find(frameJob);
+    if (frame == results.end())
+    {
+      continue;
+    }
+    line["peer"] = "the frame itself: " + Describe(frameJob);
+    line["peer_s"] = frame->second["render_s"];
+    line["ratio"] = frame->second["render_s"].get<double>() / std::max(1e-9, it->second["render_s"].get<double>());
+    lines.push_back(line);
+  }
   // scaling: default settings against splat + fixed-point 64^3 of the same mesh and view (no error)
   const int scaleSize = quick ? ScaleSizeQuick : ScaleSize;
   const auto fireRef = results.find("tris:reference");
@@ -681,6 +888,7 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
     }
     static const std::map<std::string, std::string> names = { { "ours", "exact mode (default settings)" },
       { "grid", "grid mode, still frames" }, { "gridi", "grid mode, interactive frames (DesiredUpdateRate 15)" },
+      { "grid0", "grid mode without merging (every quadrature point splatted), still frames" },
       { "peer", "vtkFixedPointVolumeRayCastMapper on a splatted 64^3 grid" },
       { "gpu", "vtkGPUVolumeRayCastMapper on a splatted 64^3 grid" } };
     const auto err = Error(fireRef->second, it->second);
@@ -754,6 +962,10 @@ void RegisterSheets(std::map<std::string, Benchmark>& registry)
       }
     }
     for (const auto& j : ScalingJobs(quick))
+    {
+      jobs.push_back(j);
+    }
+    for (const auto& j : FloorJobs(quick))
     {
       jobs.push_back(j);
     }
