@@ -576,7 +576,9 @@ int main(int argc, char* argv[])
   info->add_option("file", file, "dataset file (any format VTK reads)")->required();
   info->add_option("--reader", readerName, "reader: legacy, xml, pvd, plot3d, exodus, ensight, openfoam, cgns, vrml");
   info->add_option("--q", qFile, "PLOT3D solution file (default: guessed from the grid file)");
-  info->add_option("--time-step", timeStep, "time step index (default 0)")
+  // Without --time-step, the last step, as scenes read: a transient run's
+  // step 0 is often its uniform initial condition.
+  auto* infoTimeStep = info->add_option("--time-step", timeStep, "time step index (default: the last, as scenes)")
     ->check(CLI::Range(0, 1 << 30).description("a time step index: 0 or more"));
   info->add_option("--block", blocks, "only these blocks (repeatable)");
   info->add_flag("--no-merge", noMerge, "keep multiblock data as blocks");
@@ -649,11 +651,19 @@ int main(int argc, char* argv[])
       {
         reader->SetQFileName(qFile.c_str());
       }
-      reader->SetTimeStep(timeStep);
       reader->SetMergeBlocks(!noMerge);
       for (const auto& b : blocks)
       {
         reader->AddBlockName(b.c_str());
+      }
+      if (infoTimeStep->count() > 0)
+      {
+        reader->SetTimeStep(timeStep);
+      }
+      else
+      {
+        reader->UpdateInformation();
+        reader->SetTimeStep(std::max(reader->GetNumberOfTimeValues() - 1, 0));
       }
       status = plume::RunInfo(reader, json, std::cout, std::cerr);
     }
