@@ -4,14 +4,7 @@
 #   cmake -DPLUME=... -DSCENE_DIR=... -DWORK_DIR=... -P SimulatePointSourcesTest.cmake
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
-function (run)
-  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY "${WORK_DIR}"
-    RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if (NOT result EQUAL 0)
-    message(FATAL_ERROR "'${ARGN}' failed (${result}):\n${out}\n${err}")
-  endif ()
-  set(out "${out}" PARENT_SCOPE)
-endfunction ()
+include("${CMAKE_CURRENT_LIST_DIR}/plumeRunInWorkDir.cmake")
 run("${PLUME}" simulate "${SCENE_DIR}/point_sources.json" -o points.pvd --every 10)
 if (NOT out MATCHES "wrote points\\.pvd \\(2 time steps of dataset 'smoke', steps 0\\.\\.20")
   message(FATAL_ERROR "unexpected summary: ${out}")

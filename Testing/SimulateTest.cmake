@@ -5,14 +5,7 @@
 #   cmake -DPLUME=... -DSCENE_DIR=... -DWORK_DIR=... -P SimulateTest.cmake
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
-function (run)
-  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY "${WORK_DIR}"
-    RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if (NOT result EQUAL 0)
-    message(FATAL_ERROR "'${ARGN}' failed (${result}):\n${out}\n${err}")
-  endif ()
-  set(out "${out}" PARENT_SCOPE)
-endfunction ()
+include("${CMAKE_CURRENT_LIST_DIR}/plumeRunInWorkDir.cmake")
 set(scene "${SCENE_DIR}/plume_rising.json")
 run("${PLUME}" simulate "${scene}" -o series.pvd --every 5)
 if (NOT out MATCHES "wrote series\\.pvd \\(4 time steps of dataset 'smoke', steps 0\\.\\.20, t = 0\\.5\\)")
