@@ -68,13 +68,8 @@ void AddLights(airtest::Scene& s, int count)
 
 void Setup(airtest::Scene& s, int lights)
 {
-  s.AddRoom();
-  s.AddBox(-0.7, 0.5, 2.5, 2.6, -2.1, -0.9, 0.9, 0.9, 0.8); // a plate under the lights
+  airtest::PlateRoom(s);
   AddLights(s, lights);
-  s.Pass->SetScattering(0.22, 0.2, 0.18);
-  s.Pass->SetAbsorption(0.02, 0.03, 0.05);
-  s.Pass->SetIntensityScale(30.0);
-  s.Camera(2.5, 1.6, 5.5, -0.3, 1.4, -1.5);
 }
 }
 

@@ -20,13 +20,8 @@ int TestAirlightPointShadow(int, char*[])
   // 1. A point light above a plate: shafts of shadow under the plate, the box and the sphere.
   {
     airtest::Scene s(W, H);
-    s.AddRoom();
-    vtkActor* plate = s.AddBox(-0.7, 0.5, 2.5, 2.6, -2.1, -0.9, 0.9, 0.9, 0.8);
+    vtkActor* plate = airtest::PlateRoom(s);
     vtkLight* light = s.AddPointLight(-0.1, 3.4, -1.5, 1.0, 0.9, 0.75, 1.0);
-    s.Pass->SetScattering(0.22, 0.2, 0.18);
-    s.Pass->SetAbsorption(0.02, 0.03, 0.05);
-    s.Pass->SetIntensityScale(30.0);
-    s.Camera(2.5, 1.6, 5.5, -0.3, 1.4, -1.5);
 
     const airtest::ShadowComparison r = airtest::CompareShadowed(s, stride, "shadowed point light");
     failures += airtest::CheckShadowGoal(r);

@@ -385,6 +385,19 @@ struct ShadowComparison
   bool GLClean = false, Finite = false;
 };
 
+// The shadow tests' room: the room of AddRoom, a plate under where their
+// lights hang, a light haze and the view from the door. Returns the plate.
+inline vtkActor* PlateRoom(Scene& s)
+{
+  s.AddRoom();
+  vtkActor* plate = s.AddBox(-0.7, 0.5, 2.5, 2.6, -2.1, -0.9, 0.9, 0.9, 0.8);
+  s.Pass->SetScattering(0.22, 0.2, 0.18);
+  s.Pass->SetAbsorption(0.02, 0.03, 0.05);
+  s.Pass->SetIntensityScale(30.0);
+  s.Camera(2.5, 1.6, 5.5, -0.3, 1.4, -1.5);
+  return plate;
+}
+
 inline ShadowComparison CompareShadowed(Scene& s, int stride, const std::string& what)
 {
   ShadowComparison r;
