@@ -15,16 +15,8 @@
 //    level per channel. PLUME_AIRLIGHT_WRITE_BASELINE=1 rewrites it.
 #include "plumeAirlightTestUtil.h"
 
-#include "vtkDataArray.h"
-#include "vtkPNGReader.h"
-
 namespace
 {
-const char* BaselinePath()
-{
-  return PLUME_SOURCE_DIR "/Modules/Airlight/Testing/Data/Baseline/TestAirlightManyLights8.png";
-}
-
 // Eleven lights over the room with a plate: weak lights first (the first
 // group), then three strong ones (the second group) whose airlight and
 // shafts dominate: leaving them out, or attenuating the surfaces twice,
@@ -115,35 +107,10 @@ int TestAirlightManyLights(int, char*[])
     const airtest::FloatImage image = s.RenderFloat(s.Pass);
     PLUME_CHECK(s.Pass->GetNumberOfLightGroups() == 1);
     PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
-    if (std::getenv("PLUME_AIRLIGHT_WRITE_BASELINE"))
-    {
-      setenv("PLUME_AIRLIGHT_DUMP", "/tmp", 1);
-      airtest::Dump(image, "TestAirlightManyLights8");
-      std::cout << "wrote /tmp/TestAirlightManyLights8.png: copy it to " << BaselinePath() << "\n";
-    }
-    vtkNew<vtkPNGReader> reader;
-    reader->SetFileName(BaselinePath());
-    reader->Update();
-    vtkImageData* baseline = reader->GetOutput();
-    int dims[3] = { 0, 0, 0 };
-    baseline->GetDimensions(dims);
-    PLUME_CHECK(dims[0] == W && dims[1] == H);
-    if (dims[0] == W && dims[1] == H)
-    {
-      vtkDataArray* bytes = baseline->GetPointData()->GetScalars();
-      int worst = 0;
-      for (vtkIdType p = 0; p < static_cast<vtkIdType>(W) * H; ++p)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          const double v = image.RGBA[4 * p + c];
-          const int mine = std::isnan(v) ? 255 : static_cast<int>(std::min(255.0, std::max(0.0, 255.0 * v + 0.5)));
-          worst = std::max(worst, std::abs(mine - static_cast<int>(bytes->GetComponent(p, c))));
-        }
-      }
-      std::cout << "8 lights against the single-pass baseline: largest difference " << worst << " levels\n";
-      PLUME_CHECK(worst <= 1);
-    }
+    const int worst = airtest::BaselineDifference(image, "TestAirlightManyLights8");
+    PLUME_CHECK(worst >= 0); // the baseline's size
+    std::cout << "8 lights against the single-pass baseline: largest difference " << worst << " levels\n";
+    PLUME_CHECK(worst <= 1);
   }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

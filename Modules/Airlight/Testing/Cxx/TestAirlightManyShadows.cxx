@@ -13,16 +13,8 @@
 //    PLUME_AIRLIGHT_WRITE_BASELINE=1 rewrites it.
 #include "plumeAirlightTestUtil.h"
 
-#include "vtkDataArray.h"
-#include "vtkPNGReader.h"
-
 namespace
 {
-const char* BaselinePath()
-{
-  return PLUME_SOURCE_DIR "/Modules/Airlight/Testing/Data/Baseline/TestAirlightManyShadows4.png";
-}
-
 // Three spot lights and three point lights over the room: each spot's cone holds
 // an occluder, each point light sees all of them.
 void AddLights(airtest::Scene& s, int count)
@@ -91,40 +83,12 @@ int TestAirlightManyShadows(int, char*[])
     const airtest::FloatImage image = s.RenderFloat(s.Pass);
     PLUME_CHECK(s.Pass->GetNumberOfShadowedLights() == 4);
     PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
-    if (std::getenv("PLUME_AIRLIGHT_WRITE_BASELINE"))
-    {
-      setenv("PLUME_AIRLIGHT_DUMP", "/tmp", 1);
-      airtest::Dump(image, "TestAirlightManyShadows4");
-      std::cout << "wrote /tmp/TestAirlightManyShadows4.png: copy it to " << BaselinePath() << "\n";
-    }
-    vtkNew<vtkPNGReader> reader;
-    reader->SetFileName(BaselinePath());
-    reader->Update();
-    vtkImageData* baseline = reader->GetOutput();
-    int dims[3] = { 0, 0, 0 };
-    baseline->GetDimensions(dims);
-    PLUME_CHECK(dims[0] == W && dims[1] == H);
-    if (dims[0] == W && dims[1] == H)
-    {
-      vtkDataArray* bytes = baseline->GetPointData()->GetScalars();
-      int worst = 0;
-      size_t off = 0;
-      for (vtkIdType p = 0; p < static_cast<vtkIdType>(W) * H; ++p)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          // The same rounding as Dump, which wrote the baseline.
-          const double v = image.RGBA[4 * p + c];
-          const int mine = std::isnan(v) ? 255 : static_cast<int>(std::min(255.0, std::max(0.0, 255.0 * v + 0.5)));
-          const int d = std::abs(mine - static_cast<int>(bytes->GetComponent(p, c)));
-          worst = std::max(worst, d);
-          off += d > 1;
-        }
-      }
-      std::cout << "4 lights against the 4-sampler baseline: largest difference " << worst
-                << " levels, " << off << " channels off by more than 1\n";
-      PLUME_CHECK(worst <= 1);
-    }
+    size_t off = 0;
+    const int worst = airtest::BaselineDifference(image, "TestAirlightManyShadows4", &off);
+    PLUME_CHECK(worst >= 0); // the baseline's size
+    std::cout << "4 lights against the 4-sampler baseline: largest difference " << worst
+              << " levels, " << off << " channels off by more than 1\n";
+    PLUME_CHECK(worst <= 1);
   }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

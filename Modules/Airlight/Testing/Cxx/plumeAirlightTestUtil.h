@@ -18,6 +18,8 @@
 #include "vtkPixelBufferObject.h"
 #include "vtkTextureObject.h"
 #include "vtkImageData.h"
+#include "vtkDataArray.h"
+#include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
@@ -299,6 +301,50 @@ inline void Dump(const FloatImage& image, const std::string& name, double gain =
   writer->SetInputData(img);
   writer->SetFileName((std::string(dir) + "/" + name + ".png").c_str());
   writer->Write();
+}
+
+// Largest difference, in 8-bit levels, between an image (rounded as Dump
+// rounds, which wrote the baseline) and the committed baseline NAME.png; -1
+// when the sizes differ. `overOne` counts the channels off by more than one
+// level. With PLUME_AIRLIGHT_WRITE_BASELINE set, writes /tmp/NAME.png first.
+inline int BaselineDifference(const FloatImage& image, const std::string& name, size_t* overOne = nullptr)
+{
+  const std::string path = PLUME_SOURCE_DIR "/Modules/Airlight/Testing/Data/Baseline/" + name + ".png";
+  if (std::getenv("PLUME_AIRLIGHT_WRITE_BASELINE"))
+  {
+    setenv("PLUME_AIRLIGHT_DUMP", "/tmp", 1);
+    Dump(image, name);
+    std::cout << "wrote /tmp/" << name << ".png: copy it to " << path << "\n";
+  }
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkImageData* baseline = reader->GetOutput();
+  int dims[3] = { 0, 0, 0 };
+  baseline->GetDimensions(dims);
+  if (dims[0] != image.Width || dims[1] != image.Height)
+  {
+    return -1;
+  }
+  vtkDataArray* bytes = baseline->GetPointData()->GetScalars();
+  int worst = 0;
+  size_t off = 0;
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(image.Width) * image.Height; ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double v = image.RGBA[4 * p + c];
+      const int mine = std::isnan(v) ? 255 : static_cast<int>(std::min(255.0, std::max(0.0, 255.0 * v + 0.5)));
+      const int d = std::abs(mine - static_cast<int>(bytes->GetComponent(p, c)));
+      worst = std::max(worst, d);
+      off += d > 1;
+    }
+  }
+  if (overOne)
+  {
+    *overOne = off;
+  }
+  return worst;
 }
 
 inline void Print(const char* what, const Error& e)
