@@ -8,8 +8,10 @@
 # fuzz targets (no Python wrappers, no benchmarks, no long GL image tests:
 # -DPLUME_BUILD_BENCHMARKS=OFF -DPLUME_GL_IMAGE_TESTS=OFF); then those tests
 # (any sanitizer report aborts its test), then each fuzz target for
-# PLUME_FUZZ_SECONDS (default 15) on its seed corpus. Prints the time of each
-# stage. See Documentation/Testing.md.
+# PLUME_FUZZ_SECONDS (default 15) on its seed corpus, with libFuzzer's seed
+# fixed (PLUME_FUZZ_SEED, default 1) so that CI explores the same inputs on
+# every run and a finding reproduces; scripts/fuzz.sh explores with new seeds.
+# Prints the time of each stage. See Documentation/Testing.md.
 #   bash scripts/test-sanitize.sh [extra ctest arguments]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -54,7 +56,7 @@ xvfb-run -a -s "-screen 0 1024x768x24 -noreset" \
   -E "TestSmokeSolverPressure" "$@" || status=$?
 t2=$SECONDS
 unset LD_PRELOAD
-ctest --output-on-failure -L fuzz || status=$?
+PLUME_FUZZ_SEED="${PLUME_FUZZ_SEED:-1}" ctest --output-on-failure -L fuzz || status=$?
 t3=$SECONDS
 echo "sanitizer run: build $((t1 - t0)) s, tests $((t2 - t1)) s, fuzz $((t3 - t2)) s (${seconds} s per target)"
 exit $status

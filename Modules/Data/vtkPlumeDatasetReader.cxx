@@ -450,9 +450,13 @@ void SelectArrays(vtkAlgorithm* reader, bool patches)
 // The formats VTK 9.1 reads unsafely and no structural check here covers:
 // HDF5 (netCDF-4) Exodus, EnSight (the check covers C-binary unstructured
 // geometry only), XML with inline arrays, PLOT3D solution (Q) files,
-// OpenFOAM, CGNS and VRML.
+// OpenFOAM, CGNS and VRML; legacy files that may hold a FIELD section.
 bool IsExposed(const std::string& kind, const std::string& path, const std::string& qPath)
 {
+  if (kind == "legacy")
+  {
+    return vtkPlumeFormatCheck::MayHoldLegacyFieldData(path);
+  }
   if (kind == "exodus")
   {
     return !vtkPlumeFormatCheck::IsNetCDFClassic(path);

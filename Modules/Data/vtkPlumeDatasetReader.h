@@ -140,9 +140,10 @@ public:
   /**
    * Read the formats that VTK 9.1 reads unsafely and no structural check
    * covers (HDF5 Exodus, EnSight, XML with inline arrays, PLOT3D with a
-   * solution file, OpenFOAM, CGNS, VRML) once in a forked child process
-   * before reading them here, so that a reader crash on a corrupt file is one
-   * error in GetLastError() ("the cgns reader crashed (signal 11, ...)")
+   * solution file, OpenFOAM, CGNS, VRML, legacy files that mention FIELD)
+   * once in a forked child process before reading them here, so that a
+   * reader crash on a corrupt file is one error in GetLastError() ("the
+   * cgns reader crashed (signal 11, ...)")
    * instead of the end of the process; a reader that runs longer than
    * $PLUME_READER_TIMEOUT seconds (default 300) is stopped with an error too.
    * Costs one more read of such files. Default true; the environment

@@ -3,6 +3,7 @@
 #include "vtksys/FStream.hxx"
 #include "vtksys/SystemTools.hxx"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <chrono>
@@ -992,6 +993,31 @@ bool vtkPlumeFormatCheck::HasInlineXMLData(const std::string& path)
       return false;
     }
     window.erase(0, window.size() > 16 ? window.size() - 16 : 0);
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlumeFormatCheck::MayHoldLegacyFieldData(const std::string& path)
+{
+  // chunk by chunk, lowercased, with a 4-byte overlap for a word cut between two chunks
+  vtksys::ifstream in(path.c_str(), std::ios::binary);
+  std::string window;
+  std::vector<char> chunk(1 << 16);
+  while (in)
+  {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    const size_t kept = window.size();
+    window.append(chunk.data(), static_cast<size_t>(in.gcount()));
+    for (size_t i = kept; i < window.size(); ++i)
+    {
+      window[i] = static_cast<char>(std::tolower(static_cast<unsigned char>(window[i])));
+    }
+    if (window.find("field") != std::string::npos)
+    {
+      return true;
+    }
+    window.erase(0, window.size() > 4 ? window.size() - 4 : 0);
   }
   return false;
 }

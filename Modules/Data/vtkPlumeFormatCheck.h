@@ -104,6 +104,15 @@ public:
    * the appended data section.
    */
   static bool HasInlineXMLData(const std::string& path);
+
+  /**
+   * True if the word "field" appears anywhere in `path`, in any case. VTK
+   * 9.1's legacy readers dereference a null pointer when a FIELD section is
+   * malformed (a bad header or array line, or a keyword that a failed number
+   * read left in place), which no structural check short of a second parser
+   * covers: files that may hold one are read once in a child process first.
+   */
+  static bool MayHoldLegacyFieldData(const std::string& path);
 };
 
 #endif

@@ -293,6 +293,21 @@ def build(c):
     c.add("LegacyCellsFuzzFinding", "error", ["info", c.write("legacy_cells/fuzz.vtk", legacy_poly(
           "POLYGONS 2 8\n3 0 1 ~2\n3 1 3 2\n", tail="POINT_DATA 4\nSCALARS s float 0\nLOOKUP_TABLE default\n1 2 3 4\n"))],
           r"the POLYGONS section \(2 cells, 8 values\): value 3 is '~2', not an integer")
+    # a malformed FIELD section: VTK 9.1's legacy readers dereference the null field data they
+    # return (SEGV in every dataset type; found by plumeFuzzDatasetReader). Such files are read in a
+    # child process first, so the crash is one error; a well-formed FIELD section still reads.
+    crashed = r"the legacy reader crashed \(signal 11, [^)]*\) reading .*%s\.vtk in a child process"
+    for name, text in [
+            ("poly_header", legacy_poly("", tail="FIELD x\n")),
+            ("poly_array", legacy_poly("POLYGONS 1 4\n3 0 1 2\n", tail="FIELD FieldData 1\nbad 1 1 nonsense\n")),
+            ("poly_in_points", legacy_poly("", points="0 0 0field0 0 1 0 10", tail="P1OLYGONS 2 8\n0 0 1\n")),
+            ("ugrid_header", legacy_ugrid("FIELD x", "")),
+            ("image_header", "# vtk DataFile Version 3.0\nbad\nASCII\nDATASET STRUCTURED_POINTS\n"
+                             "DIMENSIONS 2 2 2\nFIELD x\n")]:
+        c.add("LegacyFieldMalformed_" + name, "error", ["info", c.write("legacy_field/%s.vtk" % name, text)],
+              crashed % name)
+    c.add("LegacyFieldWellFormed", "ok", ["info", c.write("legacy_field/good.vtk", legacy_poly(
+          "POLYGONS 1 4\n3 0 1 2\n", tail="FIELD FieldData 1\nTIME 1 1 double\n2.5\n"))], r"Points: 4\s+Cells: 1")
     # the office stream sheet as legacy 4.2 polydata (binary and ASCII), cut inside its polygons
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
     from vtkmodules.vtkIOLegacy import vtkPolyDataWriter
