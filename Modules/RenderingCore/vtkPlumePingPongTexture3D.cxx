@@ -12,6 +12,16 @@ vtkStandardNewMacro(vtkPlumePingPongTexture3D);
 
 vtkPlumePingPongTexture3D::vtkPlumePingPongTexture3D() = default;
 
+vtkTextureObject* vtkPlumePingPongTexture3D::GetFront()
+{
+  return this->Textures[this->FrontIndex];
+}
+
+vtkTextureObject* vtkPlumePingPongTexture3D::GetBack()
+{
+  return this->Textures[1 - this->FrontIndex];
+}
+
 vtkPlumePingPongTexture3D::~vtkPlumePingPongTexture3D()
 {
   this->ReleaseGraphicsResources(this->Window);

@@ -43,9 +43,9 @@ public:
   bool Allocate(vtkOpenGLRenderWindow* window, const int dims[3], int components);
 
   /** The texture passes read (the last result). */
-  vtkTextureObject* GetFront() { return this->Textures[this->FrontIndex]; }
+  vtkTextureObject* GetFront();
   /** The texture the next pass renders into. */
-  vtkTextureObject* GetBack() { return this->Textures[1 - this->FrontIndex]; }
+  vtkTextureObject* GetBack();
   /** The back texture becomes the front one. */
   void Swap() { this->FrontIndex = 1 - this->FrontIndex; }
 

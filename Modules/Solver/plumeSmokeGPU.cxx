@@ -63,7 +63,7 @@ public:
   vtkNew<vtkPlumePingPongTexture3D> Temperature;
   vtkNew<vtkPlumePingPongTexture3D> Pressure;
   vtkSmartPointer<vtkTextureObject> Solid;
-  vtkSmartPointer<vtkTextureObject> RHS;          // -div u
+  vtkSmartPointer<vtkTextureObject> RHS;          // (-div u, the Poisson diagonal)
   vtkSmartPointer<vtkTextureObject> CellVelocity; // RGBA32F, for the glyph mapper
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkOpenGLVertexArrayObject> VAO;
@@ -365,7 +365,7 @@ bool SmokeGPU::Upload(vtkRenderWindow* window, const GPUGrid& grid, const std::v
     }
   }
   impl.Solid = impl.Texture3D(n, 1, values.data());
-  impl.RHS = impl.Texture3D(n, 1, nullptr);
+  impl.RHS = impl.Texture3D(n, 2, nullptr); // (b, diagonal): RG32F
   impl.CellVelocity = impl.Texture3D(n, 4, nullptr);
   if (!impl.Solid || !impl.RHS || !impl.CellVelocity)
   {

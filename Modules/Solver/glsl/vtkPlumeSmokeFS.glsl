@@ -9,7 +9,8 @@
 //   BUOYANCY      a face component += Factor * (Buoyancy (T - ambient) - SmokeWeight density)
 //   SOURCE_CELLS  a cell quantity set inside the sources' spheres
 //   SOURCE_FACES  a face component set inside the velocity sources' spheres
-//   DIVERGENCE    b = -div u per cell (0 in solid cells)
+//   DIVERGENCE    (b, D) per cell: b = -div u, D the Poisson matrix's diagonal
+//                 (0 in solid cells), so that Jacobi reads no obstacle texels
 //   JACOBI        one damped Jacobi iteration of the pressure Poisson equation
 //   GRADIENT      a face component -= the pressure gradient
 //   CELL_VELOCITY the cell-centred velocity (RGBA32F, a = 1) for the glyph mapper
@@ -121,7 +122,7 @@ uniform sampler3D U2;
 
 //PLUME::IF JACOBI
 uniform sampler3D Pressure; // the current iterate
-uniform sampler3D B;        // right-hand side (-div u)
+uniform sampler3D B;        // (right-hand side -div u, diagonal)
 uniform vec3 InvH2;
 uniform float Weight;       // damping
 //PLUME::ENDIF
@@ -212,54 +213,54 @@ void main()
 //PLUME::ENDIF
 //PLUME::IF DIVERGENCE
   float b = 0.0;
+  float diagonal = 0.0;
   if (!IsSolid(p))
   {
     float div = (texelFetch(U0, p + ivec3(1, 0, 0), 0).r - texelFetch(U0, p, 0).r) / H.x +
       (texelFetch(U1, p + ivec3(0, 1, 0), 0).r - texelFetch(U1, p, 0).r) / H.y +
       (texelFetch(U2, p + ivec3(0, 0, 1), 0).r - texelFetch(U2, p, 0).r) / H.z;
     b = -div;
+    // vtkPlumePressureSolver's diagonal: a fluid neighbour or an open side (ghost q = 0) per face
+    for (int d = 0; d < 3; ++d)
+    {
+      ivec3 e = ivec3(0);
+      e[d] = 1;
+      float invH2 = 1.0 / (H[d] * H[d]);
+      if (p[d] > 0 ? !IsSolid(p - e) : OpenLo[d] != 0)
+      {
+        diagonal += invH2;
+      }
+      if (p[d] < Cells[d] - 1 ? !IsSolid(p + e) : OpenHi[d] != 0)
+      {
+        diagonal += invH2;
+      }
+    }
   }
-  gl_FragData[0] = vec4(b, 0.0, 0.0, 0.0);
+  gl_FragData[0] = vec4(b, diagonal, 0.0, 0.0);
 //PLUME::ENDIF
 //PLUME::IF JACOBI
+  // Solid cells (diagonal 0) hold q = 0 in every iterate (cleared, then
+  // written 0 here), so a solid neighbour adds exactly 0 and needs no test;
+  // a ghost beyond an open side is 0 too, and beyond a wall no term at all.
+  vec2 bd = texelFetch(B, p, 0).rg;
   float next = 0.0;
-  if (!IsSolid(p))
+  if (bd.y > 0.0)
   {
-    float sum = texelFetch(B, p, 0).r;
-    float diagonal = 0.0;
+    float sum = bd.x;
     for (int d = 0; d < 3; ++d)
     {
       ivec3 e = ivec3(0);
       e[d] = 1;
       if (p[d] > 0)
       {
-        if (!IsSolid(p - e))
-        {
-          diagonal += InvH2[d];
-          sum += InvH2[d] * texelFetch(Pressure, p - e, 0).r;
-        }
-      }
-      else if (OpenLo[d] != 0)
-      {
-        diagonal += InvH2[d]; // ghost pressure 0 outside an open side
+        sum += InvH2[d] * texelFetch(Pressure, p - e, 0).r;
       }
       if (p[d] < Cells[d] - 1)
       {
-        if (!IsSolid(p + e))
-        {
-          diagonal += InvH2[d];
-          sum += InvH2[d] * texelFetch(Pressure, p + e, 0).r;
-        }
-      }
-      else if (OpenHi[d] != 0)
-      {
-        diagonal += InvH2[d];
+        sum += InvH2[d] * texelFetch(Pressure, p + e, 0).r;
       }
     }
-    if (diagonal > 0.0)
-    {
-      next = (1.0 - Weight) * texelFetch(Pressure, p, 0).r + Weight * sum / diagonal;
-    }
+    next = (1.0 - Weight) * texelFetch(Pressure, p, 0).r + Weight * sum / bd.y;
   }
   gl_FragData[0] = vec4(next, 0.0, 0.0, 0.0);
 //PLUME::ENDIF
