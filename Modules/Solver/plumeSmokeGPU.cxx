@@ -65,6 +65,8 @@ public:
   vtkSmartPointer<vtkTextureObject> Solid;
   vtkSmartPointer<vtkTextureObject> RHS;          // (-div u, the Poisson diagonal)
   vtkSmartPointer<vtkTextureObject> CellVelocity; // RGBA32F, for the glyph mapper
+  vtkSmartPointer<vtkTextureObject> SourceCells;    // covering source + 1 per cell (0: none)
+  vtkSmartPointer<vtkTextureObject> SourceFaces[3]; // the same per face (velocity sources); null: none
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkOpenGLVertexArrayObject> VAO;
   vtkNew<vtkPlumeShaderProgramCache> Programs;
@@ -85,6 +87,7 @@ public:
     this->Density->ReleaseGraphicsResources(this->Window);
     this->Temperature->ReleaseGraphicsResources(this->Window);
     this->Pressure->ReleaseGraphicsResources(this->Window);
+    this->ReleaseSourceMasks();
     for (vtkTextureObject* t : { this->Solid.Get(), this->RHS.Get(), this->CellVelocity.Get() })
     {
       if (t)
@@ -106,6 +109,18 @@ public:
     this->Programs->ReleaseGraphicsResources(nullptr);
     this->Window = nullptr;
     this->HasState = false;
+  }
+
+  void ReleaseSourceMasks()
+  {
+    for (auto* t : { &this->SourceCells, &this->SourceFaces[0], &this->SourceFaces[1], &this->SourceFaces[2] })
+    {
+      if (*t)
+      {
+        (*t)->ReleaseGraphicsResources(this->Window);
+        *t = nullptr;
+      }
+    }
   }
 
   vtkOpenGLRenderWindow* Context(vtkRenderWindow* given, std::string& error)
@@ -391,6 +406,45 @@ bool SmokeGPU::Upload(vtkRenderWindow* window, const GPUGrid& grid, const std::v
   return true;
 }
 
+bool SmokeGPU::SetSourceMasks(
+  const std::vector<float>& cells, const std::vector<float> faces[3], std::string& error)
+{
+  Internals& impl = *this->Impl;
+  if (!impl.HasState)
+  {
+    error = "the GPU backend holds no state (upload first)";
+    return false;
+  }
+  impl.Window->MakeCurrent();
+  impl.ReleaseSourceMasks();
+  const int* n = impl.Grid.Cells;
+  if (!cells.empty())
+  {
+    impl.SourceCells = impl.Texture3D(n, 1, cells.data());
+    if (!impl.SourceCells)
+    {
+      error = "could not create the source texture";
+      return false;
+    }
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    if (faces[d].empty())
+    {
+      continue;
+    }
+    int m[3] = { n[0], n[1], n[2] };
+    ++m[d];
+    impl.SourceFaces[d] = impl.Texture3D(m, 1, faces[d].data());
+    if (!impl.SourceFaces[d])
+    {
+      error = "could not create the source face texture";
+      return false;
+    }
+  }
+  return true;
+}
+
 bool SmokeGPU::Step(const GPUStepSettings& s, std::string& error)
 {
   Internals& impl = *this->Impl;
@@ -471,78 +525,52 @@ bool SmokeGPU::Step(const GPUStepSettings& s, std::string& error)
         }
         impl.U[d]->Swap();
       }
-      // 3. sources (the seed's immortal candle): cells, then the faces of velocity sources
-      if (!s.Sources.empty())
+      // 3. sources (the seed's immortal candle): which source (if any) covers each
+      // cell and face was decided on the CPU, in double, by the CPU backend's own
+      // test (a cell at exactly the radius is in or out as there); the passes
+      // set the covering source's values
+      if (!s.Sources.empty() && impl.SourceCells)
       {
         const int count = int(s.Sources.size());
-        std::vector<float> centers, radii, values;
-        std::vector<int> homes;
-        for (const GPUSource& src : s.Sources)
-        {
-          for (int a = 0; a < 3; ++a)
-          {
-            centers.push_back(float((src.Center[a] - s.Origin[a]) / g.H[a]));
-            homes.push_back(src.Home[a]);
-          }
-          radii.push_back(float(src.Radius));
-        }
+        std::vector<float> values(count);
         p = impl.Program("SOURCE_CELLS", -1);
         if (!p)
         {
           return fail("SOURCE_CELLS");
         }
-        p->SetUniformi("NumberOfSources", count);
-        p->SetUniform3fv("SourceCenter", count, reinterpret_cast<const float(*)[3]>(centers.data()));
-        p->SetUniform1fv("SourceRadius", count, radii.data());
-        SetIVec3(p, "SourceHome", count, homes.data());
         for (int which = 0; which < 2; ++which)
         {
-          values.clear();
-          for (const GPUSource& src : s.Sources)
+          for (int i = 0; i < count; ++i)
           {
-            values.push_back(float(which == 0 ? src.Density : src.Temperature));
+            values[i] = float(which == 0 ? s.Sources[i].Density : s.Sources[i].Temperature);
           }
           p->SetUniform1fv("SourceValue", count, values.data());
           vtkPlumePingPongTexture3D* field = which == 0 ? impl.Density.Get() : impl.Temperature.Get();
-          if (!impl.Draw(p, { { "Source", field->GetFront() } }, field->GetBack(), error))
+          if (!impl.Draw(p, { { "Source", field->GetFront() }, { "SourceIndex", impl.SourceCells } },
+                field->GetBack(), error))
           {
             return false;
           }
           field->Swap();
         }
-        std::vector<const GPUSource*> moving;
-        for (const GPUSource& src : s.Sources)
+        for (int d = 0; d < 3; ++d)
         {
-          if (src.Velocity[0] != 0 || src.Velocity[1] != 0 || src.Velocity[2] != 0)
+          if (!impl.SourceFaces[d])
           {
-            moving.push_back(&src);
+            continue; // no source with a velocity
           }
-        }
-        for (int d = 0; d < 3 && !moving.empty(); ++d)
-        {
           p = impl.Program("SOURCE_FACES", d);
           if (!p)
           {
             return fail("SOURCE_FACES");
           }
-          centers.clear();
-          radii.clear();
-          values.clear();
-          for (const GPUSource* src : moving)
+          for (int i = 0; i < count; ++i)
           {
-            for (int a = 0; a < 3; ++a)
-            {
-              centers.push_back(float((src->Center[a] - s.Origin[a]) / g.H[a]));
-            }
-            radii.push_back(float(std::max(src->Radius, 0.5 * g.H[d])));
-            values.push_back(float(src->Velocity[d]));
+            values[i] = float(s.Sources[i].Velocity[d]);
           }
-          const int m = int(moving.size());
-          p->SetUniformi("NumberOfSources", m);
-          p->SetUniform3fv("SourceCenter", m, reinterpret_cast<const float(*)[3]>(centers.data()));
-          p->SetUniform1fv("SourceRadius", m, radii.data());
-          p->SetUniform1fv("SourceValue", m, values.data());
-          if (!impl.Draw(p, { { "Source", impl.U[d]->GetFront() } }, impl.U[d]->GetBack(), error))
+          p->SetUniform1fv("SourceValue", count, values.data());
+          if (!impl.Draw(p, { { "Source", impl.U[d]->GetFront() }, { "SourceIndex", impl.SourceFaces[d] } },
+                impl.U[d]->GetBack(), error))
           {
             return false;
           }

@@ -25,11 +25,8 @@ struct GPUGrid
   bool Open[6]; // x-, x+, y-, y+, z-, z+
 };
 
-struct GPUSource
+struct GPUSource // where it acts: SmokeGPU::SetSourceMasks
 {
-  double Center[3]; // model units
-  double Radius;
-  int Home[3]; // the cell holding the centre
   double Density;
   double Temperature;
   double Velocity[3];
@@ -42,7 +39,6 @@ struct GPUStepSettings
   double Ambient;
   double Buoyancy, SmokeWeight;
   double Up[3]; // normalised, or zero
-  double Origin[3];
   std::vector<GPUSource> Sources;
   int JacobiIterations;
   double JacobiWeight;
@@ -67,6 +63,13 @@ public:
   bool Upload(vtkRenderWindow* window, const GPUGrid& grid, const std::vector<double> u[3],
     const std::vector<double>& density, const std::vector<double>& temperature,
     const std::vector<unsigned char>& solid, std::string& error);
+  /**
+   * Where the sources act: per cell (Cells values) and per face of axis d
+   * (Cells + e_d values), the index + 1 of the source that sets it (the last
+   * one covering it), 0 for none; an empty vector: no source acts there.
+   * Decided on the CPU (the CPU backend's test, in double). After Upload().
+   */
+  bool SetSourceMasks(const std::vector<float>& cells, const std::vector<float> faces[3], std::string& error);
   /** One step; the state stays on the GPU. */
   bool Step(const GPUStepSettings& settings, std::string& error);
   /** The state back to the host (q: the last projection's pressure, p dt). */

@@ -539,6 +539,7 @@ bool vtkPlumeSmokeSolver::AdvanceGPU(double dt)
     }
     this->GPUUpToDate = true;
     this->GPUHoldsState = false;
+    this->GPUSourcesReady = false; // a new upload (grid, solid cells): the masks again
   }
   plume::smoke::GPUStepSettings settings;
   settings.Dt = dt;
@@ -562,22 +563,75 @@ bool vtkPlumeSmokeSolver::AdvanceGPU(double dt)
   for (int a = 0; a < 3; ++a)
   {
     settings.Up[a] = up[a];
-    settings.Origin[a] = this->O[a];
   }
+  std::vector<double> sourceSignature;
   for (const Source& src : this->Sources)
   {
     plume::smoke::GPUSource g;
     for (int a = 0; a < 3; ++a)
     {
-      g.Center[a] = src.Center[a];
       g.Velocity[a] = src.Velocity[a];
-      g.Home[a] =
-        std::min(std::max(int(std::lround((src.Center[a] - this->O[a]) / this->H[a])), 0), this->Cells[a] - 1);
+      sourceSignature.push_back(src.Center[a]);
+      sourceSignature.push_back(src.Velocity[a] != 0 ? 1 : 0);
     }
-    g.Radius = src.Radius;
+    sourceSignature.push_back(src.Radius);
     g.Density = src.Density;
     g.Temperature = src.Temperature;
     settings.Sources.push_back(g);
+  }
+  if (!this->GPUSourcesReady || sourceSignature != this->GPUSourceSignature)
+  {
+    // where each source acts, decided here by the CPU backend's own test (in
+    // double: a cell at exactly the radius is in or out as on the CPU); the
+    // last source covering a texel wins, as ApplySources' order gives
+    const int* n = this->Cells;
+    std::vector<float> cells, faces[3];
+    for (size_t s = 0; s < this->Sources.size(); ++s)
+    {
+      const Source& src = this->Sources[s];
+      if (cells.empty())
+      {
+        cells.assign(this->Solid.size(), 0.0f);
+      }
+      ForRows(n, [&](int j, int k) {
+        for (int i = 0; i < n[0]; ++i)
+        {
+          if (this->SourceCoversCell(src, i, j, k))
+          {
+            cells[i + size_t(n[0]) * (j + size_t(n[1]) * k)] = float(s + 1);
+          }
+        }
+      });
+      if (src.Velocity[0] == 0 && src.Velocity[1] == 0 && src.Velocity[2] == 0)
+      {
+        continue;
+      }
+      for (int d = 0; d < 3; ++d)
+      {
+        int m[3] = { n[0], n[1], n[2] };
+        ++m[d];
+        if (faces[d].empty())
+        {
+          faces[d].assign(size_t(m[0]) * m[1] * m[2], 0.0f);
+        }
+        ForRows(m, [&](int j, int k) {
+          for (int i = 0; i < m[0]; ++i)
+          {
+            if (this->SourceCoversFace(src, d, i, j, k))
+            {
+              faces[d][i + size_t(m[0]) * (j + size_t(m[1]) * k)] = float(s + 1);
+            }
+          }
+        });
+      }
+    }
+    if (!this->GPU->Engine.SetSourceMasks(cells, faces, error))
+    {
+      this->LastError = "smoke solver (GPU backend): " + error;
+      return false;
+    }
+    this->GPUSourceSignature = sourceSignature;
+    this->GPUSourcesReady = true;
   }
   settings.JacobiIterations = this->Pressure->GetMaximumIterations();
   settings.JacobiWeight = this->Pressure->GetJacobiWeight();
@@ -1758,31 +1812,47 @@ void vtkPlumeSmokeSolver::ApplyVorticityConfinement(double dt)
   }
 }
 
-void vtkPlumeSmokeSolver::ApplySources()
+bool vtkPlumeSmokeSolver::SourceCoversCell(const Source& s, int i, int j, int k) const
 {
   const int* n = this->Cells;
   const glm::dvec3 origin(this->O[0], this->O[1], this->O[2]);
   const glm::dvec3 h(this->H[0], this->H[1], this->H[2]);
+  const glm::dvec3 center(s.Center[0], s.Center[1], s.Center[2]);
+  // the cell containing the centre always emits (sources smaller than a cell)
+  glm::ivec3 home;
+  for (int a = 0; a < 3; ++a)
+  {
+    home[a] = std::min(std::max(int(std::lround((center[a] - origin[a]) / h[a])), 0), n[a] - 1);
+  }
+  const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
+  const glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
+  return !this->Solid[c] && (glm::length(x - center) <= s.Radius || glm::ivec3(i, j, k) == home);
+}
+
+bool vtkPlumeSmokeSolver::SourceCoversFace(const Source& s, int d, int i, int j, int k) const
+{
+  const glm::dvec3 origin(this->O[0], this->O[1], this->O[2]);
+  const glm::dvec3 h(this->H[0], this->H[1], this->H[2]);
+  const glm::dvec3 center(s.Center[0], s.Center[1], s.Center[2]);
+  glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
+  x[d] -= 0.5 * h[d];
+  return glm::length(x - center) <= std::max(s.Radius, 0.5 * h[d]) && !this->IsWallFace(d, i, j, k);
+}
+
+void vtkPlumeSmokeSolver::ApplySources()
+{
+  const int* n = this->Cells;
   for (const Source& s : this->Sources)
   {
-    const glm::dvec3 center(s.Center[0], s.Center[1], s.Center[2]);
-    // the cell containing the centre always emits (sources smaller than a cell)
-    glm::ivec3 home;
-    for (int a = 0; a < 3; ++a)
-    {
-      home[a] = std::min(std::max(int(std::lround((center[a] - origin[a]) / h[a])), 0), n[a] - 1);
-    }
     ForRows(n, [&](int j, int k) {
       for (int i = 0; i < n[0]; ++i)
       {
-        const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
-        const glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
-        if (this->Solid[c] || (glm::length(x - center) > s.Radius && glm::ivec3(i, j, k) != home))
+        if (this->SourceCoversCell(s, i, j, k))
         {
-          continue;
+          const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
+          this->Density[c] = s.Density;
+          this->Temperature[c] = s.Temperature;
         }
-        this->Density[c] = s.Density;
-        this->Temperature[c] = s.Temperature;
       }
     });
     if ((s.Velocity[0] == 0 && s.Velocity[1] == 0 && s.Velocity[2] == 0) || this->HasExternalVelocity())
@@ -1796,9 +1866,7 @@ void vtkPlumeSmokeSolver::ApplySources()
       ForRows(m, [&](int j, int k) {
         for (int i = 0; i < m[0]; ++i)
         {
-          glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
-          x[d] -= 0.5 * h[d];
-          if (glm::length(x - center) <= std::max(s.Radius, 0.5 * h[d]) && !this->IsWallFace(d, i, j, k))
+          if (this->SourceCoversFace(s, d, i, j, k))
           {
             this->U[d][i + size_t(m[0]) * (j + size_t(m[1]) * k)] = s.Velocity[d];
           }

@@ -501,6 +501,8 @@ protected:
   int LastGPUPassCount = 0;
   bool GPUHoldsState = false; // the GPU's state is newer than the CPU's (read back before use)
   bool GPUUpToDate = false;   // the GPU's state equals the CPU's (no upload needed)
+  bool GPUSourcesReady = false; // the GPU has the source masks of GPUSourceSignature
+  std::vector<double> GPUSourceSignature;
   /** "" if the GPU backend can run the current set-up, else one line naming what it lacks. */
   std::string GPUUnsupported();
   bool AdvanceGPU(double dt);
@@ -550,6 +552,9 @@ protected:
     double Velocity[3];
   };
   std::vector<Source> Sources;
+  /** Whether source `s` sets cell (i, j, k) / the face (axis d, i, j, k): one test for both backends. */
+  bool SourceCoversCell(const Source& s, int i, int j, int k) const;
+  bool SourceCoversFace(const Source& s, int d, int i, int j, int k) const;
   std::string SourceRateArrayName = "rate";
   std::string SourceTemperatureArrayName = "temperature";
   std::string SourceRadiusArrayName = "radius";

@@ -7,8 +7,8 @@
 //   ADVECT        semi-Lagrangian advection (midpoint back-trace, trilinear),
 //                 then the decay towards Target
 //   BUOYANCY      a face component += Factor * (Buoyancy (T - ambient) - SmokeWeight density)
-//   SOURCE_CELLS  a cell quantity set inside the sources' spheres
-//   SOURCE_FACES  a face component set inside the velocity sources' spheres
+//   SOURCE_CELLS  a cell quantity set where a source acts (SourceIndex, from the CPU)
+//   SOURCE_FACES  a face component set where a velocity source acts
 //   DIVERGENCE    (b, D) per cell: b = -div u, D the Poisson matrix's diagonal
 //                 (0 in solid cells), so that Jacobi reads no obstacle texels
 //   JACOBI        one damped Jacobi iteration of the pressure Poisson equation
@@ -105,13 +105,8 @@ uniform float Ambient;
 //PLUME::IF SOURCE_CELLS SOURCE_FACES
 #define MAX_SOURCES 16
 uniform sampler3D Source;
-uniform int NumberOfSources;
-uniform vec3 SourceCenter[MAX_SOURCES]; // cell-index space
-uniform float SourceRadius[MAX_SOURCES]; // model units (faces: already max(R, h/2))
+uniform sampler3D SourceIndex; // covering source + 1 per texel (0: none), decided on the CPU
 uniform float SourceValue[MAX_SOURCES];
-//PLUME::ENDIF
-//PLUME::IF SOURCE_CELLS
-uniform ivec3 SourceHome[MAX_SOURCES];  // the cell holding the centre: it always emits
 //PLUME::ENDIF
 
 //PLUME::IF DIVERGENCE CELL_VELOCITY
@@ -181,33 +176,12 @@ void main()
   }
   gl_FragData[0] = vec4(u, 0.0, 0.0, 0.0);
 //PLUME::ENDIF
-//PLUME::IF SOURCE_CELLS
+//PLUME::IF SOURCE_CELLS SOURCE_FACES
   float value = texelFetch(Source, p, 0).r;
-  if (!IsSolid(p))
+  int source = int(texelFetch(SourceIndex, p, 0).r + 0.5);
+  if (source > 0)
   {
-    for (int s = 0; s < NumberOfSources; ++s)
-    {
-      if (length((vec3(p) - SourceCenter[s]) * H) <= SourceRadius[s] || p == SourceHome[s])
-      {
-        value = SourceValue[s]; // later sources win, as on the CPU
-      }
-    }
-  }
-  gl_FragData[0] = vec4(value, 0.0, 0.0, 0.0);
-//PLUME::ENDIF
-//PLUME::IF SOURCE_FACES
-  float value = texelFetch(Source, p, 0).r;
-  if (!IsWallFace(Axis, p))
-  {
-    vec3 x = vec3(p);
-    x[Axis] -= 0.5;
-    for (int s = 0; s < NumberOfSources; ++s)
-    {
-      if (length((x - SourceCenter[s]) * H) <= SourceRadius[s])
-      {
-        value = SourceValue[s];
-      }
-    }
+    value = SourceValue[source - 1];
   }
   gl_FragData[0] = vec4(value, 0.0, 0.0, 0.0);
 //PLUME::ENDIF
