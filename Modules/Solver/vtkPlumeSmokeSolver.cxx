@@ -3,7 +3,10 @@
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumePressureSolver.h"
 
+#include "plumeSmokeGPU.h"
 #include "vtkPlumeQuietExecutive.h"
+#include "vtkPlumeTextureHandOver.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -200,6 +203,15 @@ const vtkPlumeParameterTable& vtkPlumeSmokeSolver::GetParameterTable()
       .Panel("Advection")
       .Doc("How density, temperature and velocity move with the flow.")
       .Bind(&T::SetAdvectionScheme, &T::GetAdvectionScheme);
+    t.Choice("backend", "Backend", "cpu")
+      .Choice("cpu", BACKEND_CPU, "vtkSMPTools threads; every feature")
+      .Choice("gpu", BACKEND_GPU,
+        "the seed's fragment-shader passes on float 3D textures (layered rendering), equal to the CPU's Jacobi "
+        "path to float rounding; Jacobi for exactly pressure_max_iterations iterations; no MacCormack, "
+        "confinement, conserve_mass, moving obstacles, given velocity or source points")
+      .Panel("Advection")
+      .Doc("Where the step runs.")
+      .Bind(&T::SetBackend, &T::GetBackend);
     t.Real("buoyancy", "Buoyancy", 1.0)
       .Between(-1e30, 1e30)
       .Units("model units / s² per degree")
@@ -335,7 +347,328 @@ vtkPlumeSmokeSolver::vtkPlumeSmokeSolver()
   GetParameterTable().ApplyDefaults(this);
 }
 
-vtkPlumeSmokeSolver::~vtkPlumeSmokeSolver() = default;
+//------------------------------------------------------------------------------
+class vtkPlumeSmokeSolver::GPUBackend
+{
+public:
+  plume::smoke::SmokeGPU Engine;
+  vtkSmartPointer<vtkRenderWindow> Window; // the user's, or none
+  vtkSmartPointer<vtkPlumeTextureHandOver> DensityHandOver;
+  vtkSmartPointer<vtkPlumeTextureHandOver> VelocityHandOver;
+};
+
+vtkPlumeSmokeSolver::~vtkPlumeSmokeSolver()
+{
+  delete this->GPU;
+}
+
+void vtkPlumeSmokeSolver::SetRenderWindow(vtkRenderWindow* window)
+{
+  if (!this->GPU)
+  {
+    this->GPU = new GPUBackend;
+  }
+  if (this->GPU->Window != window)
+  {
+    this->SyncFromGPU(); // the state moves to the new context through the CPU
+    this->RevokeHandOvers();
+    this->GPU->Engine.Release();
+    this->InvalidateGPUState();
+    this->GPU->Window = window;
+    this->Modified();
+  }
+}
+
+vtkRenderWindow* vtkPlumeSmokeSolver::GetRenderWindow()
+{
+  return this->GPU ? this->GPU->Window.Get() : nullptr;
+}
+
+void vtkPlumeSmokeSolver::ReleaseGraphicsResources()
+{
+  if (!this->GPU)
+  {
+    return;
+  }
+  this->SyncFromGPU();
+  this->RevokeHandOvers();
+  this->GPU->Engine.Release();
+  this->InvalidateGPUState();
+}
+
+void vtkPlumeSmokeSolver::RevokeHandOvers()
+{
+  if (!this->GPU)
+  {
+    return;
+  }
+  for (auto* handOver : { &this->GPU->DensityHandOver, &this->GPU->VelocityHandOver })
+  {
+    if (*handOver)
+    {
+      (*handOver)->Revoke();
+      *handOver = nullptr;
+    }
+  }
+}
+
+void vtkPlumeSmokeSolver::InvalidateGPUState()
+{
+  this->GPUHoldsState = false;
+  this->GPUUpToDate = false;
+  this->RevokeHandOvers();
+}
+
+bool vtkPlumeSmokeSolver::SyncFromGPU()
+{
+  if (!this->GPUHoldsState || !this->GPU)
+  {
+    return true;
+  }
+  std::string error;
+  if (!this->GPU->Engine.Download(this->U, this->Density, this->Temperature, this->Q, error))
+  {
+    this->LastError = "smoke solver (GPU backend): " + error;
+    this->InvalidateGPUState();
+    return false;
+  }
+  this->GPUHoldsState = false;
+  if (std::none_of(this->Open, this->Open + 6, [](bool o) { return o; }))
+  {
+    // the CPU solve's last act in a closed box: the pressure's mean over the
+    // cells of the system (fluid cells with a fluid neighbour) is zero
+    const int* n = this->Cells;
+    auto inSystem = [&](int i, int j, int k) {
+      const int idx[3] = { i, j, k };
+      const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
+      if (this->Solid[c])
+      {
+        return false;
+      }
+      const size_t stride[3] = { 1, size_t(n[0]), size_t(n[0]) * n[1] };
+      for (int d = 0; d < 3; ++d)
+      {
+        if ((idx[d] > 0 && !this->Solid[c - stride[d]]) || (idx[d] < n[d] - 1 && !this->Solid[c + stride[d]]))
+        {
+          return true;
+        }
+      }
+      return false;
+    };
+    double sum = 0;
+    size_t count = 0;
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i)
+          if (inSystem(i, j, k))
+          {
+            sum += this->Q[i + size_t(n[0]) * (j + size_t(n[1]) * k)];
+            ++count;
+          }
+    const double mean = count ? sum / double(count) : 0.0;
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i)
+        {
+          double& q = this->Q[i + size_t(n[0]) * (j + size_t(n[1]) * k)];
+          q = inSystem(i, j, k) ? q - mean : 0.0;
+        }
+  }
+  return true;
+}
+
+std::string vtkPlumeSmokeSolver::GPUUnsupported()
+{
+  if (this->AdvectionScheme != SEMI_LAGRANGIAN)
+  {
+    return "advection 'maccormack'";
+  }
+  if (this->VorticityConfinement > 0)
+  {
+    return "vorticity_confinement " + Text(this->VorticityConfinement);
+  }
+  if (this->ConserveMass && std::none_of(this->Open, this->Open + 6, [](bool o) { return o; }))
+  {
+    return "conserve_mass";
+  }
+  if (this->HasMovingObstacles())
+  {
+    return "moving obstacles";
+  }
+  if (this->HasExternalVelocity())
+  {
+    return "a velocity on input port 1";
+  }
+  if (this->GetNumberOfInputConnections(2) > 0)
+  {
+    return "source points on input port 2";
+  }
+  if (int(this->Sources.size()) > plume::smoke::SmokeGPU::MaxSources)
+  {
+    return std::to_string(this->Sources.size()) + " sources (at most " +
+      std::to_string(plume::smoke::SmokeGPU::MaxSources) + ")";
+  }
+  return "";
+}
+
+bool vtkPlumeSmokeSolver::AdvanceGPU(double dt)
+{
+  const std::string unsupported = this->GPUUnsupported();
+  if (!unsupported.empty())
+  {
+    this->LastError = "smoke solver: the GPU backend does not support " + unsupported + " (use backend 'cpu')";
+    return false;
+  }
+  if (!this->GPU)
+  {
+    this->GPU = new GPUBackend;
+  }
+  this->RevokeHandOvers(); // the textures are about to be overwritten
+  std::string error;
+  if (!this->GPUUpToDate)
+  {
+    plume::smoke::GPUGrid grid;
+    std::copy(this->Cells, this->Cells + 3, grid.Cells);
+    std::copy(this->H, this->H + 3, grid.H);
+    std::copy(this->Open, this->Open + 6, grid.Open);
+    if (!this->GPU->Engine.Upload(
+          this->GPU->Window, grid, this->U, this->Density, this->Temperature, this->Solid, error))
+    {
+      this->LastError = "smoke solver (GPU backend): " + error;
+      return false;
+    }
+    this->GPUUpToDate = true;
+    this->GPUHoldsState = false;
+    this->GPUSourcesReady = false; // a new upload (grid, solid cells): the masks again
+  }
+  plume::smoke::GPUStepSettings settings;
+  settings.Dt = dt;
+  settings.DensityDecay = std::exp(-this->DensityDissipation * dt);
+  settings.TemperatureDecay = std::exp(-this->TemperatureDissipation * dt);
+  settings.VelocityDecay = std::exp(-this->VelocityDissipation * dt);
+  settings.Ambient = this->AmbientTemperature;
+  settings.Buoyancy = this->Buoyancy;
+  settings.SmokeWeight = this->SmokeWeight;
+  // the CPU's ApplyBuoyancy: along Up, normalised; a 2D grid's up lies in x-y (+y if none)
+  glm::dvec3 up(this->Up[0], this->Up[1], this->Up[2]);
+  if (this->Cells[2] == 1)
+  {
+    up.z = 0;
+    if (glm::length(up) == 0)
+    {
+      up = glm::dvec3(0, 1, 0);
+    }
+  }
+  up = glm::length(up) > 0 ? glm::normalize(up) : glm::dvec3(0.0);
+  for (int a = 0; a < 3; ++a)
+  {
+    settings.Up[a] = up[a];
+  }
+  std::vector<double> sourceSignature;
+  for (const Source& src : this->Sources)
+  {
+    plume::smoke::GPUSource g;
+    for (int a = 0; a < 3; ++a)
+    {
+      g.Velocity[a] = src.Velocity[a];
+      sourceSignature.push_back(src.Center[a]);
+      sourceSignature.push_back(src.Velocity[a] != 0 ? 1 : 0);
+    }
+    sourceSignature.push_back(src.Radius);
+    g.Density = src.Density;
+    g.Temperature = src.Temperature;
+    settings.Sources.push_back(g);
+  }
+  if (!this->GPUSourcesReady || sourceSignature != this->GPUSourceSignature)
+  {
+    // where each source acts, decided here by the CPU backend's own test (in
+    // double: a cell at exactly the radius is in or out as on the CPU); the
+    // last source covering a texel wins, as ApplySources' order gives
+    const int* n = this->Cells;
+    std::vector<float> cells, faces[3];
+    for (size_t s = 0; s < this->Sources.size(); ++s)
+    {
+      const Source& src = this->Sources[s];
+      if (cells.empty())
+      {
+        cells.assign(this->Solid.size(), 0.0f);
+      }
+      ForRows(n, [&](int j, int k) {
+        for (int i = 0; i < n[0]; ++i)
+        {
+          if (this->SourceCoversCell(src, i, j, k))
+          {
+            cells[i + size_t(n[0]) * (j + size_t(n[1]) * k)] = float(s + 1);
+          }
+        }
+      });
+      if (src.Velocity[0] == 0 && src.Velocity[1] == 0 && src.Velocity[2] == 0)
+      {
+        continue;
+      }
+      for (int d = 0; d < 3; ++d)
+      {
+        int m[3] = { n[0], n[1], n[2] };
+        ++m[d];
+        if (faces[d].empty())
+        {
+          faces[d].assign(size_t(m[0]) * m[1] * m[2], 0.0f);
+        }
+        ForRows(m, [&](int j, int k) {
+          for (int i = 0; i < m[0]; ++i)
+          {
+            if (this->SourceCoversFace(src, d, i, j, k))
+            {
+              faces[d][i + size_t(m[0]) * (j + size_t(m[1]) * k)] = float(s + 1);
+            }
+          }
+        });
+      }
+    }
+    if (!this->GPU->Engine.SetSourceMasks(cells, faces, error))
+    {
+      this->LastError = "smoke solver (GPU backend): " + error;
+      return false;
+    }
+    this->GPUSourceSignature = sourceSignature;
+    this->GPUSourcesReady = true;
+  }
+  settings.JacobiIterations = this->Pressure->GetMaximumIterations();
+  settings.JacobiWeight = this->Pressure->GetJacobiWeight();
+  if (!this->GPU->Engine.Step(settings, error))
+  {
+    this->LastError = "smoke solver (GPU backend): " + error;
+    this->InvalidateGPUState();
+    return false;
+  }
+  this->LastGPUPassCount = this->GPU->Engine.GetLastPassCount();
+  this->GPUHoldsState = true;
+  this->LastProjectionDt = dt;
+  this->SimulationTime += dt;
+  ++this->CurrentStep;
+  ++this->StepsTaken;
+  this->Modified();
+  return true;
+}
+
+void vtkPlumeSmokeSolver::FinishGPU()
+{
+  if (this->GPU)
+  {
+    this->GPU->Engine.Finish();
+  }
+}
+
+bool vtkPlumeSmokeSolver::RunTrivialGPUPasses(int passes)
+{
+  std::string error;
+  if (!this->GPU || !this->GPUUpToDate || !this->GPU->Engine.TrivialPasses(passes, error))
+  {
+    this->LastError = "smoke solver (GPU backend): " + (error.empty() ? std::string("no GPU state (step first)") : error);
+    return false;
+  }
+  return true;
+}
 
 int vtkPlumeSmokeSolver::FillInputPortInformation(int port, vtkInformation* info)
 {
@@ -1077,6 +1410,7 @@ void vtkPlumeSmokeSolver::Reset()
   std::fill(this->Density.begin(), this->Density.end(), 0.0);
   std::fill(this->Temperature.begin(), this->Temperature.end(), this->AmbientTemperature);
   std::fill(this->Q.begin(), this->Q.end(), 0.0);
+  this->InvalidateGPUState();
   this->LastProjectionDt = 0;
   this->SimulationTime = 0;
   this->CurrentStep = 0;
@@ -1091,18 +1425,30 @@ bool vtkPlumeSmokeSolver::Initialize()
 
 double* vtkPlumeSmokeSolver::GetFaceVelocityData(int axis)
 {
+  // writable: the caller may change the state, which the GPU then uploads again
+  this->SyncFromGPU();
+  this->InvalidateGPUState();
   return axis >= 0 && axis < 3 && !this->U[axis].empty() ? this->U[axis].data() : nullptr;
 }
 double* vtkPlumeSmokeSolver::GetDensityData()
 {
+  // writable: the caller may change the state, which the GPU then uploads again
+  this->SyncFromGPU();
+  this->InvalidateGPUState();
   return this->Density.empty() ? nullptr : this->Density.data();
 }
 double* vtkPlumeSmokeSolver::GetTemperatureData()
 {
+  // writable: the caller may change the state, which the GPU then uploads again
+  this->SyncFromGPU();
+  this->InvalidateGPUState();
   return this->Temperature.empty() ? nullptr : this->Temperature.data();
 }
 double* vtkPlumeSmokeSolver::GetPressureData()
 {
+  // writable: the caller may change the state, which the GPU then uploads again
+  this->SyncFromGPU();
+  this->InvalidateGPUState();
   return this->Q.empty() ? nullptr : this->Q.data();
 }
 const unsigned char* vtkPlumeSmokeSolver::GetSolidData()
@@ -1162,6 +1508,11 @@ bool vtkPlumeSmokeSolver::Project()
   {
     return false;
   }
+  if (!this->SyncFromGPU())
+  {
+    return false;
+  }
+  this->InvalidateGPUState();
   const int* n = this->Cells;
   const size_t count = this->Solid.size();
   std::vector<double> b(count);
@@ -1461,31 +1812,47 @@ void vtkPlumeSmokeSolver::ApplyVorticityConfinement(double dt)
   }
 }
 
-void vtkPlumeSmokeSolver::ApplySources()
+bool vtkPlumeSmokeSolver::SourceCoversCell(const Source& s, int i, int j, int k) const
 {
   const int* n = this->Cells;
   const glm::dvec3 origin(this->O[0], this->O[1], this->O[2]);
   const glm::dvec3 h(this->H[0], this->H[1], this->H[2]);
+  const glm::dvec3 center(s.Center[0], s.Center[1], s.Center[2]);
+  // the cell containing the centre always emits (sources smaller than a cell)
+  glm::ivec3 home;
+  for (int a = 0; a < 3; ++a)
+  {
+    home[a] = std::min(std::max(int(std::lround((center[a] - origin[a]) / h[a])), 0), n[a] - 1);
+  }
+  const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
+  const glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
+  return !this->Solid[c] && (glm::length(x - center) <= s.Radius || glm::ivec3(i, j, k) == home);
+}
+
+bool vtkPlumeSmokeSolver::SourceCoversFace(const Source& s, int d, int i, int j, int k) const
+{
+  const glm::dvec3 origin(this->O[0], this->O[1], this->O[2]);
+  const glm::dvec3 h(this->H[0], this->H[1], this->H[2]);
+  const glm::dvec3 center(s.Center[0], s.Center[1], s.Center[2]);
+  glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
+  x[d] -= 0.5 * h[d];
+  return glm::length(x - center) <= std::max(s.Radius, 0.5 * h[d]) && !this->IsWallFace(d, i, j, k);
+}
+
+void vtkPlumeSmokeSolver::ApplySources()
+{
+  const int* n = this->Cells;
   for (const Source& s : this->Sources)
   {
-    const glm::dvec3 center(s.Center[0], s.Center[1], s.Center[2]);
-    // the cell containing the centre always emits (sources smaller than a cell)
-    glm::ivec3 home;
-    for (int a = 0; a < 3; ++a)
-    {
-      home[a] = std::min(std::max(int(std::lround((center[a] - origin[a]) / h[a])), 0), n[a] - 1);
-    }
     ForRows(n, [&](int j, int k) {
       for (int i = 0; i < n[0]; ++i)
       {
-        const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
-        const glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
-        if (this->Solid[c] || (glm::length(x - center) > s.Radius && glm::ivec3(i, j, k) != home))
+        if (this->SourceCoversCell(s, i, j, k))
         {
-          continue;
+          const size_t c = i + size_t(n[0]) * (j + size_t(n[1]) * k);
+          this->Density[c] = s.Density;
+          this->Temperature[c] = s.Temperature;
         }
-        this->Density[c] = s.Density;
-        this->Temperature[c] = s.Temperature;
       }
     });
     if ((s.Velocity[0] == 0 && s.Velocity[1] == 0 && s.Velocity[2] == 0) || this->HasExternalVelocity())
@@ -1499,9 +1866,7 @@ void vtkPlumeSmokeSolver::ApplySources()
       ForRows(m, [&](int j, int k) {
         for (int i = 0; i < m[0]; ++i)
         {
-          glm::dvec3 x = origin + glm::dvec3(i, j, k) * h;
-          x[d] -= 0.5 * h[d];
-          if (glm::length(x - center) <= std::max(s.Radius, 0.5 * h[d]) && !this->IsWallFace(d, i, j, k))
+          if (this->SourceCoversFace(s, d, i, j, k))
           {
             this->U[d][i + size_t(m[0]) * (j + size_t(m[1]) * k)] = s.Velocity[d];
           }
@@ -1662,7 +2027,7 @@ const char CheckpointMagic[16] = "PLUMESMOKE1";
 
 bool vtkPlumeSmokeSolver::WriteCheckpoint(const char* path)
 {
-  if (!this->EnsureState())
+  if (!this->EnsureState() || !this->SyncFromGPU())
   {
     return false;
   }
@@ -1700,10 +2065,11 @@ bool vtkPlumeSmokeSolver::WriteCheckpoint(const char* path)
 
 bool vtkPlumeSmokeSolver::ReadCheckpoint(const char* path)
 {
-  if (!this->EnsureState())
+  if (!this->EnsureState() || !this->SyncFromGPU())
   {
     return false;
   }
+  this->InvalidateGPUState(); // the state read replaces the GPU's
   const std::string name = path ? path : "";
   std::ifstream in(name, std::ios::binary);
   if (!in)
@@ -1805,6 +2171,16 @@ bool vtkPlumeSmokeSolver::Advance(double dt)
     this->LastError = "smoke solver: a step must be positive and finite, got " + Text(dt);
     return false;
   }
+  if (this->Backend == BACKEND_GPU)
+  {
+    return this->AdvanceGPU(dt);
+  }
+  this->LastGPUPassCount = 0;
+  if (!this->SyncFromGPU())
+  {
+    return false;
+  }
+  this->InvalidateGPUState(); // the CPU moves on
   const bool series = this->HasExternalVelocity() && this->IsVelocityTimeSeries();
   if (series && !this->SetVelocityAtTime(this->SimulationTime + 0.5 * dt))
   {
@@ -2040,6 +2416,10 @@ int vtkPlumeSmokeSolver::RequestData(
 
 void vtkPlumeSmokeSolver::FillOutput(vtkImageData* output)
 {
+  if (!this->SyncFromGPU())
+  {
+    vtkErrorMacro(<< this->LastError);
+  }
   const int* n = this->Cells;
   output->SetExtent(0, n[0] - 1, 0, n[1] - 1, 0, n[2] - 1);
   output->SetOrigin(this->O);
@@ -2081,6 +2461,35 @@ void vtkPlumeSmokeSolver::FillOutput(vtkImageData* output)
       obstacle->SetValue(vtkIdType(c), this->Solid[c]);
     }
   });
+  // GPU backend: the velocity is the GPU's cell-centred texture read back
+  // (the same bits a hand-over gives the glyph mapper), and with GPUHandOver
+  // the density and velocity textures travel with the arrays
+  const bool gpu = this->Backend == BACKEND_GPU && this->GPUUpToDate && this->GPU;
+  if (gpu)
+  {
+    this->RevokeHandOvers();
+    std::vector<float> rgba(4 * size_t(count));
+    std::string error;
+    if (this->GPU->Engine.CellVelocity(rgba.data(), error))
+    {
+      for (vtkIdType c = 0; c < count; ++c)
+      {
+        std::copy(&rgba[4 * c], &rgba[4 * c] + 3, v + 3 * c);
+      }
+      auto* window = this->GPU->Engine.GetWindow();
+      if (this->GPUHandOver && this->GPU->Window && static_cast<vtkRenderWindow*>(window) == this->GPU->Window.Get())
+      {
+        this->GPU->DensityHandOver =
+          vtkPlumeTextureHandOver::Attach(density, this->GPU->Engine.GetDensityTexture(), window);
+        this->GPU->VelocityHandOver =
+          vtkPlumeTextureHandOver::Attach(velocity, this->GPU->Engine.GetCellVelocityTexture(), window);
+      }
+    }
+    else
+    {
+      vtkErrorMacro(<< "smoke solver (GPU backend): " << error);
+    }
+  }
   vtkPointData* pd = output->GetPointData();
   pd->Initialize();
   pd->SetScalars(density);
@@ -2103,4 +2512,6 @@ void vtkPlumeSmokeSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OpenFaces: " << this->OpenFaces << "\n";
   os << indent << "SimulationTime: " << this->SimulationTime << "\n";
   os << indent << "CurrentStep: " << this->CurrentStep << "\n";
+  os << indent << "Backend: " << this->Backend << "\n";
+  os << indent << "GPUHandOver: " << this->GPUHandOver << "\n";
 }

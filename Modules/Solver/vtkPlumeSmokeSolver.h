@@ -54,6 +54,11 @@
  * the output is the current state. Changing the grid, the open faces or the
  * obstacles restarts the simulation; other parameters apply from the next step.
  *
+ * Backends: the CPU (vtkSMPTools threads; every feature) or, with Backend
+ * GPU, the seed's fragment-shader passes (see SetBackend): the state then
+ * lives in float 3D textures and is read back only when the output, a
+ * checkpoint or the state accessors need it.
+ *
  * Output point arrays: velocity (3 components), density, temperature,
  * pressure, divergence (of the output velocity: the projection's residual),
  * obstacle (1 = solid). Scalars: density. Vectors: velocity.
@@ -77,6 +82,8 @@ class vtkImageData;
 class vtkPlumeParameterTable;
 class vtkPlumePressureSolver;
 class vtkPolyData;
+class vtkPlumeTextureHandOver;
+class vtkRenderWindow;
 
 class PLUMESOLVER_EXPORT vtkPlumeSmokeSolver : public vtkImageAlgorithm
 {
@@ -266,6 +273,70 @@ public:
   double GetPressureJacobiWeight();
   ///@}
 
+  enum Backends
+  {
+    BACKEND_CPU = 0,
+    BACKEND_GPU = 1
+  };
+
+  ///@{
+  /**
+   * BACKEND_CPU (default) or BACKEND_GPU: the seed's step as fragment-shader
+   * passes over float 3D textures (one layered draw per pass fills a whole 3D
+   * texture: a geometry shader picks gl_Layer; ping-pong textures as the
+   * seed's slabs): semi-Lagrangian advection of density, temperature and
+   * velocity, buoyancy, the spherical sources (AddSource, at most 16),
+   * divergence, damped Jacobi iterations (JacobiWeight) from q = 0 and the
+   * gradient subtraction, on the same MAC grid with the same walls, open
+   * sides and static obstacles as the CPU backend's Jacobi path, which it
+   * equals to float rounding (TestSmokeSolverGPU). The Jacobi solve runs
+   * exactly PressureMaximumIterations iterations (PressureTolerance is not
+   * checked: a residual needs a reduction over the grid; in a closed box the
+   * pressure's mean over the fluid is removed when it is read back, as the
+   * CPU solve does). Whatever PressureMethod says, the GPU runs Jacobi.
+   * Not on the GPU (a step is refused with an error naming the setting):
+   * MacCormack advection, vorticity confinement, ConserveMass, moving
+   * obstacles, a velocity on input port 1, source points on port 2. Needs an
+   * OpenGL 3.2 context: RenderWindow's, else an offscreen window of its own.
+   */
+  vtkSetClampMacro(Backend, int, BACKEND_CPU, BACKEND_GPU);
+  vtkGetMacro(Backend, int);
+  ///@}
+
+  ///@{
+  /** GL context of the GPU backend (a vtkOpenGLRenderWindow). Default none: an offscreen window of its own. */
+  void SetRenderWindow(vtkRenderWindow* window);
+  vtkRenderWindow* GetRenderWindow();
+  ///@}
+
+  ///@{
+  /**
+   * GPU backend with RenderWindow set (default false): the output's density
+   * and velocity arrays carry a vtkPlumeTextureHandOver of the solver's own
+   * textures (density: the state's R32F texture; velocity: an RGBA32F texture
+   * of the cell-centred velocity, a = 1, computed on the GPU and the one the
+   * output array is read back from), so vtkPlumeVolumeMapper and
+   * vtkPlumeVelocityGlyphMapper rendering in that window bind them instead of
+   * uploading the arrays. The next step revokes them (the textures are
+   * overwritten); the arrays stay complete for every other consumer.
+   */
+  vtkSetMacro(GPUHandOver, bool);
+  vtkGetMacro(GPUHandOver, bool);
+  vtkBooleanMacro(GPUHandOver, bool);
+  ///@}
+
+  /** Layered draws (passes) of the last GPU step (0 after a CPU step). */
+  vtkGetMacro(LastGPUPassCount, int);
+
+  /** GPU backend: waits until the queued passes are done (for timing). */
+  void FinishGPU();
+
+  /** GPU backend: runs `passes` passes that only write a constant into a cell-sized texture (the floor of a pass). */
+  bool RunTrivialGPUPasses(int passes);
+
+  /** Frees the GPU backend's textures and programs (the state is read back first if only the GPU holds it). */
+  void ReleaseGraphicsResources();
+
   /** The pressure solver (its last iteration count and residual). */
   vtkPlumePressureSolver* GetPressureSolver();
 
@@ -422,6 +493,25 @@ protected:
   bool EnsureState();
   void FillOutput(vtkImageData* output);
 
+  // GPU backend
+  class GPUBackend;
+  GPUBackend* GPU = nullptr;
+  int Backend = BACKEND_CPU;
+  bool GPUHandOver = false;
+  int LastGPUPassCount = 0;
+  bool GPUHoldsState = false; // the GPU's state is newer than the CPU's (read back before use)
+  bool GPUUpToDate = false;   // the GPU's state equals the CPU's (no upload needed)
+  bool GPUSourcesReady = false; // the GPU has the source masks of GPUSourceSignature
+  std::vector<double> GPUSourceSignature;
+  /** "" if the GPU backend can run the current set-up, else one line naming what it lacks. */
+  std::string GPUUnsupported();
+  bool AdvanceGPU(double dt);
+  /** Reads the GPU's state back into the CPU state if the GPU holds a newer one. */
+  bool SyncFromGPU();
+  /** The CPU state was changed (reset, checkpoint, accessors): the GPU must upload it again. */
+  void InvalidateGPUState();
+  void RevokeHandOvers();
+
   /**
    * Advects `source` (cells if axis < 0, else the faces normal to axis) by
    * the current velocity over dt into `result`, then decays it towards
@@ -462,6 +552,9 @@ protected:
     double Velocity[3];
   };
   std::vector<Source> Sources;
+  /** Whether source `s` sets cell (i, j, k) / the face (axis d, i, j, k): one test for both backends. */
+  bool SourceCoversCell(const Source& s, int i, int j, int k) const;
+  bool SourceCoversFace(const Source& s, int d, int i, int j, int k) const;
   std::string SourceRateArrayName = "rate";
   std::string SourceTemperatureArrayName = "temperature";
   std::string SourceRadiusArrayName = "radius";

@@ -17,12 +17,20 @@
 //    projection) of a buoyant plume around an obstacle, ours with PCG to
 //    1e-6, peer with the seed's 40 Jacobi iterations (and the divergence each
 //    leaves, relative to the divergence before the projection).
+//  - GPU step (64³, 128³; 16³, 32³ quick): the same plume on the GPU backend
+//    (fragment-shader passes on llvmpipe here: the same 2 CPU cores), 40
+//    damped Jacobi iterations, against the CPU backend with exactly the same
+//    settings (40 damped Jacobi iterations: the work the GPU does) in another
+//    process. Also the floor of this GL: the time of one trivial full-grid
+//    pass (writes a constant into a cell-sized float 3D texture), times the
+//    step's pass count; and the read-back of the state (6 fields).
 #include "plumeBenchmarks.h"
 
 #include "vtkPlumePressureSolver.h"
 #include "vtkPlumeSmokeSolver.h"
 
 #include "vtkNew.h"
+#include "vtkRenderWindow.h"
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/Sparse>
@@ -225,9 +233,17 @@ nlohmann::json RunPressure(const std::string& method, int n, int nz, bool quick)
   return result;
 }
 
-nlohmann::json RunStep(const std::string& method, int n, int nz)
+nlohmann::json RunStep(const Context& context, const std::string& method, int n, int nz)
 {
   vtkNew<vtkPlumeSmokeSolver> solver;
+  vtkSmartPointer<vtkRenderWindow> window;
+  const bool gpu = method == "gpu";
+  if (gpu)
+  {
+    window = context.MakeWindow(8, 8);
+    solver->SetBackend(vtkPlumeSmokeSolver::BACKEND_GPU);
+    solver->SetRenderWindow(window);
+  }
   solver->SetDimensions(n, n, nz);
   const double h = 1.0 / n;
   solver->SetSpacing(h, h, h);
@@ -244,7 +260,16 @@ nlohmann::json RunStep(const std::string& method, int n, int nz)
     solver->SetPressureTolerance(0);
     solver->SetPressureMaximumIterations(40);
   }
+  if (gpu || method == "cpujacobi")
+  {
+    // the GPU's pressure solve: exactly 40 damped Jacobi iterations
+    solver->SetPressureMethod(vtkPlumePressureSolver::JACOBI);
+    solver->SetPressureJacobiWeight(0.8);
+    solver->SetPressureTolerance(0);
+    solver->SetPressureMaximumIterations(40);
+  }
   std::vector<double> times, cpu;
+  double first = 0;
   const int steps = double(n) * n * nz >= 1e7 ? 4 : 6;
   for (int s = 0; s < steps; ++s)
   {
@@ -253,11 +278,38 @@ nlohmann::json RunStep(const std::string& method, int n, int nz)
     {
       return { { "error_message", solver->GetLastError() } };
     }
+    if (gpu)
+    {
+      solver->FinishGPU(); // the passes are queued: wait for them
+    }
+    if (s == 0)
+    {
+      first = Now() - t0; // GPU: with the upload and the shader builds
+    }
     if (s >= 2) // warm-up: the plume has started moving, hypre is set up
     {
       times.push_back(Now() - t0);
       cpu.push_back(CPU() - c0);
     }
+  }
+  if (gpu)
+  {
+    nlohmann::json result = { { "time_s", Median(times) }, { "cpu_s", Median(cpu) }, { "first_s", first },
+      { "passes", solver->GetLastGPUPassCount() } };
+    const int trivial = 20;
+    solver->RunTrivialGPUPasses(1); // its program is built here, not in the timing
+    const double t0 = Now();
+    if (!solver->RunTrivialGPUPasses(trivial))
+    {
+      return { { "error_message", solver->GetLastError() } };
+    }
+    result["floor_pass_s"] = (Now() - t0) / trivial;
+    const double t1 = Now();
+    solver->GetDensityData(); // reads the 6 fields back
+    result["readback_s"] = Now() - t1;
+    result["peak_rss_mb"] = PeakRSSMB();
+    solver->ReleaseGraphicsResources();
+    return result;
   }
   return { { "time_s", Median(times) }, { "cpu_s", Median(cpu) }, { "iterations", solver->GetPressureSolver()->GetLastIterations() },
     { "residual", solver->GetPressureSolver()->GetLastRelativeResidual() }, { "peak_rss_mb", PeakRSSMB() } };
@@ -271,7 +323,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   const int n = std::stoi(job.substr(b + 1));
   const bool flat = kind.size() > 2 && kind.compare(kind.size() - 2, 2, "2d") == 0;
   return kind.rfind("pressure", 0) == 0 ? RunPressure(method, n, flat ? 1 : n, context.Quick)
-                                        : RunStep(method, n, flat ? 1 : n);
+                                        : RunStep(context, method, n, flat ? 1 : n);
 }
 
 std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& results, bool quick)
@@ -367,6 +419,22 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
         { "peer_error", (*seedStep)["residual"] }, { "peak_rss_mb", (*step)["peak_rss_mb"] },
         { "peer_peak_rss_mb", (*seedStep)["peak_rss_mb"] } });
     }
+    const nlohmann::json* gpuStep = get(job(stepKind, "gpu"));
+    const nlohmann::json* cpuJacobi = get(job(stepKind, "cpujacobi"));
+    if (gpuStep && cpuJacobi)
+    {
+      const double o = (*gpuStep)["time_s"].get<double>(), p = (*cpuJacobi)["time_s"].get<double>();
+      const double floorPass = (*gpuStep)["floor_pass_s"].get<double>();
+      const int passes = (*gpuStep)["passes"].get<int>();
+      lines.push_back({ { "bench", "solver" },
+        { "case", "step " + grid + " plume + sphere, GPU backend (llvmpipe) vs CPU backend, both 40 damped Jacobi iterations" },
+        { "ours_s", o }, { "peer", "CPU backend, same settings (2 threads)" }, { "peer_s", p }, { "ratio", p / o },
+        { "ours_cpu_s", (*gpuStep)["cpu_s"] }, { "peer_cpu_s", (*cpuJacobi)["cpu_s"] },
+        { "first_step_s", (*gpuStep)["first_s"] }, { "passes_per_step", passes },
+        { "floor_pass_s", floorPass }, { "floor_step_s", floorPass * passes },
+        { "readback_s", (*gpuStep)["readback_s"] }, { "peak_rss_mb", (*gpuStep)["peak_rss_mb"] },
+        { "peer_peak_rss_mb", (*cpuJacobi)["peak_rss_mb"] } });
+    }
   }
   return lines;
 }
@@ -388,6 +456,14 @@ void RegisterSolver(std::map<std::string, Benchmark>& registry)
         {
           jobs.push_back(job + std::to_string(n));
         }
+      }
+    }
+    // the GPU backend on llvmpipe: 64³ and 128³ (the sizes; 256³ would take minutes a step)
+    for (int n : quick ? std::vector<int>{ 16, 32 } : std::vector<int>{ 64, 128 })
+    {
+      for (const char* job : { "step:gpu:", "step:cpujacobi:" })
+      {
+        jobs.push_back(job + std::to_string(n));
       }
     }
     for (int n : Grids2D(quick))
