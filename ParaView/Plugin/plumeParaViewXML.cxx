@@ -309,7 +309,7 @@ std::string InputProperty(const std::string& types)
     s += "          <DataType value=\"" + t + "\"/>\n";
   }
   s += R"(        </DataTypeDomain>
-        <InputArrayDomain name="input_array" attribute_type="point"/>
+        <InputArrayDomain name="input_array" attribute_type="any"/>
       </InputProperty>
 )";
   return s;
@@ -337,7 +337,8 @@ int main(int argc, char* argv[])
   std::vector<Representation> reps;
   reps.push_back({ "PlumeVolumeRepresentation", "Plume Volume", "PlumeVolume", "PlumeVolumeMapper",
     &vtkPlumeVolumeMapper::GetParameterTable(),
-    InputProperty("vtkImageData vtkMultiBlockDataSet vtkPartitionedDataSet") + ColorArrayProperty +
+    InputProperty("vtkImageData vtkMultiBlockDataSet vtkPartitionedDataSet vtkOverlappingAMR vtkNonOverlappingAMR") +
+      ColorArrayProperty +
       R"(      <ProxyProperty name="ScalarOpacityFunction" command="SetScalarOpacity">
         <ProxyGroupDomain name="groups"><Group name="piecewise_functions"/></ProxyGroupDomain>
         <Documentation>ParaView's opacity transfer function.</Documentation>
@@ -348,15 +349,20 @@ int main(int argc, char* argv[])
         <Documentation>World length over which the opacity function's opacity is reached.</Documentation>
       </DoubleVectorProperty>
 )",
-    {}, { { "UniformGridRepresentation", "VolumeRepresentation" } } });
+    {},
+    // AMR: ParaView shows vtkOverlappingAMR with its AMRRepresentation (its
+    // "Volume" resamples the levels onto one grid, as vtkPlumeImageInput does)
+    { { "UniformGridRepresentation", "VolumeRepresentation" }, { "AMRRepresentation", "VolumeRepresentation" } } });
   reps.push_back({ "PlumeSheetRepresentation", "Plume Smoke Sheet", "PlumeSheet", "PlumeSheetMapper",
     &vtkPlumeSheetMapper::GetParameterTable(),
     InputProperty("vtkPolyData vtkMultiBlockDataSet vtkPartitionedDataSet"), {},
     { { "GeometryRepresentation", "SurfaceRepresentation" } } });
   reps.push_back({ "PlumeVelocityLinesRepresentation", "Plume Velocity Lines", "PlumeLines",
     "PlumeVelocityGlyphMapper", &vtkPlumeVelocityGlyphMapper::GetParameterTable(),
-    InputProperty("vtkDataSet vtkMultiBlockDataSet vtkPartitionedDataSet") + ColorArrayProperty, {},
-    { { "UniformGridRepresentation", "SurfaceRepresentation" },
+    InputProperty("vtkDataSet vtkMultiBlockDataSet vtkPartitionedDataSet vtkOverlappingAMR vtkNonOverlappingAMR") +
+      ColorArrayProperty,
+    {},
+    { { "UniformGridRepresentation", "SurfaceRepresentation" }, { "AMRRepresentation", "SurfaceRepresentation" },
       { "UnstructuredGridRepresentation", "SurfaceRepresentation" },
       { "StructuredGridRepresentation", "SurfaceRepresentation" } } });
 
