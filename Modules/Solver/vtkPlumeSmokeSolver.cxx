@@ -737,6 +737,18 @@ double vtkPlumeSmokeSolver::GetPressureJacobiWeight()
 {
   return this->Pressure->GetJacobiWeight();
 }
+void vtkPlumeSmokeSolver::SetPressureSmoothingSweeps(int sweeps)
+{
+  if (sweeps != this->Pressure->GetSmoothingSweeps())
+  {
+    this->Pressure->SetSmoothingSweeps(sweeps);
+    this->Modified();
+  }
+}
+int vtkPlumeSmokeSolver::GetPressureSmoothingSweeps()
+{
+  return this->Pressure->GetSmoothingSweeps();
+}
 
 //------------------------------------------------------------------------------
 void vtkPlumeSmokeSolver::AddSource(

@@ -271,6 +271,9 @@ public:
   /** Damping of the Jacobi iterations (default 0.8). */
   void SetPressureJacobiWeight(double weight);
   double GetPressureJacobiWeight();
+  /** Smoothing sweeps of the PCG's multigrid preconditioner, 1..10 (default 2). */
+  void SetPressureSmoothingSweeps(int sweeps);
+  int GetPressureSmoothingSweeps();
   ///@}
 
   enum Backends

@@ -13,6 +13,7 @@
 #include "vtkPlumeGaussianSplatter.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeSheetMapper.h"
+#include "vtkPlumeSmokeSolver.h"
 #include "vtkPlumeVelocityGlyphMapper.h"
 #include "vtkPlumeVolumeMapper.h"
 
@@ -86,8 +87,15 @@ std::string Documentation(const Table::Parameter& p)
   return Escape(doc);
 }
 
+// Vector3 parameters whose C++ setter and getter take ints (the table's
+// vectors are doubles): written as integer vectors.
+bool IsIntegerVector(const Table& table, const Table::Parameter& p)
+{
+  return table.GetClassName() == "vtkPlumeSmokeSolver" && p.Property == "Dimensions";
+}
+
 // One property (and its information twin) of a proxy whose class is the table's.
-void WriteProperty(std::ostream& os, const Table::Parameter& p)
+void WriteProperty(std::ostream& os, const Table::Parameter& p, bool integerVector = false)
 {
   const std::string name = p.Property;
   const std::string common = "name=\"" + name + "\" label=\"" + Escape(Label(name)) + "\" command=\"Set" +
@@ -164,6 +172,20 @@ void WriteProperty(std::ostream& os, const Table::Parameter& p)
     case Kind::Color:
     {
       const auto& v = std::get<std::array<double, 3>>(p.Default);
+      if (integerVector)
+      {
+        const auto lo = static_cast<long long>(finiteMin ? p.Minimum : INT_MIN);
+        const auto hi = static_cast<long long>(finiteMax ? p.Maximum : INT_MAX);
+        os << "      <IntVectorProperty " << common << " number_of_elements=\"3\" default_values=\""
+           << std::llround(v[0]) << " " << std::llround(v[1]) << " " << std::llround(v[2])
+           << "\">\n        <IntRangeDomain name=\"range\" min=\"" << lo << " " << lo << " " << lo
+           << "\" max=\"" << hi << " " << hi << " " << hi << "\"/>\n"
+           << doc << "      </IntVectorProperty>\n";
+        os << "      <IntVectorProperty name=\"" << name << "Info\" command=\"Get" << name
+           << "\" information_only=\"1\" number_of_elements=\"3\" default_values=\"0 0 0\">"
+              "<SimpleIntInformationHelper/></IntVectorProperty>\n";
+        break;
+      }
       os << "      <DoubleVectorProperty " << common << " number_of_elements=\"3\" default_values=\""
          << Number(v[0]) << " " << Number(v[1]) << " " << Number(v[2]) << "\""
          << (p.Type == Kind::Color ? " panel_widget=\"color_selector\"" : "")
@@ -309,7 +331,7 @@ std::string InputProperty(const std::string& types)
     s += "          <DataType value=\"" + t + "\"/>\n";
   }
   s += R"(        </DataTypeDomain>
-        <InputArrayDomain name="input_array" attribute_type="point"/>
+        <InputArrayDomain name="input_array" attribute_type="any"/>
       </InputProperty>
 )";
   return s;
@@ -337,7 +359,8 @@ int main(int argc, char* argv[])
   std::vector<Representation> reps;
   reps.push_back({ "PlumeVolumeRepresentation", "Plume Volume", "PlumeVolume", "PlumeVolumeMapper",
     &vtkPlumeVolumeMapper::GetParameterTable(),
-    InputProperty("vtkImageData vtkMultiBlockDataSet vtkPartitionedDataSet") + ColorArrayProperty +
+    InputProperty("vtkImageData vtkMultiBlockDataSet vtkPartitionedDataSet vtkOverlappingAMR vtkNonOverlappingAMR") +
+      ColorArrayProperty +
       R"(      <ProxyProperty name="ScalarOpacityFunction" command="SetScalarOpacity">
         <ProxyGroupDomain name="groups"><Group name="piecewise_functions"/></ProxyGroupDomain>
         <Documentation>ParaView's opacity transfer function.</Documentation>
@@ -348,15 +371,20 @@ int main(int argc, char* argv[])
         <Documentation>World length over which the opacity function's opacity is reached.</Documentation>
       </DoubleVectorProperty>
 )",
-    {}, { { "UniformGridRepresentation", "VolumeRepresentation" } } });
+    {},
+    // AMR: ParaView shows vtkOverlappingAMR with its AMRRepresentation (its
+    // "Volume" resamples the levels onto one grid, as vtkPlumeImageInput does)
+    { { "UniformGridRepresentation", "VolumeRepresentation" }, { "AMRRepresentation", "VolumeRepresentation" } } });
   reps.push_back({ "PlumeSheetRepresentation", "Plume Smoke Sheet", "PlumeSheet", "PlumeSheetMapper",
     &vtkPlumeSheetMapper::GetParameterTable(),
     InputProperty("vtkPolyData vtkMultiBlockDataSet vtkPartitionedDataSet"), {},
     { { "GeometryRepresentation", "SurfaceRepresentation" } } });
   reps.push_back({ "PlumeVelocityLinesRepresentation", "Plume Velocity Lines", "PlumeLines",
     "PlumeVelocityGlyphMapper", &vtkPlumeVelocityGlyphMapper::GetParameterTable(),
-    InputProperty("vtkDataSet vtkMultiBlockDataSet vtkPartitionedDataSet") + ColorArrayProperty, {},
-    { { "UniformGridRepresentation", "SurfaceRepresentation" },
+    InputProperty("vtkDataSet vtkMultiBlockDataSet vtkPartitionedDataSet vtkOverlappingAMR vtkNonOverlappingAMR") +
+      ColorArrayProperty,
+    {},
+    { { "UniformGridRepresentation", "SurfaceRepresentation" }, { "AMRRepresentation", "SurfaceRepresentation" },
       { "UnstructuredGridRepresentation", "SurfaceRepresentation" },
       { "StructuredGridRepresentation", "SurfaceRepresentation" } } });
 
@@ -407,6 +435,63 @@ int main(int argc, char* argv[])
     WriteProperty(os, p);
   }
   for (const auto& [group, params] : Groups(splat, "Splat"))
+  {
+    os << "      <PropertyGroup label=\"" << Escape(group) << "\">\n";
+    for (const auto* p : params)
+    {
+      os << "        <Property name=\"" << p->Property << "\"/>\n";
+    }
+    os << "      </PropertyGroup>\n";
+  }
+  os << R"(      <Hints><ShowInMenu category="Plume"/></Hints>
+    </SourceProxy>
+  </ProxyGroup>
+)";
+
+  // The smoke solver: a time-aware image source with three optional inputs.
+  const Table& smoke = vtkPlumeSmokeSolver::GetParameterTable();
+  os << R"(  <ProxyGroup name="sources">
+    <SourceProxy name="PlumeSmokeSolver" class="vtkPlumeSmokeSolver" label="Plume Smoke Solver">
+      <Documentation short_help="Eulerian smoke simulation on a grid (buoyancy, sources, obstacles).">
+        Smoke simulated on a MAC grid: semi-Lagrangian or MacCormack advection, buoyancy, point
+        sources, obstacles and a pressure projection (Jacobi or hypre's PCG). A time-aware image
+        source: time k * TimeStep is simulation step k. Output point arrays velocity, density,
+        temperature, pressure, divergence, obstacle.
+      </Documentation>
+      <InputProperty name="Obstacles" port_index="0" command="SetInputConnection">
+        <ProxyGroupDomain name="groups"><Group name="sources"/><Group name="filters"/></ProxyGroupDomain>
+        <DataTypeDomain name="input_type"><DataType value="vtkImageData"/></DataTypeDomain>
+        <Documentation>Optional image whose point array ObstacleArrayName (&gt; 0.5) marks solid cells (nearest input point).</Documentation>
+        <Hints><Optional/></Hints>
+      </InputProperty>
+      <InputProperty name="Velocity" port_index="1" command="SetInputConnection">
+        <ProxyGroupDomain name="groups"><Group name="sources"/><Group name="filters"/></ProxyGroupDomain>
+        <DataTypeDomain name="input_type"><DataType value="vtkImageData"/></DataTypeDomain>
+        <Documentation>Optional velocity image (VelocityArrayName) in which the smoke is released passively.</Documentation>
+        <Hints><Optional/></Hints>
+      </InputProperty>
+      <InputProperty name="SourcePoints" port_index="2" command="SetInputConnection">
+        <ProxyGroupDomain name="groups"><Group name="sources"/><Group name="filters"/></ProxyGroupDomain>
+        <DataTypeDomain name="input_type"><DataType value="vtkPointSet"/></DataTypeDomain>
+        <Documentation>Optional point sources (any dataset with points: polydata, unstructured grid, ...): every
+          step each point injects smoke mass at a rate, spread over the fluid cells within its radius, so the
+          total (density x cell volume) grows by the rate x TimeStep. Per-point arrays (names set by the
+          Source*ArrayName properties; a missing array gives the Source* constant): "rate" (mass per second,
+          density x model units^3 / s), "temperature" (set around the point), "radius" (model units; 0 = the
+          cell holding the point), "velocity" (3 components, set on the faces around the point; none if
+          absent). Points outside the domain or in solid cells emit nothing.</Documentation>
+        <Hints><Optional/></Hints>
+      </InputProperty>
+      <DoubleVectorProperty name="TimestepValues" information_only="1" repeatable="1">
+        <TimeStepsInformationHelper/>
+        <Documentation>The simulation's times (k * TimeStep, k = 0 .. NumberOfTimeSteps).</Documentation>
+      </DoubleVectorProperty>
+)";
+  for (const auto& p : smoke.GetParameters())
+  {
+    WriteProperty(os, p, IsIntegerVector(smoke, p));
+  }
+  for (const auto& [group, params] : Groups(smoke, "Smoke"))
   {
     os << "      <PropertyGroup label=\"" << Escape(group) << "\">\n";
     for (const auto* p : params)

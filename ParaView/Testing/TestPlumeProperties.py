@@ -1,8 +1,8 @@
 """pvbatch: every property of the plugin's XML reaches the C++ object.
 
 For each Plume representation (through ParaView's composite representation,
-as a user sets it: rep.PlumeVolumeSampleDistance = ...) and for the Gaussian
-Splat filter, for every property generated from the class's parameter table:
+as a user sets it: rep.PlumeVolumeSampleDistance = ...), for the Gaussian
+Splat filter and for the Smoke Solver source, for every property generated from the class's parameter table:
  1. after creation the C++ getter (read back through the property's
     information-only twin "<Name>Info") equals the XML default. ParaView
     pushes the XML defaults into the new object, so this checks the push and
@@ -178,4 +178,15 @@ def set_on_filter(name, value):
 
 
 check("Plume Gaussian Splat", splat.SMProxy, set_on_filter)
+
+simple.SetActiveSource(None)  # simple would connect it to the solver's first input (Obstacles)
+solver = simple.PlumeSmokeSolver()
+
+
+def set_on_solver(name, value):
+    solver.SetPropertyWithName(name, value if len(value) > 1 else value[0])
+    solver.UpdateVTKObjects()
+
+
+check("Plume Smoke Solver", solver.SMProxy, set_on_solver)
 T.finish(not failures)

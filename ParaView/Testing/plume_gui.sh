@@ -12,8 +12,9 @@ rm -f "$out/TestPlumeGUI.result" "$out/TestPlumeGUI.result.log"
 fbdir="$(mktemp -d)"
 export PV_PLUGIN_PATH="$(dirname "$PLUME_PLUGIN")" PLUME_TESTING_DIR="$here" PLUME_GUI_FBDIR="$fbdir"
 # the screen is copied (plume_gui_capture.py) while the playback pauses,
-# once the startup script has written its result
-xvfb-run -a -n $((500 + RANDOM % 400)) -s "-screen 0 1280x800x24 -fbdir $fbdir" \
+# once the startup script has written its result. -noreset: see
+# scripts/test-paraview.sh (a server that resets refuses connections for a while).
+xvfb-run -a -n $((500 + RANDOM % 400)) -s "-screen 0 1280x800x24 -noreset -fbdir $fbdir" \
   paraview --dr --script="$here/TestPlumeGUI.py" --test-script="$here/plume_gui_exit.xml" --exit &
 gui=$!
 for _ in $(seq 1 600); do

@@ -77,36 +77,50 @@ vtkSmartPointer<vtkImageData> Copy(vtkImageData* image)
   return copy;
 }
 
-// The trilinear value of `name` at x in the first of `pieces` (finest first)
-// whose point bounds contain x.
+// Where x lies in `piece`: its structured coordinate along each axis; false
+// if x is outside the piece's point bounds.
+bool Locate(vtkImageData* piece, const double x[3], double f[3])
+{
+  const double* o = piece->GetOrigin();
+  const double* h = piece->GetSpacing();
+  const int* e = piece->GetExtent();
+  for (int a = 0; a < 3; ++a)
+  {
+    f[a] = (x[a] - o[a]) / h[a];
+    const double tol = 1e-6;
+    if (f[a] < e[2 * a] - tol || f[a] > e[2 * a + 1] + tol)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The trilinear value of point array `name` at x in the first of `pieces`
+// (finest first) whose point bounds contain x.
 bool Interpolate(const std::vector<vtkSmartPointer<vtkImageData>>& pieces, const char* name, const double x[3],
   double* value)
 {
   for (const auto& p : pieces)
   {
-    const double* o = p->GetOrigin();
-    const double* h = p->GetSpacing();
+    double f[3];
+    if (!Locate(p, x, f))
+    {
+      continue;
+    }
     const int* e = p->GetExtent();
     int i0[3];
     double t[3];
-    bool inside = true;
-    for (int a = 0; a < 3 && inside; ++a)
+    for (int a = 0; a < 3; ++a)
     {
-      const double f = (x[a] - o[a]) / h[a]; // structured coordinate
-      const double tol = 1e-6;
-      inside = f >= e[2 * a] - tol && f <= e[2 * a + 1] + tol;
       if (e[2 * a] == e[2 * a + 1])
       {
         i0[a] = e[2 * a];
         t[a] = 0;
         continue;
       }
-      i0[a] = std::min(std::max(static_cast<int>(std::floor(f)), e[2 * a]), e[2 * a + 1] - 1);
-      t[a] = std::min(std::max(f - i0[a], 0.0), 1.0);
-    }
-    if (!inside)
-    {
-      continue;
+      i0[a] = std::min(std::max(static_cast<int>(std::floor(f[a])), e[2 * a]), e[2 * a + 1] - 1);
+      t[a] = std::min(std::max(f[a] - i0[a], 0.0), 1.0);
     }
     vtkDataArray* array = p->GetPointData()->GetArray(name);
     const int comps = array->GetNumberOfComponents();
@@ -136,24 +150,65 @@ bool Interpolate(const std::vector<vtkSmartPointer<vtkImageData>>& pieces, const
   return false;
 }
 
-// Point arrays every piece has (same name and component count): the ones a
-// resampled image can carry.
-std::vector<std::pair<std::string, int>> CommonPointArrays(const std::vector<vtkSmartPointer<vtkImageData>>& pieces)
+// The value of cell array `name` of the cell holding x in the first of
+// `pieces` (finest first) whose bounds contain x: cell values are constant
+// over their cell (no interpolation), as vtkProbeFilter samples them.
+bool CellValue(const std::vector<vtkSmartPointer<vtkImageData>>& pieces, const char* name, const double x[3],
+  double* value)
 {
-  std::vector<std::pair<std::string, int>> common;
-  vtkPointData* pd = pieces[0]->GetPointData();
-  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  for (const auto& p : pieces)
   {
-    vtkDataArray* array = pd->GetArray(a);
+    double f[3];
+    if (!Locate(p, x, f))
+    {
+      continue;
+    }
+    const int* e = p->GetExtent();
+    int ijk[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      ijk[a] = e[2 * a] == e[2 * a + 1]
+        ? e[2 * a]
+        : std::min(std::max(static_cast<int>(std::floor(f[a])), e[2 * a]), e[2 * a + 1] - 1);
+    }
+    vtkDataArray* array = p->GetCellData()->GetArray(name);
+    const vtkIdType id = p->ComputeCellId(ijk);
+    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+    {
+      value[c] = array->GetComponent(id, c);
+    }
+    return true;
+  }
+  return false;
+}
+
+// Arrays of one attribute (point or cell data) that every piece has (same
+// name and component count): the ones a resampled image can carry. The ghost
+// array is not one of them (nor, for cell data, a name a point array has).
+std::vector<std::pair<std::string, int>> CommonArrays(
+  const std::vector<vtkSmartPointer<vtkImageData>>& pieces, int association)
+{
+  auto attributes = [association](vtkImageData* image) -> vtkDataSetAttributes* {
+    return association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+      ? static_cast<vtkDataSetAttributes*>(image->GetCellData())
+      : static_cast<vtkDataSetAttributes*>(image->GetPointData());
+  };
+  std::vector<std::pair<std::string, int>> common;
+  vtkDataSetAttributes* first = attributes(pieces[0]);
+  for (int a = 0; a < first->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = first->GetArray(a);
     if (!array || !array->GetName() ||
-      std::string(array->GetName()) == vtkDataSetAttributes::GhostArrayName())
+      std::string(array->GetName()) == vtkDataSetAttributes::GhostArrayName() ||
+      (association == vtkDataObject::FIELD_ASSOCIATION_CELLS &&
+        pieces[0]->GetPointData()->GetArray(array->GetName())))
     {
       continue;
     }
     bool everywhere = true;
     for (const auto& p : pieces)
     {
-      vtkDataArray* other = p->GetPointData()->GetArray(array->GetName());
+      vtkDataArray* other = attributes(p)->GetArray(array->GetName());
       everywhere = everywhere && other && other->GetNumberOfComponents() == array->GetNumberOfComponents();
     }
     if (everywhere)
@@ -165,11 +220,20 @@ std::vector<std::pair<std::string, int>> CommonPointArrays(const std::vector<vtk
 }
 
 // Pieces that are not one grid (AMR levels, blocks of different spacing or
-// origin, overlapping pieces): one image over the union of their bounds at
-// the finest spacing among them (coarsened evenly if that is over the memory
-// budget); each point takes the trilinear value of the finest piece that
-// contains it (AMR: the refined level where there is one), points no piece
-// covers the minimum of the array (the transfer function's low end).
+// origin, overlapping pieces), or an image whose data are cell arrays only:
+// one image over the union of their bounds at the finest spacing among them
+// (coarsened evenly if that is over the memory budget), as point data.
+// - Point arrays: each point takes the trilinear value of the finest piece
+//   that contains it (AMR: the refined level where there is one).
+// - Cell arrays: the points are then the centres of the cells of that finest
+//   lattice (half a spacing inside the union's bounds), each taking the value
+//   of the finest piece's cell holding it. At the finest spacing every such
+//   centre lies inside exactly one cell of each piece whose cells it refines
+//   (AMR levels nest), so the cell values are kept exactly, where sampling
+//   at cell corners would have to pick one of up to eight cells. Point arrays
+//   are interpolated at those centres.
+// Points no piece covers take the array's minimum (the transfer function's
+// low end).
 vtkSmartPointer<vtkImageData> Resample(std::vector<vtkSmartPointer<vtkImageData>> pieces, vtkAlgorithm* owner)
 {
   auto cellVolume = [](vtkImageData* image) {
@@ -197,12 +261,20 @@ vtkSmartPointer<vtkImageData> Resample(std::vector<vtkSmartPointer<vtkImageData>
       }
     }
   }
-  const auto arrays = CommonPointArrays(pieces);
+  const auto pointArrays = CommonArrays(pieces, vtkDataObject::FIELD_ASSOCIATION_POINTS);
+  const auto cellArrays = CommonArrays(pieces, vtkDataObject::FIELD_ASSOCIATION_CELLS);
+  const bool centres = !cellArrays.empty();
   int components = 0;
-  for (const auto& array : arrays)
+  for (const auto& array : pointArrays)
   {
     components += array.second;
   }
+  for (const auto& array : cellArrays)
+  {
+    components += array.second;
+  }
+  // dims[a]: points along axis a; with cell arrays, cells of the lattice
+  // (their centres are the points)
   int dims[3];
   double scale = 1;
   for (int attempt = 0; attempt < 64; ++attempt)
@@ -211,9 +283,9 @@ vtkSmartPointer<vtkImageData> Resample(std::vector<vtkSmartPointer<vtkImageData>
     for (int a = 0; a < 3; ++a)
     {
       const double extent = bounds[2 * a + 1] - bounds[2 * a];
-      dims[a] = (h[a] < VTK_DOUBLE_MAX && h[a] > 0 && extent > 0)
-        ? static_cast<int>(std::ceil(extent / (h[a] * scale) - 1e-6)) + 1
-        : 1;
+      const bool flat = !(h[a] < VTK_DOUBLE_MAX && h[a] > 0 && extent > 0);
+      const double cells = flat ? 0 : std::ceil(extent / (h[a] * scale) - 1e-6);
+      dims[a] = flat ? 1 : static_cast<int>(centres ? std::max(1.0, cells) : cells + 1);
       points *= dims[a];
     }
     const double bytes = points * std::max(1, components) * sizeof(float);
@@ -223,78 +295,124 @@ vtkSmartPointer<vtkImageData> Resample(std::vector<vtkSmartPointer<vtkImageData>
     }
     scale *= 1.25; // coarser, evenly on every axis, until it fits
   }
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->SetOrigin(bounds[0], bounds[2], bounds[4]);
+  double origin[3];
   double spacing[3];
   for (int a = 0; a < 3; ++a)
   {
-    spacing[a] = dims[a] > 1 ? (bounds[2 * a + 1] - bounds[2 * a]) / (dims[a] - 1) : 1.0;
+    const double extent = bounds[2 * a + 1] - bounds[2 * a];
+    if (centres)
+    {
+      spacing[a] = extent > 0 ? extent / dims[a] : 1.0;
+      origin[a] = bounds[2 * a] + (extent > 0 ? 0.5 * spacing[a] : 0.0);
+    }
+    else
+    {
+      spacing[a] = dims[a] > 1 ? extent / (dims[a] - 1) : 1.0;
+      origin[a] = bounds[2 * a];
+    }
   }
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  out->SetOrigin(origin);
   out->SetSpacing(spacing);
   out->SetDimensions(dims);
   const vtkIdType n = out->GetNumberOfPoints();
-  for (const auto& array : arrays)
+  for (int association : { vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataObject::FIELD_ASSOCIATION_CELLS })
   {
-    vtkNew<vtkFloatArray> values;
-    values->SetName(array.first.c_str());
-    values->SetNumberOfComponents(array.second);
-    values->SetNumberOfTuples(n);
-    // the background: the array's minimum over the pieces, per component
-    std::vector<double> low(array.second, VTK_DOUBLE_MAX);
-    for (const auto& p : pieces)
+    const bool cell = association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+    for (const auto& array : cell ? cellArrays : pointArrays)
     {
-      vtkDataArray* source = p->GetPointData()->GetArray(array.first.c_str());
-      for (int c = 0; c < array.second; ++c)
+      vtkNew<vtkFloatArray> values;
+      values->SetName(array.first.c_str());
+      values->SetNumberOfComponents(array.second);
+      values->SetNumberOfTuples(n);
+      // the background: the array's minimum over the pieces, per component
+      std::vector<double> low(array.second, VTK_DOUBLE_MAX);
+      for (const auto& p : pieces)
       {
-        low[c] = std::min(low[c], source->GetRange(c)[0]);
-      }
-    }
-    vtkSMPTools::For(0, dims[2], [&](vtkIdType k0, vtkIdType k1) {
-      std::vector<double> value(array.second);
-      for (vtkIdType k = k0; k < k1; ++k)
-      {
-        for (int j = 0; j < dims[1]; ++j)
+        vtkDataArray* source = cell ? p->GetCellData()->GetArray(array.first.c_str())
+                                    : p->GetPointData()->GetArray(array.first.c_str());
+        for (int c = 0; c < array.second; ++c)
         {
-          for (int i = 0; i < dims[0]; ++i)
+          low[c] = std::min(low[c], source->GetRange(c)[0]);
+        }
+      }
+      vtkSMPTools::For(0, dims[2], [&](vtkIdType k0, vtkIdType k1) {
+        std::vector<double> value(array.second);
+        for (vtkIdType k = k0; k < k1; ++k)
+        {
+          for (int j = 0; j < dims[1]; ++j)
           {
-            const double x[3] = { bounds[0] + i * spacing[0], bounds[2] + j * spacing[1],
-              bounds[4] + k * spacing[2] };
-            const bool found = Interpolate(pieces, array.first.c_str(), x, value.data());
-            const vtkIdType id = i + static_cast<vtkIdType>(dims[0]) * (j + static_cast<vtkIdType>(dims[1]) * k);
-            for (int c = 0; c < array.second; ++c)
+            for (int i = 0; i < dims[0]; ++i)
             {
-              values->SetTypedComponent(id, c, static_cast<float>(found ? value[c] : low[c]));
+              const double x[3] = { origin[0] + i * spacing[0], origin[1] + j * spacing[1],
+                origin[2] + k * spacing[2] };
+              const bool found = cell ? CellValue(pieces, array.first.c_str(), x, value.data())
+                                      : Interpolate(pieces, array.first.c_str(), x, value.data());
+              const vtkIdType id =
+                i + static_cast<vtkIdType>(dims[0]) * (j + static_cast<vtkIdType>(dims[1]) * k);
+              for (int c = 0; c < array.second; ++c)
+              {
+                values->SetTypedComponent(id, c, static_cast<float>(found ? value[c] : low[c]));
+              }
             }
           }
         }
-      }
-    });
-    out->GetPointData()->AddArray(values);
+      });
+      out->GetPointData()->AddArray(values);
+    }
   }
-  vtkPointData* firstPD = pieces[0]->GetPointData();
+  // the first piece's active scalars and vectors stay active (a cell
+  // attribute only where no point array is)
   for (int attribute : { vtkDataSetAttributes::SCALARS, vtkDataSetAttributes::VECTORS })
   {
-    vtkDataArray* active = firstPD->GetAttribute(attribute);
-    if (active && active->GetName() && out->GetPointData()->GetArray(active->GetName()))
+    for (vtkDataSetAttributes* source :
+      { static_cast<vtkDataSetAttributes*>(pieces[0]->GetPointData()),
+        static_cast<vtkDataSetAttributes*>(pieces[0]->GetCellData()) })
     {
-      out->GetPointData()->SetActiveAttribute(active->GetName(), attribute);
+      vtkDataArray* active = source->GetAttribute(attribute);
+      if (!out->GetPointData()->GetAttribute(attribute) && active && active->GetName() &&
+        out->GetPointData()->GetArray(active->GetName()))
+      {
+        out->GetPointData()->SetActiveAttribute(active->GetName(), attribute);
+      }
     }
   }
   if (owner)
   {
     vtkWarningWithObjectMacro(owner, << "the input holds " << pieces.size()
-                                     << " images on this process that are not pieces of one grid (different "
-                                        "spacing or origin, or overlapping: e.g. AMR levels); Plume resampled them "
-                                        "onto one "
+                                     << (pieces.size() == 1 ? " image with cell data only"
+                                                            : " images on this process that are not pieces of "
+                                                              "one grid (different spacing or origin, or "
+                                                              "overlapping: e.g. AMR levels)")
+                                     << "; Plume resampled them onto one "
                                      << dims[0] << "x" << dims[1] << "x" << dims[2] << " image with spacing "
                                      << spacing[0] << ", " << spacing[1] << ", " << spacing[2]
                                      << (scale > 1 ? " (coarser than the finest piece's, to fit the memory budget "
                                                      "PLUME_MEMORY_BUDGET_MB)"
                                                    : " (the finest piece's)")
-                                     << ", each point from the finest piece that holds it, trilinear; "
-                                     << arrays.size() << " point array(s) common to all pieces, as float");
+                                     << (centres ? " at the centres of that lattice's cells" : "")
+                                     << ", each point from the finest piece that holds it; " << pointArrays.size()
+                                     << " point array(s) (trilinear) and " << cellArrays.size()
+                                     << " cell array(s) (the value of the cell holding the point) common to all "
+                                        "pieces, as float point data");
   }
   return out;
+}
+
+// Whether the image's data are cell arrays only (a finite-volume result, an
+// AMR block): the volume and line mappers sample point data.
+bool CellDataOnly(vtkImageData* image)
+{
+  auto named = [](vtkDataSetAttributes* attributes) {
+    int count = 0;
+    for (int a = 0; a < attributes->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* array = attributes->GetArray(a);
+      count += array && array->GetName() && std::string(array->GetName()) != vtkDataSetAttributes::GhostArrayName();
+    }
+    return count;
+  };
+  return named(image->GetPointData()) == 0 && named(image->GetCellData()) > 0;
 }
 }
 
@@ -302,7 +420,12 @@ vtkSmartPointer<vtkImageData> vtkPlumeImageInput::Extract(vtkDataObject* input, 
 {
   if (auto* image = vtkImageData::SafeDownCast(input))
   {
-    return image->GetNumberOfPoints() > 0 ? Copy(image) : nullptr;
+    if (image->GetNumberOfPoints() == 0)
+    {
+      return nullptr;
+    }
+    vtkSmartPointer<vtkImageData> copy = Copy(image);
+    return CellDataOnly(copy) ? Resample({ copy }, owner) : copy;
   }
   auto* composite = vtkCompositeDataSet::SafeDownCast(input);
   if (!composite)
@@ -326,7 +449,7 @@ vtkSmartPointer<vtkImageData> vtkPlumeImageInput::Extract(vtkDataObject* input, 
   }
   if (pieces.size() == 1)
   {
-    return pieces[0];
+    return CellDataOnly(pieces[0]) ? Resample(pieces, owner) : pieces[0];
   }
   // Several pieces on this rank (a reader or partitioner that made more
   // pieces than ranks): one image when they are pieces of one grid (same
@@ -336,7 +459,9 @@ vtkSmartPointer<vtkImageData> vtkPlumeImageInput::Extract(vtkDataObject* input, 
   int box[6];
   first->GetExtent(box);
   vtkIdType cells = first->GetNumberOfCells();
-  bool tiles = true;
+  // cell data only: the point samples come from a resample (vtkImageAppend
+  // would carry no point data)
+  bool tiles = !CellDataOnly(first);
   for (size_t i = 1; i < pieces.size() && tiles; ++i)
   {
     const vtkSmartPointer<vtkImageData>& p = pieces[i];
@@ -346,7 +471,8 @@ vtkSmartPointer<vtkImageData> vtkPlumeImageInput::Extract(vtkDataObject* input, 
       tiles = tiles && std::abs(p->GetSpacing()[a] - h) <= 1e-6 * std::abs(h) &&
         std::abs(p->GetOrigin()[a] - first->GetOrigin()[a]) <= 1e-6 * std::abs(h);
     }
-    tiles = tiles && p->GetPointData()->GetNumberOfArrays() == first->GetPointData()->GetNumberOfArrays();
+    tiles = tiles && p->GetPointData()->GetNumberOfArrays() == first->GetPointData()->GetNumberOfArrays() &&
+      !CellDataOnly(p);
     const int* e = p->GetExtent();
     for (int a = 0; a < 3; ++a)
     {
