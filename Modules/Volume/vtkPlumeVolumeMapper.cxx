@@ -742,9 +742,9 @@ bool vtkPlumeVolumeMapper::Internals::UpdateBlocks(vtkPlumeVolumeMapper* self, F
   // ---- empty-space skipping: blocks whose value range has zero opacity everywhere
   vtkOpenGLRenderWindow* renWin = frame.Window;
   const double* scaleBias = frame.ScaleBias;
-  // (not with pre-integration: a segment whose midpoint is in a transparent
-  // block may reach into an occupied one)
-  const bool skipping = self->EmptySpaceSkipping && self->BlendMode == COMPOSITE_BLEND && !frame.PreInt;
+  // (pre-integrated segments are skipped only where they lie wholly in
+  // transparent blocks: SKIP_PREINT)
+  const bool skipping = self->EmptySpaceSkipping && self->BlendMode == COMPOSITE_BLEND;
   if (skipping && (this->OccupancyUpload != this->Scalars->GetDataVersion() ||
                     this->OccupancyTable != self->TableCount || !this->Occupancy->GetHandle()))
   {
@@ -1071,7 +1071,11 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
   // composite: point samples over their segment, or pre-integrated segments
   features.Enable(frame.PreInt ? "PREINT" : "POINT", mode == "COMPOSITE");
   features.Enable("SHADE_NOGRADIENT", shade && !this->Scalars->GetHasGradients());
-  if (skipTransparent || rangeSkipping)
+  if (skipTransparent && frame.PreInt)
+  {
+    features.Enable("SKIP_PREINT");
+  }
+  else if (skipTransparent || rangeSkipping)
   {
     features.Enable("SKIP");
     features.Enable(skipTransparent ? "SKIP_TRANSPARENT" : (mode == "MIP" ? "SKIP_MIP" : "SKIP_ISO"));

@@ -162,9 +162,10 @@ public:
    * entries), and its colour the extinction-weighted mean colour of the
    * values crossed (I_cσ / I_σ differences; self-attenuation inside the
    * segment is neglected). Sharp transfer functions then stay right at long
-   * steps (thin opacity peaks that plain sampling steps over). Empty-space
-   * skipping is off while it is on (a skipped midpoint's segment may reach
-   * into an occupied block). Default off.
+   * steps (thin opacity peaks that plain sampling steps over). With
+   * EmptySpaceSkipping, segments that lie wholly inside transparent blocks
+   * are jumped over (the blocks' value ranges share their boundary nodes, so
+   * every value between such a segment's ends is transparent too). Default off.
    */
   vtkSetMacro(PreIntegration, bool);
   vtkGetMacro(PreIntegration, bool);

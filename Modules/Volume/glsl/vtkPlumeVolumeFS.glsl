@@ -9,7 +9,7 @@
 //   COMPOSITE | MIP | ISO | SMOKE   the mode
 //   POINT | PREINT   composite: a sample's value over its segment | segments
 //                    pre-integrated between their end values (no SKIP, PLAIN
-//                    or MASK then)
+//                    or MASK then; SKIP_PREINT instead of SKIP)
 //   JITTER           jittered first segment
 //   DEPTH            stop at the opaque scene's depth
 //   SKIP             empty-space skipping, with one of: SKIP_TRANSPARENT
@@ -17,6 +17,10 @@
 //                    (blocks whose max is not above the running max), SKIP_ISO
 //                    (blocks whose range misses the iso value by PLUME_ISO_MARGIN
 //                    on the side the ray already is; with MASK: SKIP_ISO+MASK blocks)
+//   SKIP_PREINT      PREINT's skipping: segments wholly inside transparent blocks
+//                    are jumped over (their end values lie in the blocks' ranges,
+//                    which overlap at shared nodes, so every value between them
+//                    is transparent too)
 //   SHADE            composite with gradient (Phong) shading of every sample
 //   PLAIN | GRADIENT (both with NOMASK) the volume texture is u | (u, central
 //                    differences along x, y, z) for shading in one look-up;
@@ -83,10 +87,10 @@ uniform int JitterSeed;
 //PLUME::IF SKIP_MIP SKIP_ISO
 uniform sampler3D BlockRanges;      // per block: min, max of u
 //PLUME::ENDIF
-//PLUME::IF SKIP_TRANSPARENT
+//PLUME::IF SKIP_TRANSPARENT SKIP_PREINT
 uniform sampler3D Occupancy;        // per block: 0 = every value in it is transparent
 //PLUME::ENDIF
-//PLUME::IF SKIP
+//PLUME::IF SKIP SKIP_PREINT
 uniform float BlockSize;            // voxels per block
 uniform vec3 BlockDims;            // blocks per axis
 uniform vec3 DrawMin;              // bounds of the non-transparent blocks (index space)
@@ -454,6 +458,23 @@ void main()
     s1 = min(s1, t.y);
   }
 //PLUME::ENDIF
+//PLUME::IF SKIP_PREINT
+  float m = 0.0;
+  float occupiedUntil = -1.0; // the segments starting before this t are in an occupied block
+  {
+    // outside the bounds of the non-transparent blocks nothing contributes:
+    // start at the segment (of the same lattice) that contains their entry
+    vec3 dd = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
+    vec3 tn = min((DrawMin - p0) / dd, (DrawMax - p0) / dd);
+    float enter = max(tn.x, max(tn.y, tn.z));
+    if (enter > s1)
+    {
+      m = floor((enter - segBase) / dt) + 1.0;
+      s0 = segBase + (m - 1.0) * dt;
+      s1 = min(s0 + dt, t.y);
+    }
+  }
+//PLUME::ENDIF
 //PLUME::IF PREINT
   // segments are pre-integrated between their end samples (the back one is
   // the next segment's front)
@@ -463,6 +484,46 @@ void main()
   {
     float tm = 0.5 * (s0 + s1);
     vec3 p = p0 + tm * d;
+//PLUME::IF SKIP_PREINT
+    if (s0 >= occupiedUntil)
+    {
+      // the run of transparent blocks the segment starts in (up to 16 blocks;
+      // each block is entered just past the previous one's exit: on a face,
+      // the one ahead)
+      vec3 dd = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
+      float eps = 1e-3 * dt;
+      float run = s0;  // the run of transparent blocks ends here
+      bool occupied = false;
+      for (int k = 0; k < 16 && run < t.y; ++k)
+      {
+        vec3 ps = p0 + (run + eps) * d;
+        ivec3 cell = clamp(ivec3(floor(ps / BlockSize)), ivec3(0), ivec3(BlockDims) - 1);
+        vec3 lo = vec3(cell) * BlockSize;
+        vec3 tf = max((lo - p0) / dd, (lo + BlockSize - p0) / dd);
+        float te = max(min(tf.x, min(tf.y, tf.z)), run + eps); // where the ray leaves it
+        if (texelFetch(Occupancy, cell, 0).r != 0.0)
+        {
+          occupied = true;
+          if (k == 0)
+          {
+            occupiedUntil = te; // no more look-ups until a segment starts past this block
+          }
+          break;
+        }
+        run = te;
+      }
+      if (s1 <= run || (!occupied && run >= t.y))
+      {
+        // this segment and the next ones up to the run's end add nothing: go
+        // to the segment that contains its end, its front sampled there
+        m = max(m + 1.0, floor((run - segBase) / dt) + 1.0);
+        s0 = segBase + (m - 1.0) * dt;
+        s1 = min(s0 + dt, t.y);
+        uFront = sampleU(p0 + s0 * d);
+        continue;
+      }
+    }
+//PLUME::ENDIF
 //PLUME::IF SKIP
     if (tm >= occupiedUntil)
     {
@@ -610,7 +671,7 @@ void main()
 //PLUME::ENDIF
     s0 = s1;
     s1 = min(s0 + dt, t.y);
-//PLUME::IF SKIP
+//PLUME::IF SKIP SKIP_PREINT
     m += 1.0;
 //PLUME::ENDIF
   }
