@@ -128,6 +128,7 @@ public:
   double OccupiedMax[3] = { 0, 0, 0 };
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO;
   vtkNew<vtkTextureObject> Lattice; // RGBA32F: the lattice rays' premultiplied colour
+  vtkNew<vtkTextureObject> Cells;   // R32F per lattice cell: 0 = interpolate, 1 = cast own rays
   vtkNew<vtkOpenGLFramebufferObject> LatticeFBO;
   vtkNew<vtkPlumeShaderProgramCache> Programs;
   vtkOpenGLRenderWindow* Window = nullptr;
@@ -178,8 +179,12 @@ public:
     int LatticeSize[2] = { 0, 0 };
     vtkPlumeShaderFeatures Features;
     vtkPlumeShaderFeatures CoarseFeatures;
+    vtkPlumeShaderFeatures ClassifyFeatures;
+    vtkPlumeShaderFeatures RefineFeatures;
     vtkShaderProgram* Program = nullptr;
-    vtkShaderProgram* Coarse = nullptr; // lattice rays (Lattice > 1)
+    vtkShaderProgram* Coarse = nullptr;   // lattice rays (Lattice > 1)
+    vtkShaderProgram* Classify = nullptr; // lattice cells (Lattice > 1)
+    vtkShaderProgram* Refine = nullptr;   // interpolated cells (Lattice > 1)
   };
 
   // The render steps, in order (Render() calls them); false: stop (an error
@@ -206,6 +211,7 @@ public:
     this->RangesUpload = -1;
     this->EmptyVAO->ReleaseGraphicsResources();
     this->Lattice->ReleaseGraphicsResources(window);
+    this->Cells->ReleaseGraphicsResources(window);
     this->LatticeFBO->ReleaseGraphicsResources(window);
     this->Programs->ReleaseGraphicsResources(window);
     this->Window = nullptr;
@@ -736,9 +742,9 @@ bool vtkPlumeVolumeMapper::Internals::UpdateBlocks(vtkPlumeVolumeMapper* self, F
   // ---- empty-space skipping: blocks whose value range has zero opacity everywhere
   vtkOpenGLRenderWindow* renWin = frame.Window;
   const double* scaleBias = frame.ScaleBias;
-  // (not with pre-integration: a segment whose midpoint is in a transparent
-  // block may reach into an occupied one)
-  const bool skipping = self->EmptySpaceSkipping && self->BlendMode == COMPOSITE_BLEND && !frame.PreInt;
+  // (pre-integrated segments are skipped only where they lie wholly in
+  // transparent blocks: SKIP_PREINT)
+  const bool skipping = self->EmptySpaceSkipping && self->BlendMode == COMPOSITE_BLEND;
   if (skipping && (this->OccupancyUpload != this->Scalars->GetDataVersion() ||
                     this->OccupancyTable != self->TableCount || !this->Occupancy->GetHandle()))
   {
@@ -1065,7 +1071,11 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
   // composite: point samples over their segment, or pre-integrated segments
   features.Enable(frame.PreInt ? "PREINT" : "POINT", mode == "COMPOSITE");
   features.Enable("SHADE_NOGRADIENT", shade && !this->Scalars->GetHasGradients());
-  if (skipTransparent || rangeSkipping)
+  if (skipTransparent && frame.PreInt)
+  {
+    features.Enable("SKIP_PREINT");
+  }
+  else if (skipTransparent || rangeSkipping)
   {
     features.Enable("SKIP");
     features.Enable(skipTransparent ? "SKIP_TRANSPARENT" : (mode == "MIP" ? "SKIP_MIP" : "SKIP_ISO"));
@@ -1094,31 +1104,49 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
   lattice = interactive ? self->InteractiveImageSampleDistance : self->ImageSampleDistance;
   lattice = std::max(1, std::min(lattice, std::min(vpWidth, vpHeight) / 2));
   self->LastImageSampleDistance = lattice;
+  // lattice ray i is the ray through pixel i L: rays 0 .. (W - 1) / L + 1 put
+  // one on either side of every pixel, and cell i (pixels i L .. i L + L - 1)
+  // lines up with llvmpipe's 4 x 4 shading blocks for L = 2, 4, 8, 16, so a
+  // block either interpolates or casts rays
   int* latticeSize = frame.LatticeSize;
-  latticeSize[0] = (vpWidth + lattice - 1) / std::max(lattice, 1);
-  latticeSize[1] = (vpHeight + lattice - 1) / std::max(lattice, 1);
+  latticeSize[0] = (vpWidth - 1) / std::max(lattice, 1) + 2;
+  latticeSize[1] = (vpHeight - 1) / std::max(lattice, 1) + 2;
   if (lattice > 1)
   {
-    if (!this->Lattice->GetHandle() || this->Lattice->GetContext() != renWin)
+    for (vtkTextureObject* texture : { this->Lattice.Get(), this->Cells.Get() })
     {
-      this->Lattice->SetContext(renWin);
-      this->Lattice->SetMinificationFilter(vtkTextureObject::Nearest);
-      this->Lattice->SetMagnificationFilter(vtkTextureObject::Nearest);
-      this->Lattice->SetWrapS(vtkTextureObject::ClampToEdge);
-      this->Lattice->SetWrapT(vtkTextureObject::ClampToEdge);
-      this->Lattice->Allocate2D(latticeSize[0], latticeSize[1], 4, VTK_FLOAT);
-      this->LatticeFBO->SetContext(renWin);
+      const int components = texture == this->Lattice ? 4 : 1;
+      if (!texture->GetHandle() || texture->GetContext() != renWin)
+      {
+        texture->SetContext(renWin);
+        // the lattice colour is interpolated by the texture unit (bilinear)
+        const int filter = texture == this->Lattice ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
+        texture->SetMinificationFilter(filter);
+        texture->SetMagnificationFilter(filter);
+        texture->SetWrapS(vtkTextureObject::ClampToEdge);
+        texture->SetWrapT(vtkTextureObject::ClampToEdge);
+        texture->Allocate2D(latticeSize[0], latticeSize[1], components, VTK_FLOAT);
+      }
+      else if (static_cast<int>(texture->GetWidth()) != latticeSize[0] ||
+        static_cast<int>(texture->GetHeight()) != latticeSize[1])
+      {
+        texture->Resize(latticeSize[0], latticeSize[1]);
+      }
     }
-    else if (static_cast<int>(this->Lattice->GetWidth()) != latticeSize[0] ||
-      static_cast<int>(this->Lattice->GetHeight()) != latticeSize[1])
-    {
-      this->Lattice->Resize(latticeSize[0], latticeSize[1]);
-    }
+    this->LatticeFBO->SetContext(renWin);
   }
   vtkPlumeShaderFeatures& coarseFeatures = frame.CoarseFeatures;
   coarseFeatures = features;
   coarseFeatures.Enable("COARSE");
-  features.Enable("REFINE", lattice > 1);
+  // the cell classification (returns before any ray code)
+  vtkPlumeShaderFeatures& classifyFeatures = frame.ClassifyFeatures;
+  classifyFeatures = features;
+  classifyFeatures.Enable("CLASSIFY");
+  // the interpolated cells; the ray program then draws the others' quads
+  vtkPlumeShaderFeatures& refineFeatures = frame.RefineFeatures;
+  refineFeatures = features;
+  refineFeatures.Enable("REFINE");
+  features.Enable("CELLS", lattice > 1);
   // An opaque isosurface writes its depth (as opaque geometry does), so what
   // draws after it, e.g. vtkPlumeAirlightPass's medium, stops there. Only
   // when every pixel casts its own ray: interpolated lattice pixels have no
@@ -1132,6 +1160,23 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
     if (!coarse)
     {
       vtkErrorWithObjectMacro(self, << "could not build the volume shader program (ray lattice)");
+      return false;
+    }
+  }
+  vtkShaderProgram*& classify = frame.Classify;
+  vtkShaderProgram*& refine = frame.Refine;
+  if (lattice > 1)
+  {
+    refine = this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, refineFeatures);
+    if (!refine)
+    {
+      vtkErrorWithObjectMacro(self, << "could not build the volume shader program (lattice interpolation)");
+      return false;
+    }
+    classify = this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, classifyFeatures);
+    if (!classify)
+    {
+      vtkErrorWithObjectMacro(self, << "could not build the volume shader program (lattice cells)");
       return false;
     }
   }
@@ -1401,12 +1446,21 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
   this->EmptyVAO->Bind();
   if (lattice > 1)
   {
-    // the lattice rays into their texture: premultiplied colour, no blending
+    // the lattice rays into their texture: premultiplied colour, no blending;
+    // the box's clip coordinates mapped so texel i is drawn where pixel i L is
+    // (texel position x' = (x - 1/2) / L + 1/2 for viewport position x)
     this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.CoarseFeatures);
     this->SetUniforms(self, frame, coarse);
-    const float clipScale[2] = { float(vpWidth) / float(lattice * latticeSize[0]),
-      float(vpHeight) / float(lattice * latticeSize[1]) };
+    float clipScale[2], clipOffset[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      const double n = latticeSize[k];
+      const double scale = double(frame.Viewport[k]) / (lattice * n);
+      clipScale[k] = static_cast<float>(scale);
+      clipOffset[k] = static_cast<float>(scale + (1.0 - 1.0 / lattice) / n - 1.0);
+    }
     coarse->SetUniform2f("ClipScale", clipScale);
+    coarse->SetUniform2f("ClipOffset", clipOffset);
     coarse->SetUniformf("Lattice", static_cast<float>(lattice));
     GLint viewport[4];
     glGetIntegerv(GL_VIEWPORT, viewport);
@@ -1423,27 +1477,97 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
       state->vtkglClear(GL_COLOR_BUFFER_BIT);
       state->vtkglDisable(GL_BLEND);
       glDrawArrays(GL_TRIANGLES, 0, 36);
+
+      // then classify every cell (one triangle over the whole texture)
+      this->LatticeFBO->RemoveColorAttachment(0);
+      this->LatticeFBO->AddColorAttachment(0, this->Cells);
+      this->LatticeFBO->ActivateDrawBuffers(1);
+      vtkShaderProgram* classify = frame.Classify;
+      this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.ClassifyFeatures);
+      this->SetUniforms(self, frame, classify);
+      this->Lattice->Activate();
+      classify->SetUniformi("LatticeColor", this->Lattice->GetTextureUnit());
+      classify->SetUniformf("Lattice", static_cast<float>(lattice));
+      const float latticeDims[2] = { float(latticeSize[0]), float(latticeSize[1]) };
+      classify->SetUniform2f("LatticeSize", latticeDims);
+      classify->SetUniformf("LatticeTolerance", static_cast<float>(self->LatticeTolerance));
+      state->vtkglDisable(GL_CULL_FACE);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      state->vtkglEnable(GL_CULL_FACE);
+      this->Lattice->Deactivate();
+      if (self->CountRays)
+      {
+        // the lattice's rays, plus every pixel of the viewport in a cell that casts its own
+        std::vector<float> cells(static_cast<size_t>(latticeSize[0]) * latticeSize[1]);
+        glReadPixels(0, 0, latticeSize[0], latticeSize[1], GL_RED, GL_FLOAT, cells.data());
+        double rays = double(latticeSize[0]) * latticeSize[1];
+        for (int j = 0; j * lattice < vpHeight; ++j)
+        {
+          for (int i = 0; i * lattice < vpWidth; ++i)
+          {
+            if (cells[static_cast<size_t>(j) * latticeSize[0] + i] != 0.0f)
+            {
+              rays += double(std::min(lattice, vpWidth - i * lattice)) * std::min(lattice, vpHeight - j * lattice);
+            }
+          }
+        }
+        self->LastRayCount = rays;
+      }
       state->vtkglEnable(GL_BLEND);
     }
     this->LatticeFBO->RemoveColorAttachment(0);
     state->PopFramebufferBindings();
     state->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.Features);
-    this->Lattice->Activate();
-    program->SetUniformi("LatticeColor", this->Lattice->GetTextureUnit());
-    program->SetUniformf("Lattice", static_cast<float>(lattice));
-    const float latticeDims[2] = { float(latticeSize[0]), float(latticeSize[1]) };
-    program->SetUniform2f("LatticeSize", latticeDims);
-    program->SetUniformf("LatticeTolerance", static_cast<float>(self->LatticeTolerance));
   }
-  this->SetUniforms(self, frame, program);
+  else if (self->CountRays)
+  {
+    self->LastRayCount = double(vpWidth) * vpHeight;
+  }
   const float unitScale[2] = { 1.0f, 1.0f };
+  const float noOffset[2] = { 0.0f, 0.0f };
+  const float latticeDims[2] = { float(latticeSize[0]), float(latticeSize[1]) };
+  if (lattice > 1)
+  {
+    // the interpolated cells: every pixel of the box in a cell classified 0
+    // (the others are discarded after one look-up)
+    vtkShaderProgram* refine = frame.Refine;
+    this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.RefineFeatures);
+    this->SetUniforms(self, frame, refine);
+    this->Lattice->Activate();
+    this->Cells->Activate();
+    refine->SetUniformi("LatticeColor", this->Lattice->GetTextureUnit());
+    refine->SetUniformi("CellRefine", this->Cells->GetTextureUnit());
+    refine->SetUniformf("Lattice", static_cast<float>(lattice));
+    refine->SetUniform2f("LatticeSize", latticeDims);
+    refine->SetUniform2f("ClipScale", unitScale);
+    refine->SetUniform2f("ClipOffset", noOffset);
+    glDrawArrays(GL_TRIANGLES, 0, 36);
+  }
+  this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.Features);
+  this->SetUniforms(self, frame, program);
   program->SetUniform2f("ClipScale", unitScale);
-  glDrawArrays(GL_TRIANGLES, 0, 36);
+  program->SetUniform2f("ClipOffset", noOffset);
+  if (lattice > 1)
+  {
+    // each pixel of the other cells casts its own ray: one quad per cell, those
+    // of interpolated cells collapsed in the vertex shader, so their pixels
+    // never run the ray program (llvmpipe would run its set-up for them)
+    program->SetUniformi("CellRefine", this->Cells->GetTextureUnit());
+    program->SetUniformf("Lattice", static_cast<float>(lattice));
+    program->SetUniform2f("LatticeSize", latticeDims);
+    state->vtkglDisable(GL_CULL_FACE);
+    glDrawArrays(GL_TRIANGLES, 0, 6 * latticeSize[0] * latticeSize[1]);
+    state->vtkglEnable(GL_CULL_FACE);
+  }
+  else
+  {
+    glDrawArrays(GL_TRIANGLES, 0, 36);
+  }
   this->EmptyVAO->Release();
   if (lattice > 1)
   {
     this->Lattice->Deactivate();
+    this->Cells->Deactivate();
   }
 
   if (!depthClampWasOn)

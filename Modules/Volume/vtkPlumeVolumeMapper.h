@@ -162,9 +162,10 @@ public:
    * entries), and its colour the extinction-weighted mean colour of the
    * values crossed (I_cσ / I_σ differences; self-attenuation inside the
    * segment is neglected). Sharp transfer functions then stay right at long
-   * steps (thin opacity peaks that plain sampling steps over). Empty-space
-   * skipping is off while it is on (a skipped midpoint's segment may reach
-   * into an occupied block). Default off.
+   * steps (thin opacity peaks that plain sampling steps over). With
+   * EmptySpaceSkipping, segments that lie wholly inside transparent blocks
+   * are jumped over (the blocks' value ranges share their boundary nodes, so
+   * every value between such a segment's ends is transparent too). Default off.
    */
   vtkSetMacro(PreIntegration, bool);
   vtkGetMacro(PreIntegration, bool);
@@ -177,14 +178,16 @@ public:
   ///@{
   /**
    * Ray lattice (VTK's ImageSampleDistance, made error-controlled): with a
-   * value L > 1, rays are first cast on a lattice one every L pixels (into a
-   * small texture); then every pixel whose four nearest lattice rays agree
-   * within LatticeTolerance, and (when rays stop at opaque geometry) whose
-   * opaque depth is what theirs predict within half a voxel, interpolates them
-   * bilinearly; every other pixel (edges, opaque-depth discontinuities,
-   * silhouettes) casts its own ray. Features narrower than L pixels that no
-   * lattice ray sees can be missed, as with the peers' ImageSampleDistance.
-   * Default 1 (one ray per pixel). Clamped to 1..16.
+   * value L > 1, rays are first cast on a lattice one every L pixels (the ray
+   * through pixel i L, into a small texture); then each cell of L x L pixels
+   * between four lattice rays is classified: where the lattice rays around it
+   * agree within LatticeTolerance and (when rays stop at opaque geometry)
+   * every pixel's opaque depth is what the corner rays predict within half a
+   * voxel, its pixels interpolate them bilinearly; in every other cell (edges,
+   * opaque-depth discontinuities, silhouettes) each pixel casts its own ray.
+   * Features narrower than L pixels that no lattice ray sees can be missed,
+   * as with the peers' ImageSampleDistance. Default 1 (one ray per pixel).
+   * Clamped to 1..16.
    */
   vtkSetClampMacro(ImageSampleDistance, int, 1, 16);
   vtkGetMacro(ImageSampleDistance, int);
@@ -218,6 +221,24 @@ public:
 
   /** The ray lattice used at the last render (1: one ray per pixel). */
   vtkGetMacro(LastImageSampleDistance, int);
+
+  ///@{
+  /**
+   * Count the rays of each render (diagnostics for tests and benchmarks: it
+   * reads the cell classification back, a GPU round trip). Default off.
+   */
+  vtkSetMacro(CountRays, bool);
+  vtkGetMacro(CountRays, bool);
+  vtkBooleanMacro(CountRays, bool);
+  ///@}
+
+  /**
+   * Rays cast at the last render with CountRays on (else the last counted):
+   * with a lattice, every lattice ray plus every viewport pixel of the cells
+   * that cast their own (where the box does not cover a pixel, its ray is not
+   * cast: an upper bound); with one ray per pixel, the viewport's pixels.
+   */
+  vtkGetMacro(LastRayCount, double);
 
   ///@{
   /** Per-pixel jitter of the first sample (against wood-grain). Default on. */
@@ -440,6 +461,8 @@ protected:
   bool AutoAdjustSampleDistances = true;
   double LatticeTolerance = 0.004;
   int LastImageSampleDistance = 1;
+  bool CountRays = false;
+  double LastRayCount = 0.0;
   double EffectiveOpacityThreshold = 1.0;
   double IsoValue;
   bool Smoke = false;

@@ -9,16 +9,26 @@
 // Two fields: "smoke" (three Gaussian puffs, mostly empty space) and "dense"
 // (a low-opacity field that fills the box), each unshaded and shaded (the
 // property's Shade on, headlight; note the peers' shading models differ from
-// ours in detail, so part of their shaded error is model, not sampling).
+// ours in detail, so part of their shaded error is model, not sampling); and
+// "smoke+geometry": the unshaded smoke with an opaque polygonal sphere through
+// two of its puffs, which every mapper composites against (rays stop at its
+// depth: depth edges inside the smoke); its reference job renders the sphere
+// alone, gives the reference that depth and composites it over the sphere's
+// colours, so the errors are of the whole picture.
 // Settings: ours at one ray per pixel and with the error-controlled ray
-// lattice (ImageSampleDistance 2, 4), steps up to 64 voxels and the 100-voxel
-// floor; "ours-base" is the state before issue 18's work (one ray per pixel,
+// lattice (ImageSampleDistance 2, 4, 8; at 4 and 8 also with looser
+// LatticeTolerance), steps up to 64 voxels and the 100-voxel floor; our jobs
+// report the rays they cast ("rays", counted in one extra frame); "ours-base" is the state before issue 18's work (one ray per pixel,
 // termination at 0.995); the peers at every step with ImageSampleDistance 1,
 // and in their interactive modes (ImageSampleDistance 2 and 4 at steps 1/4/16,
 // AutoAdjustSampleDistances at DesiredUpdateRate 15). Headline lines
 // (headline: true) pair every peer setting with our fastest setting whose
 // error is not above its error; "before" lines do the same for ours-base.
-// PLUME_BENCH_VOLUME_GRIDS=128 (or 256) runs one grid size.
+// PLUME_BENCH_VOLUME_GRIDS=128 (or 256) runs one grid size;
+// PLUME_BENCH_VOLUME_RUN=name lets single jobs run by hand share the reference
+// job's file (`PLUME_BENCH_VOLUME_RUN=a plume bench volume --job
+// reference:smoke+geometry:128`, then the render jobs with the same name);
+// PLUME_BENCH_VOLUME_FRAMES=n measures n frames per job.
 // Sparsity report: ours at step 1 with empty-space skipping and/or early ray
 // termination switched off, on the sparse smoke, the dense field and an
 // "opaque" one (the dense field with the smoke's opacity, where rays saturate
@@ -30,8 +40,10 @@
 #include "plumeBenchmarks.h"
 
 #include "vtkPlumeVolumeMapper.h"
+#include "vtkPlumeFrameReadBack.h"
 #include "vtkPlumeVolumeReference.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkFixedPointVolumeRayCastMapper.h"
@@ -41,8 +53,11 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSphereSource.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -121,7 +136,7 @@ const char* const SparsityConfigs[][2] = { { "ours-noskip", "empty-space skippin
   { "ours-noert", "early ray termination off" }, { "ours-plain", "skipping and early termination off" } };
 
 // a variant is a field, optionally shaded (property Shade on, same lighting for all)
-const char* Fields[] = { "smoke", "dense", "smoke+shaded", "dense+shaded" };
+const char* Fields[] = { "smoke", "dense", "smoke+shaded", "dense+shaded", "smoke+geometry" };
 
 std::string FieldOf(const std::string& variant)
 {
@@ -140,9 +155,33 @@ bool Shaded(const std::string& variant)
   return variant.find("+shaded") != std::string::npos;
 }
 
+// an opaque polygonal sphere in the volume (depth edges inside the smoke)
+bool WithGeometry(const std::string& variant)
+{
+  return variant.find("+geometry") != std::string::npos;
+}
+
 std::string Describe(const std::string& variant)
 {
-  return FieldOf(variant) + (Shaded(variant) ? ", shaded" : ", unshaded");
+  return FieldOf(variant) + (Shaded(variant) ? ", shaded" : ", unshaded") +
+    (WithGeometry(variant) ? ", opaque sphere" : "");
+}
+
+// the opaque geometry: a sphere of 48 x 48 facets through the first two puffs,
+// off-centre (its silhouette and the smoke's depth edges cross the image)
+void AddGeometry(vtkRenderer* renderer)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0.5, 0.48, 0.45);
+  sphere->SetRadius(0.16);
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(48);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.85, 0.75, 0.6);
+  renderer->AddActor(actor);
 }
 
 // Peer settings: kind = "gpu" or "fixed", optionally with a suffix for the
@@ -202,14 +241,41 @@ std::vector<double> PeerSteps(const std::string& kind, bool quick, int n)
 
 // our settings: one ray per pixel, and the error-controlled ray lattice
 // (ImageSampleDistance 2 and 4, refined where neighbouring rays disagree)
-const char* const OurKinds[] = { "ours", "ours-isd2", "ours-isd4" };
+// (ImageSampleDistance 2, 4 and 8, refined where neighbouring rays disagree),
+// at the default LatticeTolerance and at looser ones ("-tol0.016": tolerance
+// 0.016), the refinement criterion for the larger errors of the peers'
+// interactive settings
+const char* const OurKinds[] = { "ours", "ours-isd2", "ours-isd4", "ours-isd8", "ours-isd4-tol0.016",
+  "ours-isd8-tol0.016", "ours-isd8-tol0.064" };
 // "before": one ray per pixel and the former early-termination threshold 0.995
 // (termination budget 0.005: the same threshold wherever R <= 1, i.e. unshaded)
 const char* const BeforeKind = "ours-base";
 
+// --quick: the code paths (a lattice, a tolerance) in fewer jobs
+std::vector<std::string> OurKindList(bool quick)
+{
+  if (quick)
+  {
+    return { "ours", "ours-isd4", "ours-isd8-tol0.064" };
+  }
+  return std::vector<std::string>(std::begin(OurKinds), std::end(OurKinds));
+}
+
+// the LatticeTolerance of one of OurKinds (0: the default)
+double OurLatticeTolerance(const std::string& kind)
+{
+  const size_t t = kind.find("-tol");
+  return t == std::string::npos ? 0.0 : std::stod(kind.substr(t + 4));
+}
+
 int OurImageSampleDistance(const std::string& kind)
 {
-  return kind == "ours-isd4" ? 4 : (kind == "ours-isd2" ? 2 : 1);
+  const size_t i = kind.find("-isd");
+  if (kind.compare(0, 4, "ours") == 0 && i != std::string::npos)
+  {
+    return std::stoi(kind.substr(i + 4));
+  }
+  return 1;
 }
 
 // our steps: the peers' plus longer ones (our error grows slowly with the step;
@@ -305,9 +371,18 @@ void SetCamera(vtkRenderer* renderer)
   camera->SetClippingRange(0.5, 6.0);
 }
 
-// `run` is the pid of the `plume bench` process: getppid() in a job, getpid() in Report
+// `run` is the pid of the `plume bench` process: getppid() in a job, getpid() in
+// Report; PLUME_BENCH_VOLUME_RUN=name replaces it, so that single jobs run by
+// hand (`plume bench volume --job ...`, each with its own parent) share the
+// reference job's file
 std::string ReferencePath(const std::string& field, int n, bool quick, long run)
 {
+  const char* named = std::getenv("PLUME_BENCH_VOLUME_RUN");
+  if (named && *named)
+  {
+    return "/tmp/plume-bench-volume-" + std::string(named) + "-" + field + "-" + std::to_string(n) +
+      (quick ? "-quick" : "") + ".f32";
+  }
   return "/tmp/plume-bench-volume-" + std::to_string(run) + "-" + field + "-" + std::to_string(n) +
     (quick ? "-quick" : "") + ".f32";
 }
@@ -328,7 +403,11 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   const double step = c == std::string::npos ? 0.0 : std::stod(job.substr(c + 1));
   const bool quick = context.Quick;
   const int size = Size(quick);
-  const int frames = MeasuredFrames(quick, n);
+  // (PLUME_BENCH_VOLUME_FRAMES=n measures n frames: a job's CPU time at two
+  // frame counts gives the CPU time per frame, steadier than wall time on a
+  // loaded machine)
+  const char* framesText = std::getenv("PLUME_BENCH_VOLUME_FRAMES");
+  const int frames = framesText && std::atoi(framesText) > 0 ? std::atoi(framesText) : MeasuredFrames(quick, n);
   const int stride = Stride(quick, n);
   auto image = Field(field == "opaque" ? "dense" : field, n);
 
@@ -336,23 +415,41 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   Configure(volume->GetProperty(), variant);
   if (kind == "reference")
   {
-    // a window-less renderer: the camera, and the headlight VTK would create
+    // a window-less renderer: the camera, and the headlight VTK would create;
+    // with geometry, the window the render jobs draw in, showing the geometry
+    // alone: its depth stops the reference's rays, its colours lie behind them
+    vtkSmartPointer<vtkRenderWindow> window;
     vtkNew<vtkRenderer> renderer;
-    SetCamera(renderer);
-    renderer->CreateLight();
-    renderer->UpdateLightsGeometryToFollowCamera();
+    plume::FloatImage background;
+    if (WithGeometry(variant))
+    {
+      window = context.MakeWindow(size, size);
+      renderer->SetBackground(0, 0, 0);
+      window->AddRenderer(renderer);
+      AddGeometry(renderer);
+      SetCamera(renderer);
+      background = plume::ReadBack(window);
+    }
+    else
+    {
+      SetCamera(renderer);
+      renderer->CreateLight();
+      renderer->UpdateLightsGeometryToFollowCamera();
+    }
     vtkNew<vtkPlumeVolumeReference> reference;
     reference->SetInputData(image);
     reference->SetVolume(volume);
     reference->SetRenderer(renderer);
     reference->SetStep(0.125);
     reference->SetPixelStride(stride);
+    reference->SetOpaqueDepth(background.Depth);
     const double t0 = Now();
     reference->Compute(size, size);
     const double seconds = Now() - t0;
+    const std::vector<float> expected =
+      WithGeometry(variant) ? reference->CompositeOver(background.RGBA) : reference->GetImage();
     std::ofstream out(ReferencePath(variant, n, quick, getppid()), std::ios::binary);
-    out.write(reinterpret_cast<const char*>(reference->GetImage().data()),
-      reference->GetImage().size() * sizeof(float));
+    out.write(reinterpret_cast<const char*>(expected.data()), expected.size() * sizeof(float));
     return { { "reference_s", seconds }, { "peak_rss_mb", PeakRSSMB() } };
   }
 
@@ -360,6 +457,10 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0, 0, 0);
   window->AddRenderer(renderer);
+  if (WithGeometry(variant))
+  {
+    AddGeometry(renderer);
+  }
   window->Render();
   window->WaitForCompletion();
   SetCamera(renderer);
@@ -374,6 +475,10 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     ours->SetInputData(image);
     ours->SetSampleDistance(step);
     ours->SetImageSampleDistance(OurImageSampleDistance(kind));
+    if (OurLatticeTolerance(kind) > 0)
+    {
+      ours->SetLatticeTolerance(OurLatticeTolerance(kind));
+    }
     ours->SetPreIntegration(kind == PreIntKind);
     if (kind == "ours-base")
     {
@@ -438,7 +543,17 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
       times.push_back(Now() - t0);
     }
   }
-  // error of the last frame against the reference (background black: the image is the volume)
+  // one more frame of ours, the same image, counting its rays (the count reads
+  // the lattice's cells back: not in the timed frames)
+  double rays = 0;
+  if (isOurs)
+  {
+    ours->CountRaysOn();
+    window->Render();
+    rays = ours->GetLastRayCount();
+  }
+  // error of the last frame against the reference (background black: the
+  // image is the volume, over the geometry's colours where there is geometry)
   vtkNew<vtkFloatArray> rgba;
   window->GetRGBAPixelData(0, 0, size - 1, size - 1, 0, rgba, 0);
   std::vector<float> expected(4 * static_cast<size_t>(size) * size);
@@ -463,6 +578,10 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   }
   nlohmann::json result = { { "render_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() },
     { "empty_block_fraction", isOurs ? ours->GetEmptyBlockFraction() : 0.0 } };
+  if (isOurs)
+  {
+    result["rays"] = rays;
+  }
   // the image sample distance the peer ended on (auto: what it adapted to)
   if (gpuPeer)
   {
@@ -515,7 +634,9 @@ std::vector<std::string> Jobs(bool quick)
     for (const char* field : Fields)
     {
       jobs.push_back(JobId("reference", field, n));
-      for (const char* kind : { OurKinds[0], OurKinds[1], OurKinds[2], BeforeKind })
+      std::vector<std::string> kinds = OurKindList(quick);
+      kinds.push_back(BeforeKind);
+      for (const std::string& kind : kinds)
       {
         for (double step : OurSteps(quick, n))
         {
@@ -567,6 +688,7 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
 {
   std::vector<nlohmann::json> lines;
   const int size = Size(quick);
+  vtkNew<vtkPlumeVolumeMapper> defaults; // (the default LatticeTolerance)
   auto find = [&](const std::string& id) -> const nlohmann::json* {
     const auto it = results.find(id);
     return it == results.end() || !it->second.contains("render_s") ? nullptr : &it->second;
@@ -656,8 +778,9 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
             const nlohmann::json* best = nullptr;
             double bestStep = 0;
             int bestLattice = 1;
+            double bestTolerance = 0;
             const std::vector<std::string> candidates = before ? std::vector<std::string>{ BeforeKind }
-                                                               : std::vector<std::string>(std::begin(OurKinds), std::end(OurKinds));
+                                                               : OurKindList(quick);
             for (const std::string& ourKind : candidates)
             {
               for (double ourStep : ourSteps)
@@ -672,6 +795,7 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
                   best = ours;
                   bestStep = ourStep;
                   bestLattice = OurImageSampleDistance(ourKind);
+                  bestTolerance = OurLatticeTolerance(ourKind);
                 }
               }
             }
@@ -687,6 +811,8 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
                   (peer == "gpu-auto" ? std::string("its own") : StepText(peerStep) + " voxel") },
               { before ? "before" : "headline", true }, { "ours_s", o }, { "peer", PeerName(peer) }, { "peer_s", p },
               { "ratio", p / o }, { "grid", n }, { "ours_step", bestStep }, { "ours_image_sample_distance", bestLattice },
+              { "ours_lattice_tolerance", bestTolerance > 0 ? bestTolerance : defaults->GetLatticeTolerance() },
+              { "ours_rays", best->value("rays", 0.0) },
               { "peer_step", peerStep },
               { "error", (*best)["rms_error"] }, { "error_pixels", (*best)["error_pixels"] },
               { "peak_rss_mb", (*best)["peak_rss_mb"] }, { "empty_block_fraction", (*best)["empty_block_fraction"] } };
@@ -766,7 +892,7 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
 void RegisterVolume(std::map<std::string, Benchmark>& registry)
 {
   Benchmark b;
-  b.Description = "raycast 128^3 and 256^3 volumes into 512x512 (smoke and dense fields, several steps) vs "
+  b.Description = "raycast 128^3 and 256^3 volumes into 512x512 (smoke and dense fields, shaded, smoke with an opaque sphere; several steps and ray lattices) vs "
                   "vtkGPUVolumeRayCastMapper and vtkFixedPointVolumeRayCastMapper, errors vs the CPU reference; "
                   "sparsity report (skipping / early termination off vs on)";
   b.Jobs = Jobs;

@@ -9,7 +9,7 @@
 //   COMPOSITE | MIP | ISO | SMOKE   the mode
 //   POINT | PREINT   composite: a sample's value over its segment | segments
 //                    pre-integrated between their end values (no SKIP, PLAIN
-//                    or MASK then)
+//                    or MASK then; SKIP_PREINT instead of SKIP)
 //   JITTER           jittered first segment
 //   DEPTH            stop at the opaque scene's depth
 //   SKIP             empty-space skipping, with one of: SKIP_TRANSPARENT
@@ -17,6 +17,10 @@
 //                    (blocks whose max is not above the running max), SKIP_ISO
 //                    (blocks whose range misses the iso value by PLUME_ISO_MARGIN
 //                    on the side the ray already is; with MASK: SKIP_ISO+MASK blocks)
+//   SKIP_PREINT      PREINT's skipping: segments wholly inside transparent blocks
+//                    are jumped over (their end values lie in the blocks' ranges,
+//                    which overlap at shared nodes, so every value between them
+//                    is transparent too)
 //   SHADE            composite with gradient (Phong) shading of every sample
 //   PLAIN | GRADIENT (both with NOMASK) the volume texture is u | (u, central
 //                    differences along x, y, z) for shading in one look-up;
@@ -26,11 +30,17 @@
 //                    the valid nodes only, and extinction is weighted by g, so
 //                    the data fades out over its last voxel | a plain u texture
 //   COARSE           the ray-lattice pass: one ray per Lattice x Lattice pixels
-//                    into the lattice texture (pixel i: the ray through i L + L / 2)
-//   REFINE           the full-resolution pass after it: a pixel whose four
-//                    nearest lattice rays agree within LatticeTolerance (every
-//                    premultiplied channel) and, with DEPTH, whose opaque depth
-//                    is what theirs predict, interpolates them; else casts its own
+//                    into the lattice texture (texel i: the ray through pixel i L)
+//   CLASSIFY         after it, one fragment per lattice cell (the L x L pixels
+//                    between lattice rays i and i + 1): 0 where the rays around
+//                    agree within LatticeTolerance (every premultiplied channel)
+//                    and, with DEPTH, every pixel's opaque depth is what the
+//                    cell's corner rays predict; 1 (cast own rays) elsewhere
+//   REFINE           the full-resolution interpolation pass: a pixel in a cell
+//                    classified 0 interpolates the lattice bilinearly (one
+//                    filtered look-up); elsewhere it is discarded (nothing
+//                    else runs), and the ray program draws the cells
+//                    classified 1 (the vertex shader's CELLS)
 //   ISO_DEPTH        ISO without REFINE: the hit writes its window depth
 //                    (gl_FragDepth), as opaque geometry does
 // Values (#define): PLUME_LIGHTS n (lit modes), PLUME_ISO_MARGIN (SKIP_ISO).
@@ -58,13 +68,18 @@ uniform sampler2D TransferIntegral; // 1 row: rgb = running integral of c sigma,
 //PLUME::IF DEPTH
 uniform sampler2D OpaqueDepth;
 //PLUME::ENDIF
-//PLUME::IF COARSE REFINE
+//PLUME::IF COARSE REFINE CLASSIFY
 uniform float Lattice;              // pixels between lattice rays
 //PLUME::ENDIF
-//PLUME::IF REFINE
-uniform sampler2D LatticeColor;     // the lattice rays' premultiplied colour
+//PLUME::IF REFINE CLASSIFY
+uniform sampler2D LatticeColor;     // the lattice rays' premultiplied colour (linear filtering)
 uniform vec2 LatticeSize;
+//PLUME::ENDIF
+//PLUME::IF CLASSIFY
 uniform float LatticeTolerance;
+//PLUME::ENDIF
+//PLUME::IF REFINE
+uniform sampler2D CellRefine;       // per lattice cell: 0 = interpolate, 1 = cast own rays
 //PLUME::ENDIF
 //PLUME::IF JITTER
 uniform int JitterSeed;
@@ -72,10 +87,10 @@ uniform int JitterSeed;
 //PLUME::IF SKIP_MIP SKIP_ISO
 uniform sampler3D BlockRanges;      // per block: min, max of u
 //PLUME::ENDIF
-//PLUME::IF SKIP_TRANSPARENT
+//PLUME::IF SKIP_TRANSPARENT SKIP_PREINT
 uniform sampler3D Occupancy;        // per block: 0 = every value in it is transparent
 //PLUME::ENDIF
-//PLUME::IF SKIP
+//PLUME::IF SKIP SKIP_PREINT
 uniform float BlockSize;            // voxels per block
 uniform vec3 BlockDims;            // blocks per axis
 uniform vec3 DrawMin;              // bounds of the non-transparent blocks (index space)
@@ -285,7 +300,7 @@ vec3 phong(vec3 base, vec3 g, vec3 viewDir)
 }
 //PLUME::ENDIF
 
-//PLUME::IF DEPTH+REFINE
+//PLUME::IF DEPTH+CLASSIFY
 // where the ray through viewport position `local` meets the opaque scene,
 // index space, clamped to the box (rays that end beyond it all look alike)
 vec3 opaqueEnd(vec2 local)
@@ -299,26 +314,17 @@ vec3 opaqueEnd(vec2 local)
 
 void main()
 {
-  vec2 fragLocal = gl_FragCoord.xy - ViewportOrigin; // position in the viewport, pixels
-//PLUME::IF COARSE
-  fragLocal = gl_FragCoord.xy * Lattice; // (the lattice texture starts at 0)
-//PLUME::ENDIF
-//PLUME::IF REFINE
+//PLUME::IF CLASSIFY
   {
-    // the four nearest lattice rays (ray i sits at i L + L / 2)
-    vec2 c = fragLocal / Lattice - 0.5;
-    vec2 cf = floor(c);
-    vec2 f = c - cf;
+    // cell a: the pixels a L .. a L + L - 1, between lattice rays a and a + 1
+    ivec2 a = ivec2(gl_FragCoord.xy);
     ivec2 top = ivec2(LatticeSize) - 1;
-    ivec2 a00 = clamp(ivec2(cf), ivec2(0), top);
-    ivec2 a11 = clamp(ivec2(cf) + 1, ivec2(0), top);
     // the 4 x 4 lattice rays around (g[5], g[6], g[9], g[10] are the cell's corners)
     vec4 g[16];
     for (int k = 0; k < 16; ++k)
     {
-      g[k] = texelFetch(LatticeColor, clamp(ivec2(cf) + ivec2(k % 4 - 1, k / 4 - 1), ivec2(0), top), 0);
+      g[k] = texelFetch(LatticeColor, clamp(a + ivec2(k % 4 - 1, k / 4 - 1), ivec2(0), top), 0);
     }
-    vec4 c00 = g[5], c10 = g[6], c01 = g[9], c11 = g[10];
     // bilinear interpolation is exact for bilinear images; its error is about
     // 1/8 of the second differences across the cell (edges, silhouettes and
     // peaks make them large), taken at the four corners along x and y
@@ -330,27 +336,48 @@ void main()
     }
     bool agree = all(lessThanEqual(0.125 * curvature, vec4(LatticeTolerance)));
 //PLUME::ENDIF
-//PLUME::IF DEPTH+REFINE
+//PLUME::IF DEPTH+CLASSIFY
     if (agree)
     {
-      // no opaque edge between them: this pixel's opaque end is what theirs
-      // predict, within half a voxel
-      vec3 e = mix(mix(opaqueEnd((vec2(a00) + 0.5) * Lattice), opaqueEnd((vec2(a11.x, a00.y) + 0.5) * Lattice), f.x),
-        mix(opaqueEnd((vec2(a00.x, a11.y) + 0.5) * Lattice), opaqueEnd((vec2(a11) + 0.5) * Lattice), f.x), f.y);
-      agree = length(opaqueEnd(fragLocal) - e) <= 0.5;
+      // no opaque edge in the cell: every pixel's opaque end is what the
+      // corner rays' predict, within half a voxel
+      vec3 e00 = opaqueEnd(vec2(a) * Lattice + 0.5);
+      vec3 e10 = opaqueEnd(vec2(a + ivec2(1, 0)) * Lattice + 0.5);
+      vec3 e01 = opaqueEnd(vec2(a + ivec2(0, 1)) * Lattice + 0.5);
+      vec3 e11 = opaqueEnd(vec2(a + ivec2(1, 1)) * Lattice + 0.5);
+      int n = int(Lattice);
+      for (int j = 0; j < n && agree; ++j)
+      {
+        for (int i = 0; i < n && agree; ++i)
+        {
+          vec2 f = vec2(float(i), float(j)) / Lattice;
+          vec3 e = mix(mix(e00, e10, f.x), mix(e01, e11, f.x), f.y);
+          agree = length(opaqueEnd(vec2(a) * Lattice + vec2(float(i), float(j)) + 0.5) - e) <= 0.5;
+        }
+      }
     }
 //PLUME::ENDIF
+//PLUME::IF CLASSIFY
+    gl_FragData[0] = vec4(agree ? 0.0 : 1.0);
+    return;
+  }
+//PLUME::ENDIF
+  vec2 fragLocal = gl_FragCoord.xy - ViewportOrigin; // position in the viewport, pixels
+//PLUME::IF COARSE
+  fragLocal = (gl_FragCoord.xy - 0.5) * Lattice + 0.5; // texel i: pixel i L (the texture starts at 0)
+//PLUME::ENDIF
 //PLUME::IF REFINE
-    if (agree)
+  {
+    // pixel p lies in cell floor(p / L); at lattice position p / L
+    vec2 q = (fragLocal - 0.5) / Lattice;
+    ivec2 cell = clamp(ivec2(floor(q)), ivec2(0), ivec2(LatticeSize) - 1);
+    vec4 v = textureLod(LatticeColor, (q + 0.5) / LatticeSize, 0.0);
+    if (texelFetch(CellRefine, cell, 0).r != 0.0 || v.a <= 0.0)
     {
-      vec4 v = mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y);
-      if (v.a <= 0.0)
-      {
-        discard;
-      }
-      gl_FragData[0] = v;
-      return;
+      discard; // (the cell's own rays are drawn by the ray program)
     }
+    gl_FragData[0] = v;
+    return;
   }
 //PLUME::ENDIF
   vec2 ndc = 2.0 * fragLocal / ViewportSize - 1.0;
@@ -431,6 +458,23 @@ void main()
     s1 = min(s1, t.y);
   }
 //PLUME::ENDIF
+//PLUME::IF SKIP_PREINT
+  float m = 0.0;
+  float occupiedUntil = -1.0; // the segments starting before this t are in an occupied block
+  {
+    // outside the bounds of the non-transparent blocks nothing contributes:
+    // start at the segment (of the same lattice) that contains their entry
+    vec3 dd = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
+    vec3 tn = min((DrawMin - p0) / dd, (DrawMax - p0) / dd);
+    float enter = max(tn.x, max(tn.y, tn.z));
+    if (enter > s1)
+    {
+      m = floor((enter - segBase) / dt) + 1.0;
+      s0 = segBase + (m - 1.0) * dt;
+      s1 = min(s0 + dt, t.y);
+    }
+  }
+//PLUME::ENDIF
 //PLUME::IF PREINT
   // segments are pre-integrated between their end samples (the back one is
   // the next segment's front)
@@ -440,6 +484,46 @@ void main()
   {
     float tm = 0.5 * (s0 + s1);
     vec3 p = p0 + tm * d;
+//PLUME::IF SKIP_PREINT
+    if (s0 >= occupiedUntil)
+    {
+      // the run of transparent blocks the segment starts in (up to 16 blocks;
+      // each block is entered just past the previous one's exit: on a face,
+      // the one ahead)
+      vec3 dd = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
+      float eps = 1e-3 * dt;
+      float run = s0;  // the run of transparent blocks ends here
+      bool occupied = false;
+      for (int k = 0; k < 16 && run < t.y; ++k)
+      {
+        vec3 ps = p0 + (run + eps) * d;
+        ivec3 cell = clamp(ivec3(floor(ps / BlockSize)), ivec3(0), ivec3(BlockDims) - 1);
+        vec3 lo = vec3(cell) * BlockSize;
+        vec3 tf = max((lo - p0) / dd, (lo + BlockSize - p0) / dd);
+        float te = max(min(tf.x, min(tf.y, tf.z)), run + eps); // where the ray leaves it
+        if (texelFetch(Occupancy, cell, 0).r != 0.0)
+        {
+          occupied = true;
+          if (k == 0)
+          {
+            occupiedUntil = te; // no more look-ups until a segment starts past this block
+          }
+          break;
+        }
+        run = te;
+      }
+      if (s1 <= run || (!occupied && run >= t.y))
+      {
+        // this segment and the next ones up to the run's end add nothing: go
+        // to the segment that contains its end, its front sampled there
+        m = max(m + 1.0, floor((run - segBase) / dt) + 1.0);
+        s0 = segBase + (m - 1.0) * dt;
+        s1 = min(s0 + dt, t.y);
+        uFront = sampleU(p0 + s0 * d);
+        continue;
+      }
+    }
+//PLUME::ENDIF
 //PLUME::IF SKIP
     if (tm >= occupiedUntil)
     {
@@ -587,7 +671,7 @@ void main()
 //PLUME::ENDIF
     s0 = s1;
     s1 = min(s0 + dt, t.y);
-//PLUME::IF SKIP
+//PLUME::IF SKIP SKIP_PREINT
     m += 1.0;
 //PLUME::ENDIF
   }

@@ -6,18 +6,46 @@
 uniform mat4 IndexToClip;
 uniform vec3 DrawMin; // the box drawn: the volume, or only its non-transparent blocks
 uniform vec3 DrawMax;
-uniform vec2 ClipScale; // (1, 1); the ray lattice's pass: maps the viewport onto the lattice texture
+uniform vec2 ClipScale;  // (1, 1); the ray lattice's pass: with ClipOffset, maps the viewport onto the
+uniform vec2 ClipOffset; // (0, 0)   lattice texture (lattice ray i is the ray through pixel i L)
 
 // corner c of the unit cube is (c & 1, (c >> 1) & 1, (c >> 2) & 1);
 // triangles wind counter-clockwise seen from outside
 const int Corners[36] = int[36](0, 6, 2, 0, 4, 6, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
   2, 7, 3, 2, 6, 7, 0, 3, 1, 0, 2, 3, 4, 5, 7, 4, 7, 6);
 
+//PLUME::IF CELLS
+uniform sampler2D CellRefine; // per lattice cell: 0 = interpolated, 1 = cast own rays
+uniform float Lattice;
+uniform vec2 LatticeSize;
+uniform vec2 ViewportSize;
+const ivec2 QuadCorners[6] = ivec2[6](ivec2(0, 0), ivec2(1, 0), ivec2(1, 1), ivec2(0, 0), ivec2(1, 1), ivec2(0, 1));
+//PLUME::ENDIF
+
 void main()
 {
+//PLUME::IF CELLS
+  // the rays of the cells that cast their own: one quad per lattice cell (its
+  // L x L pixels), collapsed to a point outside the view where the cell is
+  // interpolated, so those pixels are never shaded by the ray program
+  ivec2 cell = ivec2(gl_VertexID / 6 % int(LatticeSize.x), gl_VertexID / 6 / int(LatticeSize.x));
+  if (texelFetch(CellRefine, cell, 0).r == 0.0)
+  {
+    gl_Position = vec4(2.0, 2.0, 0.0, 1.0);
+    return;
+  }
+  vec2 corner = min(vec2((cell + QuadCorners[gl_VertexID % 6]) * int(Lattice)), ViewportSize);
+  gl_Position = vec4(2.0 * corner / ViewportSize - 1.0, 0.0, 1.0);
+  return;
+//PLUME::ENDIF
+//PLUME::IF CLASSIFY
+  // the cell classification covers the whole lattice texture: one triangle
+  gl_Position = vec4(float((gl_VertexID & 1) * 4 - 1), float((gl_VertexID >> 1) * 4 - 1), 0.0, 1.0);
+  return;
+//PLUME::ENDIF
   int c = Corners[gl_VertexID];
   vec3 f = vec3(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1));
   gl_Position = IndexToClip * vec4(mix(DrawMin, DrawMax, f), 1.0);
-  // ndc' = (ndc + 1) s - 1, in clip space
-  gl_Position.xy = gl_Position.xy * ClipScale + (ClipScale - 1.0) * gl_Position.w;
+  // ndc' = ndc s + o, in clip space
+  gl_Position.xy = gl_Position.xy * ClipScale + ClipOffset * gl_Position.w;
 }

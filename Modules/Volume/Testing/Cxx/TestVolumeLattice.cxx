@@ -13,6 +13,12 @@
 //    isosurface's silhouettes); the images must differ somewhere (pixels were
 //    interpolated). (The rod, thinner than the lattice, is caught by the
 //    colours of the lattice rays that stop on it, before the depth check.)
+//  - fewer rays where the image is smooth, counted (CountRays): the smoke casts
+//    at most a third of one ray per pixel, while cells at depth edges and
+//    silhouettes cast their own (the opaque sphere and the rod add rays to the
+//    smoke's count; lattice rays plus refined cells' pixels, the upper bound
+//    the mapper reports); the default image (one ray per pixel) counts every
+//    pixel;
 //  - no stale frames: after a camera move, a transfer-function change and a
 //    data change, the image equals a fresh mapper's;
 //  - VTK's interaction convention: the interactive lattice while the window's
@@ -42,22 +48,32 @@ Diff Difference(const FloatImage& a, const FloatImage& b)
 }
 
 // renders the scene with lattice 1 and `lattice`; checks the lattice image
-// against the reference and against the one-ray image
+// against the reference and against the one-ray image; `rays` gets the
+// lattice image's ray count
 int CheckLattice(const char* name, plumevolumetest::Scene& s, int mode, double maxRMS, double maxError,
-  double maxFromOneRay, size_t minCovered = 100)
+  double maxFromOneRay, size_t minCovered = 100, double* rays = nullptr)
 {
   using namespace plumevolumetest;
+  s.Mapper->CountRaysOn();
   s.Mapper->SetImageSampleDistance(1);
   const FloatImage one = plume::test::ReadBack(s.Window);
+  const double oneRays = s.Mapper->GetLastRayCount();
   s.Mapper->SetImageSampleDistance(4);
   FloatImage latticeImage;
   const Result r = CompareWithReference(s, mode, 0.125, &latticeImage);
   const int used = s.Mapper->GetLastImageSampleDistance();
+  const double latticeRays = s.Mapper->GetLastRayCount();
+  if (rays)
+  {
+    *rays = latticeRays;
+  }
+  const double pixels = double(latticeImage.Width) * latticeImage.Height;
   const Diff d = Difference(latticeImage, one);
   int failures = Check(name, r, maxRMS, maxError, minCovered);
-  const bool ok = used == 4 && d.Max <= maxFromOneRay && d.RMS > 0;
-  std::printf("%-40s lattice %d; vs one ray per pixel: max %.4f (<= %.3f), RMS %.5f (> 0)%s\n", name, used, d.Max,
-    maxFromOneRay, d.RMS, ok ? "" : "  FAIL");
+  const bool ok = used == 4 && d.Max <= maxFromOneRay && d.RMS > 0 && oneRays == pixels && latticeRays < pixels;
+  std::printf("%-40s lattice %d; vs one ray per pixel: max %.4f (<= %.3f), RMS %.5f (> 0); rays %.0f of %.0f px "
+              "(one ray per pixel: %.0f)%s\n",
+    name, used, d.Max, maxFromOneRay, d.RMS, latticeRays, pixels, oneRays, ok ? "" : "  FAIL");
   return failures + (ok ? 0 : 1);
 }
 }
@@ -67,10 +83,16 @@ int TestVolumeLattice(int, char*[])
   using namespace plumevolumetest;
   int failures = 0;
   auto field = SmokeField(48);
+  double smokeRays = 0;
   {
     Scene s = MakeScene(field, 240, 200);
     s.Mapper->JitterOff();
-    failures += CheckLattice("smoke, lattice 4", s, vtkPlumeVolumeReference::COMPOSITE, 0.005, 0.05, 0.015);
+    failures += CheckLattice("smoke, lattice 4", s, vtkPlumeVolumeReference::COMPOSITE, 0.005, 0.05, 0.015, 100, &smokeRays);
+    // a smooth image really casts fewer rays (240 x 200 pixels)
+    const bool ok = smokeRays <= 240 * 200 / 3.0;
+    std::printf("%-40s %.0f rays (<= a third of %d px)%s\n", "smoke, lattice 4, rays", smokeRays, 240 * 200,
+      ok ? "" : "  FAIL");
+    failures += ok ? 0 : 1;
   }
   {
     // depth edges: an opaque sphere inside the smoke
@@ -86,7 +108,22 @@ int TestVolumeLattice(int, char*[])
     vtkNew<vtkActor> actor;
     actor->SetMapper(pm);
     s.Renderer->AddActor(actor);
-    failures += CheckLattice("opaque sphere, lattice 4", s, vtkPlumeVolumeReference::COMPOSITE, 0.005, 0.05, 0.015);
+    double rays = 0;
+    failures += CheckLattice("opaque sphere, lattice 4", s, vtkPlumeVolumeReference::COMPOSITE, 0.005, 0.05, 0.015, 100, &rays);
+    // its depth edges cast their own rays: with the colour criterion off
+    // (tolerance 1) the cells along the sphere's silhouette refine (41 cells of
+    // 4 x 4 here; at least 20 required), and without the sphere they do not
+    s.Mapper->SetLatticeTolerance(1.0);
+    plume::test::ReadBack(s.Window);
+    const double withSphere = s.Mapper->GetLastRayCount();
+    actor->VisibilityOff();
+    plume::test::ReadBack(s.Window);
+    const double without = s.Mapper->GetLastRayCount();
+    const bool ok = rays > smokeRays && withSphere >= without + 20 * 16;
+    std::printf("%-40s %.0f rays (> the smoke's %.0f); depth criterion alone: %.0f rays, %.0f without the sphere "
+                "(>= 320 more)%s\n",
+      "opaque sphere, lattice 4, rays", rays, smokeRays, withSphere, without, ok ? "" : "  FAIL");
+    failures += ok ? 0 : 1;
   }
   {
     // a depth edge the colours between lattice rays need not show: a thin rod
@@ -106,7 +143,12 @@ int TestVolumeLattice(int, char*[])
     actor->SetOrigin(0.42, 0.42, 0.8);
     actor->RotateZ(30);
     s.Renderer->AddActor(actor);
-    failures += CheckLattice("thin rod, lattice 4", s, vtkPlumeVolumeReference::COMPOSITE, 0.005, 0.05, 0.015);
+    double rays = 0;
+    failures += CheckLattice("thin rod, lattice 4", s, vtkPlumeVolumeReference::COMPOSITE, 0.005, 0.05, 0.015, 100, &rays);
+    const bool ok = rays > smokeRays;
+    std::printf("%-40s %.0f rays (> the smoke's %.0f)%s\n", "thin rod, lattice 4, rays", rays, smokeRays,
+      ok ? "" : "  FAIL");
+    failures += ok ? 0 : 1;
   }
   {
     // isosurface silhouettes
