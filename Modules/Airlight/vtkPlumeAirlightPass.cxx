@@ -29,6 +29,7 @@
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkVolume.h"
 #include "vtk_glew.h"
 
 #include <glm/glm.hpp>
@@ -620,6 +621,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   // delegate draws them into a layer of their own (MEDIA_LAYER), so that the
   // haze in front of them is added and the haze behind them dimmed by them.
   std::vector<float> mediaBoxes; // world bounds, min then max, at most MaximumMediaBoxes
+  std::vector<int> mediaCentred; // per box: 1 for a medium at the middle of its bounds (not a volume)
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
@@ -629,9 +631,13 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       continue;
     }
     const float box[6] = { float(b[0]), float(b[2]), float(b[4]), float(b[1]), float(b[3]), float(b[5]) };
+    // Volumes: extinction taken as uniform along the chord; other media
+    // (smoke sheets: a surface widened by its blur) sit at its middle.
+    const int centred = vtkVolume::SafeDownCast(prop) ? 0 : 1;
     if (mediaBoxes.size() < 6 * MaximumMediaBoxes)
     {
       mediaBoxes.insert(mediaBoxes.end(), box, box + 6);
+      mediaCentred.push_back(centred);
     }
     else
     {
@@ -642,6 +648,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
         last[k] = std::min(last[k], box[k]);
         last[3 + k] = std::max(last[3 + k], box[3 + k]);
       }
+      mediaCentred.back() = mediaCentred.back() && centred;
     }
   }
   vtkInformation* info = r->GetInformation();
@@ -976,6 +983,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
         hi.insert(hi.end(), &mediaBoxes[6 * k + 3], &mediaBoxes[6 * k + 6]);
       }
       program->SetUniformi("NumberOfMediaBoxes", boxes);
+      program->SetUniform1iv("MediaBoxCentred", boxes, mediaCentred.data());
       program->SetUniform3fv("MediaBoxMin", boxes, reinterpret_cast<const float(*)[3]>(lo.data()));
       program->SetUniform3fv("MediaBoxMax", boxes, reinterpret_cast<const float(*)[3]>(hi.data()));
       plume::SetUniformMatrix4x4(program, "EyeToWorldPoint", inverseView->GetData());

@@ -572,6 +572,7 @@ uniform int HasMediaTransmittance;
 uniform int NumberOfMediaBoxes;
 uniform vec3 MediaBoxMin[8];       // the media props' world bounds
 uniform vec3 MediaBoxMax[8];
+uniform int MediaBoxCentred[8];    // 1: a medium whose mass is at the middle of its bounds (smoke sheets)
 uniform mat4 EyeToWorldPoint;
 
 // Where the haze of the ray splits into "in front of the medium" and "behind
@@ -589,6 +590,7 @@ float mediaSplit(vec3 o, vec3 r, float xs, float av)
   vec3 inv = 1.0 / rw; // +-inf for an axis-parallel ray: the slab test still works
   float a = 1.0 / 0.0;
   float b = -1.0 / 0.0;
+  bool centred = true;
   for (int k = 0; k < NumberOfMediaBoxes; ++k)
   {
     vec3 t0 = (MediaBoxMin[k] - ow) * inv;
@@ -601,6 +603,7 @@ float mediaSplit(vec3 o, vec3 r, float xs, float av)
     {
       a = min(a, enter);
       b = max(b, leave);
+      centred = centred && MediaBoxCentred[k] == 1;
     }
   }
   a = max(a, 0.0);
@@ -609,8 +612,13 @@ float mediaSplit(vec3 o, vec3 r, float xs, float av)
   {
     return a < xs ? a : xs;
   }
+  // A sheet's bounds are its surface widened by its blur on every side: its
+  // smoke is at the middle of the chord, whatever its opacity.
   float f = 0.5;
-  if (av >= 1.0 - 1e-6)
+  if (centred)
+  {
+  }
+  else if (av >= 1.0 - 1e-6)
   {
     f = 0.0;
   }
