@@ -1,11 +1,14 @@
 #include "vtkPlumeAirlightPass.h"
 
 #include "vtkPlumeAirlightFS.h"
+#include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeGLMatrix.h"
+#include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeShaderVariants.h"
 
 #include "vtkCamera.h"
+#include "vtkInformation.h"
 #include "vtkOpaquePass.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
@@ -26,6 +29,7 @@
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkVolume.h"
 #include "vtk_glew.h"
 
 #include <glm/glm.hpp>
@@ -613,6 +617,65 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     return;
   }
 
+  // Translucent media (volumes, smoke sheets): a compositing pass in the
+  // delegate draws them into a layer of their own (MEDIA_LAYER), so that the
+  // haze in front of them is added and the haze behind them dimmed by them.
+  std::vector<float> mediaBoxes; // world bounds, min then max, at most MaximumMediaBoxes
+  std::vector<int> mediaCentred; // per box: 1 for a medium at the middle of its bounds (not a volume)
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    const double* b = vtkPlumeCompositingPass::IsMedium(prop) ? prop->GetBounds() : nullptr;
+    if (!b || !(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5]) || !std::isfinite(b[0] + b[1] + b[2] + b[3] + b[4] + b[5]))
+    {
+      continue;
+    }
+    const float box[6] = { float(b[0]), float(b[2]), float(b[4]), float(b[1]), float(b[3]), float(b[5]) };
+    // Volumes: extinction taken as uniform along the chord; other media
+    // (smoke sheets: a surface widened by its blur) sit at its middle.
+    const int centred = vtkVolume::SafeDownCast(prop) ? 0 : 1;
+    if (mediaBoxes.size() < 6 * MaximumMediaBoxes)
+    {
+      mediaBoxes.insert(mediaBoxes.end(), box, box + 6);
+      mediaCentred.push_back(centred);
+    }
+    else
+    {
+      // more media than the shader's slots: the last slot holds the union of the rest
+      float* last = &mediaBoxes[mediaBoxes.size() - 6];
+      for (int k = 0; k < 3; ++k)
+      {
+        last[k] = std::min(last[k], box[k]);
+        last[3 + k] = std::max(last[3 + k], box[3 + k]);
+      }
+      mediaCentred.back() = mediaCentred.back() && centred;
+    }
+  }
+  vtkInformation* info = r->GetInformation();
+  if (!mediaBoxes.empty())
+  {
+    if (!this->MediaTexture)
+    {
+      this->MediaTexture = vtkTextureObject::New();
+      this->MediaTexture->SetContext(renWin);
+      this->MediaTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->MediaTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->MediaTexture->Allocate2D(w, h, 4, VTK_FLOAT);
+    }
+    this->MediaTexture->Resize(w, h);
+    info->Set(vtkPlumeCompositingPass::MEDIA_LAYER(), this->MediaTexture);
+    if (!this->MediaTransmittanceTexture)
+    {
+      this->MediaTransmittanceTexture = vtkTextureObject::New();
+      this->MediaTransmittanceTexture->SetContext(renWin);
+      this->MediaTransmittanceTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->MediaTransmittanceTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->MediaTransmittanceTexture->Allocate2D(w, h, 4, VTK_FLOAT);
+    }
+    this->MediaTransmittanceTexture->Resize(w, h);
+    info->Set(vtkPlumeCompositingPass::MEDIA_TRANSMITTANCE(), this->MediaTransmittanceTexture);
+  }
+
   // 1. The scene into our float colour + depth targets.
   ostate->PushFramebufferBindings();
   this->FrameBuffer->Bind();
@@ -630,6 +693,20 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   this->FrameBuffer->RemoveColorAttachments(1);
   this->FrameBuffer->RemoveDepthAttachment();
   ostate->PopFramebufferBindings();
+  this->NumberOfMediaInLayer = info->Has(vtkPlumeCompositingPass::MEDIA_LAYER_DRAWN())
+    ? info->Get(vtkPlumeCompositingPass::MEDIA_LAYER_DRAWN())
+    : 0;
+  auto* mediaDepth =
+    vtkPlumeOpaqueDepthTexture::SafeDownCast(info->Get(vtkPlumeCompositingPass::MEDIA_LAYER_DEPTH()));
+  vtkTextureObject* mediaDepthTexture = mediaDepth ? mediaDepth->GetTextureObject() : nullptr;
+  const bool mediaTransmittance = info->Has(vtkPlumeCompositingPass::MEDIA_TRANSMITTANCE_DRAWN()) &&
+    info->Get(vtkPlumeCompositingPass::MEDIA_TRANSMITTANCE_DRAWN()) == 1;
+  info->Remove(vtkPlumeCompositingPass::MEDIA_TRANSMITTANCE());
+  info->Remove(vtkPlumeCompositingPass::MEDIA_TRANSMITTANCE_DRAWN());
+  info->Remove(vtkPlumeCompositingPass::MEDIA_LAYER());
+  info->Remove(vtkPlumeCompositingPass::MEDIA_LAYER_DRAWN());
+  info->Remove(vtkPlumeCompositingPass::MEDIA_LAYER_DEPTH());
+  const bool media = this->NumberOfMediaInLayer > 0;
 
   // 2. The lights, in eye coordinates (the delegate has updated their geometry),
   // split into groups of at most MaximumLights (one shader pass each).
@@ -694,7 +771,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   // (colour, depth, table, low-resolution airlight).
   GLint textureUnits = 16;
   glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &textureUnits);
-  const int shadowLimit = std::max(0, std::min<int>(MaximumShadowedLights, textureUnits - 4));
+  const int shadowLimit = std::max(0, std::min<int>(MaximumShadowedLights, textureUnits - (media ? 7 : 4)));
   vtkLightCollection* lights = r->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
@@ -821,6 +898,18 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   this->ColorTexture->Activate();
   this->DepthTexture->Activate();
   this->TableTexture->Activate();
+  if (media)
+  {
+    this->MediaTexture->Activate();
+    if (mediaTransmittance)
+    {
+      this->MediaTransmittanceTexture->Activate();
+    }
+    if (mediaDepthTexture)
+    {
+      mediaDepthTexture->Activate();
+    }
+  }
   for (size_t gi = 0; gi < groups.size(); ++gi)
   {
     const Group& group = groups[gi];
@@ -837,6 +926,11 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     {
       features.insert("SHADOW");
       defines << "#define NUMBER_OF_SHADOWS " << group.Shadows << "\n";
+    }
+    if (media)
+    {
+      features.insert("MEDIA");
+      defines << "#define HAS_MEDIA\n";
     }
     if (this->MarchSteps > 0)
     {
@@ -871,6 +965,29 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     program->SetUniformi("SceneDepth", this->DepthTexture->GetTextureUnit());
     program->SetUniformi("Table", this->TableTexture->GetTextureUnit());
     program->SetUniformi("TableSize", this->UploadedTableResolution);
+    if (media)
+    {
+      program->SetUniformi("MediaLayer", this->MediaTexture->GetTextureUnit());
+      // (without the depth before the media, the sampler still needs a valid unit)
+      program->SetUniformi("MediaDepth",
+        (mediaDepthTexture ? mediaDepthTexture : this->MediaTexture)->GetTextureUnit());
+      program->SetUniformi("HasMediaDepth", mediaDepthTexture ? 1 : 0);
+      program->SetUniformi("MediaTransmittance",
+        (mediaTransmittance ? this->MediaTransmittanceTexture : this->MediaTexture)->GetTextureUnit());
+      program->SetUniformi("HasMediaTransmittance", mediaTransmittance ? 1 : 0);
+      const int boxes = static_cast<int>(mediaBoxes.size() / 6);
+      std::vector<float> lo, hi;
+      for (int k = 0; k < boxes; ++k)
+      {
+        lo.insert(lo.end(), &mediaBoxes[6 * k], &mediaBoxes[6 * k + 3]);
+        hi.insert(hi.end(), &mediaBoxes[6 * k + 3], &mediaBoxes[6 * k + 6]);
+      }
+      program->SetUniformi("NumberOfMediaBoxes", boxes);
+      program->SetUniform1iv("MediaBoxCentred", boxes, mediaCentred.data());
+      program->SetUniform3fv("MediaBoxMin", boxes, reinterpret_cast<const float(*)[3]>(lo.data()));
+      program->SetUniform3fv("MediaBoxMax", boxes, reinterpret_cast<const float(*)[3]>(hi.data()));
+      plume::SetUniformMatrix4x4(program, "EyeToWorldPoint", inverseView->GetData());
+    }
     {
       const double g = this->UploadedTableAnisotropy;
       const float stretch[2] = { static_cast<float>(g > 0.0 ? PhaseStretch(g) : 0.0),
@@ -1015,6 +1132,18 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   this->ColorTexture->Deactivate();
   this->DepthTexture->Deactivate();
   this->TableTexture->Deactivate();
+  if (media)
+  {
+    this->MediaTexture->Deactivate();
+    if (mediaTransmittance)
+    {
+      this->MediaTransmittanceTexture->Deactivate();
+    }
+    if (mediaDepthTexture)
+    {
+      mediaDepthTexture->Deactivate();
+    }
+  }
   vtkOpenGLCheckErrorMacro("failed after vtkPlumeAirlightPass::Render");
 }
 
@@ -1027,7 +1156,9 @@ void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
     delete q.second;
   }
   this->Quads.clear();
-  for (vtkTextureObject** t : { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->LowTexture })
+  for (vtkTextureObject** t :
+    { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->LowTexture, &this->MediaTexture,
+      &this->MediaTransmittanceTexture })
   {
     if (*t)
     {

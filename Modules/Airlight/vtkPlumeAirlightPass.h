@@ -70,6 +70,18 @@
  * unshadowed result; no arctan in the loop). Every light can be shadowed
  * (MaximumShadowedLights = 8 per light group, one sampler each).
  *
+ * Translucent media (Plume's volumes and smoke sheets, VTK's volumes): when
+ * the delegate is a vtkPlumeCompositingPass, its media step draws into a
+ * layer of this pass (vtkPlumeCompositingPass::MEDIA_LAYER) instead of the
+ * scene colour, giving their premultiplied colour Cv and opacity av per
+ * pixel (and, when smoke sheets are among them, their RGB transmittance Tv
+ * from a second draw over white; else Tv = 1 - av). The haze along the view ray is split at a depth xv on the ray's
+ * chord through the media's bounds: C = A[0, xv] + exp(-kt xv) Cv +
+ * (1 - av) (A[xv, ds] + exp(-kt ds) C_surface). xv is exact to first order
+ * for a medium of uniform extinction along the chord (see
+ * Documentation/Airlight.md); a medium that writes depth (an opaque
+ * isosurface) is a surface, all the haze up to it in front.
+ *
  * Limits: a light exactly on a view ray (the integral of 1/d^2 diverges)
  * gives a huge but finite value, clamped to 1e20.
  */
@@ -268,6 +280,17 @@ public:
   vtkGetMacro(TableResolution, int);
   ///@}
 
+  /**
+   * How many translucent media the delegate's compositing pass drew into
+   * this pass's media layer in the last frame (0: none, or no compositing
+   * pass in the delegate: the media then lie in the scene colour and are
+   * treated as at the opaque depth behind them).
+   */
+  vtkGetMacro(NumberOfMediaInLayer, int);
+
+  /** At most this many media bounding boxes go to the shader; further media share the last (their union). */
+  static constexpr int MaximumMediaBoxes = 8;
+
   /** True if the medium scatters or absorbs in some channel (else the pass only runs its delegate). */
   bool HasMedium() const;
 
@@ -313,6 +336,7 @@ protected:
   int ReportedUnshadowed = 0;
   int NumberOfIgnoredLights = 0; // always 0 (kept for compatibility)
   int NumberOfLightGroups = 0;
+  int NumberOfMediaInLayer = 0;
 
   struct ShadowMap;
   std::vector<ShadowMap*> ShadowMaps;
@@ -326,6 +350,8 @@ protected:
   vtkTextureObject* TableTexture = nullptr;
   vtkOpenGLFramebufferObject* LowFrameBuffer = nullptr; // Downsampling > 1
   vtkTextureObject* LowTexture = nullptr;
+  vtkTextureObject* MediaTexture = nullptr; // translucent media's premultiplied layer
+  vtkTextureObject* MediaTransmittanceTexture = nullptr; // the media over 1: minus the layer, their RGB transmittance
   int UploadedTableResolution = 0;
   double UploadedTableAnisotropy = 0.0;
   // One full-screen program per variant (lights, spots, shadows of a group),

@@ -195,6 +195,120 @@ void vtkPlumeAirlightReference::SetLights(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+void vtkPlumeAirlightReference::AddSmokeBox(const double bounds[6], double extinction, const double colour[3])
+{
+  SmokeBox b;
+  std::copy(bounds, bounds + 6, b.Bounds);
+  b.Extinction = extinction;
+  std::copy(colour, colour + 3, b.Colour);
+  this->Smoke.push_back(b);
+}
+
+std::vector<std::array<double, 2>> vtkPlumeAirlightReference::SmokeChords(const double o[3], const double r[3]) const
+{
+  std::vector<std::array<double, 2>> chords;
+  for (const SmokeBox& b : this->Smoke)
+  {
+    double enter = -HUGE_VAL, leave = HUGE_VAL;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (r[k] == 0.0)
+      {
+        if (o[k] < b.Bounds[2 * k] || o[k] > b.Bounds[2 * k + 1])
+        {
+          enter = HUGE_VAL; // parallel to the slab and outside it
+          leave = -HUGE_VAL;
+        }
+        continue;
+      }
+      double t0 = (b.Bounds[2 * k] - o[k]) / r[k];
+      double t1 = (b.Bounds[2 * k + 1] - o[k]) / r[k];
+      if (t0 > t1)
+      {
+        std::swap(t0, t1);
+      }
+      enter = std::max(enter, t0);
+      leave = std::min(leave, t1);
+    }
+    chords.push_back({ std::max(enter, 0.0), leave });
+  }
+  return chords;
+}
+
+double vtkPlumeAirlightReference::SmokeDepth(const std::vector<std::array<double, 2>>& chords, double x) const
+{
+  double depth = 0.0;
+  for (size_t k = 0; k < chords.size(); ++k)
+  {
+    const double len = std::min(x, chords[k][1]) - chords[k][0];
+    if (len > 0.0)
+    {
+      depth += this->Smoke[k].Extinction * len;
+    }
+  }
+  return depth;
+}
+
+void vtkPlumeAirlightReference::ComputeSmoke(const double origin[3], const double direction[3], double distance,
+  double emission[3], double* transmittance) const
+{
+  const glm::dvec3 rn = glm::normalize(glm::dvec3(direction[0], direction[1], direction[2]));
+  const double r[3] = { rn.x, rn.y, rn.z };
+  const auto chords = this->SmokeChords(origin, r);
+  double kt[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    kt[c] = this->Scattering[c] + this->Absorption[c];
+    emission[c] = 0.0;
+  }
+  if (transmittance)
+  {
+    *transmittance = std::exp(-this->SmokeDepth(chords, distance));
+  }
+  for (size_t k = 0; k < chords.size(); ++k)
+  {
+    const double a = chords[k][0], b = std::min(chords[k][1], distance);
+    if (!(b > a))
+    {
+      continue;
+    }
+    const SmokeBox& box = this->Smoke[k];
+    auto f = [&](double x) -> RGB {
+      const double T = std::exp(-this->SmokeDepth(chords, x));
+      RGB v;
+      for (int c = 0; c < 3; ++c)
+      {
+        v[c] = box.Colour[c] * box.Extinction * T * std::exp(-kt[c] * x);
+      }
+      return v;
+    };
+    // split at the other boxes' ends inside this chord (the integrand's kinks)
+    std::vector<double> cuts = { a, b };
+    for (const auto& c : chords)
+    {
+      for (double x : { c[0], c[1] })
+      {
+        if (x > a && x < b)
+        {
+          cuts.push_back(x);
+        }
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    for (size_t p = 0; p + 1 < cuts.size(); ++p)
+    {
+      const RGB fa = f(cuts[p]), fb = f(cuts[p + 1]);
+      const double scale = std::max(MaxAbs(fa), MaxAbs(fb)) * (cuts[p + 1] - cuts[p]);
+      const RGB v = Integrate(f, cuts[p], cuts[p + 1], this->RelativeTolerance * scale + 1e-300);
+      for (int c = 0; c < 3; ++c)
+      {
+        emission[c] += v[c];
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkPlumeAirlightReference::ComputeRay(
   const double origin[3], const double direction[3], double distance, double airlight[3]) const
 {
@@ -209,6 +323,8 @@ void vtkPlumeAirlightReference::ComputeRay(
   }
   const bool infinite = std::isinf(distance);
   const double hg = this->ScatteringAnisotropy;
+  const double rArray[3] = { r.x, r.y, r.z };
+  const auto chords = this->SmokeChords(origin, rArray);
   for (const Light& light : this->Lights)
   {
     const glm::dvec3 L(light.Position[0], light.Position[1], light.Position[2]);
@@ -253,11 +369,15 @@ void vtkPlumeAirlightReference::ComputeRay(
         const double cosScatter = -glm::dot(v, r) / d;
         w *= (1.0 - hg * hg) / std::pow(1.0 + hg * hg - 2.0 * hg * cosScatter, 1.5);
       }
+      // the smoke's optical depth between the eye and the scattering point
+      const double smoke = chords.empty() ? 0.0 : this->SmokeDepth(chords, x);
       RGB value;
       for (int c = 0; c < 3; ++c)
       {
         // exp of the sum: 1/d^2 and the extinction never meet as inf * 0.
-        value[c] = (d2 > 0.0 && w > 0.0) ? coef[c] * w * std::exp(-kt[c] * (x + d) - std::log(d2)) : 0.0;
+        value[c] = (d2 > 0.0 && w > 0.0)
+          ? coef[c] * w * std::exp(-kt[c] * (x + d) - std::log(d2) - smoke)
+          : 0.0;
       }
       return value;
     };
@@ -283,6 +403,17 @@ void vtkPlumeAirlightReference::ComputeRay(
       if (x > 0.0 && (infinite || x < distance))
       {
         breaks.push_back(x);
+      }
+    }
+    // the smoke boxes' ends: kinks of the transmittance
+    for (const auto& c : chords)
+    {
+      for (double x : { c[0], c[1] })
+      {
+        if (c[0] < c[1] && x > 0.0 && std::isfinite(x) && (infinite || x < distance))
+        {
+          breaks.push_back(x);
+        }
       }
     }
     std::sort(breaks.begin(), breaks.end());
@@ -411,10 +542,15 @@ void vtkPlumeAirlightReference::ComputeImage(vtkRenderer* renderer, int w, int h
       const double origin[3] = { o.x, o.y, o.z };
       const double direction[3] = { dir.x, dir.y, dir.z };
       this->ComputeRay(origin, direction, distance, air);
+      double emission[3] = { 0, 0, 0 }, smokeT = 1.0;
+      if (!this->Smoke.empty())
+      {
+        this->ComputeSmoke(origin, direction, distance, emission, &smokeT);
+      }
       for (int c = 0; c < 3; ++c)
       {
         const double T = kt[c] == 0.0 ? 1.0 : std::exp(-kt[c] * distance);
-        out[4 * p + c] = static_cast<float>(rgba[4 * p + c] * T + air[c]);
+        out[4 * p + c] = static_cast<float>(rgba[4 * p + c] * T * smokeT + emission[c] + air[c]);
         if (airlight)
         {
           (*airlight)[4 * p + c] = static_cast<float>(air[c]);

@@ -12,13 +12,19 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
 #include "vtkOrderIndependentTranslucentPass.h"
+#include "vtkOverlayPass.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkTextureObject.h"
 #include "vtkTranslucentPass.h"
 #include "vtkVolume.h"
+
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <array>
@@ -111,12 +117,23 @@ vtkStandardNewMacro(vtkPlumeCompositingPass);
 vtkInformationKeyMacro(vtkPlumeCompositingPass, STAGE, Integer);
 vtkInformationKeyMacro(vtkPlumeCompositingPass, CURRENT_STAGE, Integer);
 vtkInformationKeyMacro(vtkPlumeCompositingPass, OPAQUE_DEPTH, ObjectBase);
+vtkInformationKeyMacro(vtkPlumeCompositingPass, MEDIA_LAYER, ObjectBase);
+vtkInformationKeyMacro(vtkPlumeCompositingPass, MEDIA_LAYER_DRAWN, Integer);
+vtkInformationKeyMacro(vtkPlumeCompositingPass, MEDIA_LAYER_DEPTH, ObjectBase);
+vtkInformationKeyMacro(vtkPlumeCompositingPass, MEDIA_TRANSMITTANCE, ObjectBase);
+vtkInformationKeyMacro(vtkPlumeCompositingPass, MEDIA_TRANSMITTANCE_DRAWN, Integer);
+
+bool vtkPlumeCompositingPass::IsMedium(vtkProp* prop)
+{
+  return prop && prop->GetVisibility() && (vtkVolume::SafeDownCast(prop) || StagedMapper(prop, STAGE_MEDIA));
+}
 
 //------------------------------------------------------------------------------
 vtkPlumeCompositingPass::vtkPlumeCompositingPass()
   : Steps(vtkSmartPointer<vtkRenderStepsPass>::New())
   , Opaque(vtkSmartPointer<vtkOpaquePass>::New())
   , Translucent(vtkSmartPointer<vtkTranslucentPass>::New())
+  , Overlay(vtkSmartPointer<vtkOverlayPass>::New())
   , Depth(vtkSmartPointer<vtkPlumeOpaqueDepthTexture>::New())
 {
   // the frame's shared depth: anti-aliased edges of lines stop volumes and sheets (issue 15)
@@ -131,6 +148,7 @@ vtkPlumeCompositingPass::vtkPlumeCompositingPass()
   this->Steps->SetOpaquePass(MakeStep(this, &vtkPlumeCompositingPass::RenderOpaqueAndSurfaces));
   this->Steps->SetTranslucentPass(MakeStep(this, &vtkPlumeCompositingPass::RenderTranslucent));
   this->Steps->SetVolumetricPass(MakeStep(this, &vtkPlumeCompositingPass::RenderMedia));
+  this->Steps->SetOverlayPass(MakeStep(this, &vtkPlumeCompositingPass::RenderOverlay));
 }
 
 vtkPlumeCompositingPass::~vtkPlumeCompositingPass() = default;
@@ -208,6 +226,7 @@ void vtkPlumeCompositingPass::Render(const vtkRenderState* s)
   this->LastMediaOrder.clear();
   this->LastDepthShared = false;
   this->Steps->Render(s);
+  this->RestoreColorAttachment(); // (already done by the overlay step unless it did not run)
   this->NumberOfRenderedProps = this->Steps->GetNumberOfRenderedProps();
   // a renderer that later renders without the pass gets stand-alone mappers
   info->Remove(CURRENT_STAGE());
@@ -251,7 +270,7 @@ void vtkPlumeCompositingPass::RenderOpaqueAndSurfaces(const vtkRenderState* s)
   for (int i = 0; i < s->GetPropArrayCount() && !anyMedium; ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    anyMedium = prop->GetVisibility() && (vtkVolume::SafeDownCast(prop) || StagedMapper(prop, STAGE_MEDIA));
+    anyMedium = IsMedium(prop);
   }
   if (!anyMedium)
   {
@@ -292,26 +311,138 @@ void vtkPlumeCompositingPass::RenderMedia(const vtkRenderState* s)
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    if (prop->GetVisibility() && (vtkVolume::SafeDownCast(prop) || StagedMapper(prop, STAGE_MEDIA)))
+    if (IsMedium(prop))
     {
       media.push_back(MakeEntry(prop, eye));
     }
   }
   this->LastMediaOrder = SortBackToFront(media);
-  ren->GetInformation()->Set(CURRENT_STAGE(), STAGE_MEDIA);
-  for (vtkProp* prop : this->LastMediaOrder)
+  vtkInformation* info = ren->GetInformation();
+  info->Set(CURRENT_STAGE(), STAGE_MEDIA);
+  // A media layer asked for by an outer pass: the media draw into it in place
+  // of the frame's colour attachment (same depth attachment), cleared first.
+  auto* layer = vtkTextureObject::SafeDownCast(info->Get(MEDIA_LAYER()));
+  GLint framebuffer = 0, previous = 0, previousType = GL_NONE;
+  if (layer && !this->LastMediaOrder.empty())
   {
-    if (vtkVolume::SafeDownCast(prop))
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    if (framebuffer == 0)
     {
-      *step->Rendered += prop->RenderVolumetricGeometry(ren);
-    }
-    else
-    {
-      *step->Rendered += prop->HasOpaqueGeometry() ? prop->RenderOpaqueGeometry(ren)
-                                                   : prop->RenderTranslucentPolygonalGeometry(ren);
+      layer = nullptr; // the default framebuffer's attachments cannot be swapped
+      if (!this->WarnedLayer)
+      {
+        vtkWarningMacro(<< "a media layer was asked for, but the frame is drawn into the default framebuffer");
+        this->WarnedLayer = true;
+      }
     }
   }
-  ren->GetInformation()->Set(CURRENT_STAGE(), STAGE_VTK);
+  auto drawMedia = [&](bool count) {
+    int rendered = 0;
+    for (vtkProp* prop : this->LastMediaOrder)
+    {
+      if (vtkVolume::SafeDownCast(prop))
+      {
+        rendered += prop->RenderVolumetricGeometry(ren);
+      }
+      else
+      {
+        rendered += prop->HasOpaqueGeometry() ? prop->RenderOpaqueGeometry(ren)
+                                              : prop->RenderTranslucentPolygonalGeometry(ren);
+      }
+    }
+    *step->Rendered += count ? rendered : 0;
+  };
+  if (!layer || framebuffer == 0)
+  {
+    drawMedia(true);
+    info->Set(CURRENT_STAGE(), STAGE_VTK);
+    return;
+  }
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &previousType);
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &previous);
+  this->LayerAttachment = { static_cast<int>(previousType), static_cast<int>(previous) };
+  this->LayerAttached = true;
+  this->Layer = layer;
+  this->Transmittance = nullptr;
+  // Media that are not premultiplied "over" with one opacity (smoke sheets
+  // multiply the frame by an RGB transmittance): drawn a second time over a
+  // layer cleared to 1, whose difference from the first is their transmittance.
+  auto* transmittance = vtkTextureObject::SafeDownCast(info->Get(MEDIA_TRANSMITTANCE()));
+  bool anyStaged = false;
+  for (vtkProp* prop : this->LastMediaOrder)
+  {
+    anyStaged = anyStaged || !vtkVolume::SafeDownCast(prop);
+  }
+  this->AttachAndClear(ren, layer, 0.0);
+  drawMedia(true);
+  if (transmittance && anyStaged)
+  {
+    this->Transmittance = transmittance;
+    this->AttachAndClear(ren, transmittance, 1.0);
+    drawMedia(false);
+    info->Set(MEDIA_TRANSMITTANCE_DRAWN(), 1);
+  }
+  // The overlay (2D actors: colour bars, titles) draws over the media, so into
+  // the layer(s) too; the frame's own colour attachment is put back after it.
+  info->Set(MEDIA_LAYER_DRAWN(), static_cast<int>(this->LastMediaOrder.size()));
+  if (this->LastDepthShared)
+  {
+    info->Set(MEDIA_LAYER_DEPTH(), this->Depth);
+  }
+  info->Set(CURRENT_STAGE(), STAGE_VTK);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeCompositingPass::RenderOverlay(const vtkRenderState* s)
+{
+  auto* step = static_cast<vtkPlumeCompositingStep*>(this->Steps->GetOverlayPass());
+  if (this->LayerAttached)
+  {
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, this->Layer->GetHandle(), 0);
+  }
+  this->Overlay->Render(s);
+  *step->Rendered += this->Overlay->GetNumberOfRenderedProps();
+  if (this->LayerAttached && this->Transmittance)
+  {
+    glFramebufferTexture2D(
+      GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, this->Transmittance->GetHandle(), 0);
+    this->Overlay->Render(s);
+  }
+  this->RestoreColorAttachment();
+}
+
+void vtkPlumeCompositingPass::AttachAndClear(vtkRenderer* ren, vtkTextureObject* texture, double value)
+{
+  glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture->GetHandle(), 0);
+  vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  vtkOpenGLState::ScopedglClearColor clearSaver(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglClearColor(value, value, value, value);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+}
+
+void vtkPlumeCompositingPass::RestoreColorAttachment()
+{
+  if (!this->LayerAttached)
+  {
+    return;
+  }
+  // the frame's own colour attachment back (the media layer took its place)
+  const int type = this->LayerAttachment[0], name = this->LayerAttachment[1];
+  if (type == GL_RENDERBUFFER)
+  {
+    glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, name);
+  }
+  else
+  {
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, type == GL_TEXTURE ? name : 0, 0);
+  }
+  this->LayerAttached = false;
+  this->Layer = nullptr;
+  this->Transmittance = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -322,6 +453,7 @@ void vtkPlumeCompositingPass::ReleaseGraphicsResources(vtkWindow* w)
   this->OrderIndependent->ReleaseGraphicsResources(w);
   this->DepthPeeling->ReleaseGraphicsResources(w);
   this->Translucent->ReleaseGraphicsResources(w);
+  this->Overlay->ReleaseGraphicsResources(w);
   this->Depth->ReleaseGraphicsResources(w);
 }
 

@@ -40,6 +40,24 @@
  * Render() with `if (!vtkPlumeCompositingPass::ShouldDraw(ren, this)) return;`.
  * While the pass runs, CURRENT_STAGE() on the renderer's information says
  * which step is drawing and OPAQUE_DEPTH() holds the shared depth.
+ *
+ * A separate media layer for a pass around this one (vtkPlumeAirlightPass:
+ * haze in front of a translucent medium is added to it, haze behind it is
+ * dimmed by it). When the renderer's information holds MEDIA_LAYER() (a
+ * vtkTextureObject of the viewport's size, set by the outer pass while its
+ * delegate renders into a framebuffer object of its own), step 5 draws the
+ * media into that texture instead of the frame's colour: it replaces the
+ * bound framebuffer's colour attachment 0 by the layer (keeping its depth,
+ * so media still stop at the opaque scene and an isosurface still writes
+ * depth), clears it to (0, 0, 0, 0), draws, and puts the colour attachment
+ * back after the overlay step (6), which draws into the layer too (2D
+ * actors stay on top of the media). Every medium blends premultiplied "over", so the layer ends up as the
+ * media's premultiplied colour C_v and opacity alpha_v: the frame without the
+ * outer pass would be C_v + (1 - alpha_v) C_frame. The pass then sets
+ * MEDIA_LAYER_DRAWN() to the number of media drawn into it (0: the layer was
+ * not touched, not even cleared) and MEDIA_LAYER_DEPTH() to the shared opaque
+ * depth (the depth before the media: where the final depth is nearer, a
+ * medium wrote it). The outer pass removes the three keys after its delegate.
  */
 #ifndef vtkPlumeCompositingPass_h
 #define vtkPlumeCompositingPass_h
@@ -48,6 +66,7 @@
 #include "vtkRenderPass.h"
 #include "vtkSmartPointer.h" // For members
 
+#include <array>  // For std::array
 #include <vector> // For std::vector
 
 class vtkAlgorithm;
@@ -57,6 +76,7 @@ class vtkPlumeOpaqueDepthTexture;
 class vtkProp;
 class vtkRenderer;
 class vtkRenderStepsPass;
+class vtkTextureObject;
 
 class PLUMERENDERINGCORE_EXPORT vtkPlumeCompositingPass : public vtkRenderPass
 {
@@ -79,6 +99,34 @@ public:
   static vtkInformationIntegerKey* CURRENT_STAGE();
   /** On the renderer's information while the pass renders: the shared opaque depth. */
   static vtkInformationObjectBaseKey* OPAQUE_DEPTH();
+
+  /** On the renderer's information, set by an outer pass: the vtkTextureObject media are drawn into (see above). */
+  static vtkInformationObjectBaseKey* MEDIA_LAYER();
+  /** Set by this pass: how many media were drawn into MEDIA_LAYER() (absent or 0: none, layer untouched). */
+  static vtkInformationIntegerKey* MEDIA_LAYER_DRAWN();
+  /** Set by this pass with MEDIA_LAYER_DRAWN(): the vtkPlumeOpaqueDepthTexture of the depth before the media. */
+  static vtkInformationObjectBaseKey* MEDIA_LAYER_DEPTH();
+
+  /**
+   * On the renderer's information, set by an outer pass with MEDIA_LAYER():
+   * a second texture of the same size. When the media include a prop that
+   * is not a vtkVolume (smoke sheets multiply the frame by an RGB
+   * transmittance instead of blending "over" with one opacity), the media
+   * (and the overlay) are drawn a second time into it, cleared to (1, 1, 1, 1):
+   * every medium's blending is affine in what lies behind it, so this layer
+   * minus MEDIA_LAYER() is the media's RGB transmittance. Volumes alone are
+   * drawn once (their transmittance is 1 - alpha).
+   */
+  static vtkInformationObjectBaseKey* MEDIA_TRANSMITTANCE();
+  /** Set by this pass to 1 when it drew into MEDIA_TRANSMITTANCE(). */
+  static vtkInformationIntegerKey* MEDIA_TRANSMITTANCE_DRAWN();
+
+  /**
+   * True for a prop this pass draws in its media step (a visible vtkVolume or
+   * an actor whose mapper declared STAGE_MEDIA): the rule an outer pass uses
+   * to find the media's bounds.
+   */
+  static bool IsMedium(vtkProp* prop);
 
   /** Declares the stage `mapper` draws in (call it in the mapper's constructor). */
   static void SetStage(vtkAlgorithm* mapper, int stage);
@@ -134,17 +182,26 @@ protected:
   void RenderOpaqueAndSurfaces(const vtkRenderState* s);
   void RenderTranslucent(const vtkRenderState* s);
   void RenderMedia(const vtkRenderState* s);
+  void RenderOverlay(const vtkRenderState* s);
+  void RestoreColorAttachment();
+  void AttachAndClear(vtkRenderer* ren, vtkTextureObject* texture, double value);
 
   vtkSmartPointer<vtkRenderStepsPass> Steps;
   vtkSmartPointer<vtkRenderPass> Opaque;
   vtkSmartPointer<vtkRenderPass> Translucent;      // plain vtkTranslucentPass
   vtkSmartPointer<vtkRenderPass> OrderIndependent; // around Translucent
   vtkSmartPointer<vtkRenderPass> DepthPeeling;     // around Translucent
+  vtkSmartPointer<vtkRenderPass> Overlay;          // VTK's overlay pass (2D actors)
   vtkSmartPointer<vtkPlumeOpaqueDepthTexture> Depth;
   std::vector<vtkProp*> LastSurfaceOrder;
   std::vector<vtkProp*> LastMediaOrder;
   bool LastDepthShared = false;
   bool WarnedDepth = false;
+  bool WarnedLayer = false;
+  bool LayerAttached = false;             // the media layer is the bound framebuffer's colour 0 now
+  std::array<int, 2> LayerAttachment{};   // what it replaced: GL object type and name
+  vtkTextureObject* Layer = nullptr;         // this frame's media layers (not counted: the outer pass holds them)
+  vtkTextureObject* Transmittance = nullptr;
 
 private:
   vtkPlumeCompositingPass(const vtkPlumeCompositingPass&) = delete;

@@ -561,6 +561,75 @@ vec3 airlightOf(vec3 o, vec3 r, float xs)
 
 // The view ray through the centre of viewport pixel `pixel` (window depth
 // `depth`): origin o, unit direction r, distance to the surface (inf: none).
+//PLUME::IF MEDIA
+// Translucent media (volumes, smoke sheets) drawn by the compositing pass
+// into a layer of their own: premultiplied colour and opacity (Cv, av).
+uniform sampler2D MediaLayer;
+uniform sampler2D MediaDepth;      // the depth before the media (where the final one is nearer, a medium wrote it)
+uniform int HasMediaDepth;
+uniform sampler2D MediaTransmittance; // the media drawn over (1, 1, 1, 1): minus MediaLayer, their RGB transmittance
+uniform int HasMediaTransmittance;
+uniform int NumberOfMediaBoxes;
+uniform vec3 MediaBoxMin[8];       // the media props' world bounds
+uniform vec3 MediaBoxMax[8];
+uniform int MediaBoxCentred[8];    // 1: a medium whose mass is at the middle of its bounds (smoke sheets)
+uniform mat4 EyeToWorldPoint;
+
+// Where the haze of the ray splits into "in front of the medium" and "behind
+// it": on the ray's chord [a, b] through the media's bounds (clipped to
+// [0, xs]), at the fraction f = 1/tau - (1 - av)/av, tau = -ln(1 - av), that
+// is exact to first order for a medium of uniform extinction along the chord:
+// the haze inside it, weighted by the medium's transmittance from a, is
+// a + (1 - av)(1 - f) of it, and its emission's mean depth is there too.
+// f -> 1/2 for a faint medium, -> 0 (the entry) for an opaque one. xs when the
+// ray misses the bounds.
+float mediaSplit(vec3 o, vec3 r, float xs, float av)
+{
+  vec3 ow = (EyeToWorldPoint * vec4(o, 1.0)).xyz;
+  vec3 rw = mat3(EyeToWorldPoint) * r;
+  vec3 inv = 1.0 / rw; // +-inf for an axis-parallel ray: the slab test still works
+  float a = 1.0 / 0.0;
+  float b = -1.0 / 0.0;
+  bool centred = true;
+  for (int k = 0; k < NumberOfMediaBoxes; ++k)
+  {
+    vec3 t0 = (MediaBoxMin[k] - ow) * inv;
+    vec3 t1 = (MediaBoxMax[k] - ow) * inv;
+    vec3 tn = min(t0, t1);
+    vec3 tf = max(t0, t1);
+    float enter = max(max(tn.x, tn.y), tn.z);
+    float leave = min(min(tf.x, tf.y), tf.z);
+    if (enter <= leave && leave > 0.0)
+    {
+      a = min(a, enter);
+      b = max(b, leave);
+      centred = centred && MediaBoxCentred[k] == 1;
+    }
+  }
+  a = max(a, 0.0);
+  b = min(b, xs);
+  if (!(a < b) || isinf(b))
+  {
+    return a < xs ? a : xs;
+  }
+  // A sheet's bounds are its surface widened by its blur on every side: its
+  // smoke is at the middle of the chord, whatever its opacity.
+  float f = 0.5;
+  if (centred)
+  {
+  }
+  else if (av >= 1.0 - 1e-6)
+  {
+    f = 0.0;
+  }
+  else if (av > 1e-3)
+  {
+    f = clamp(-1.0 / log(1.0 - av) - (1.0 - av) / av, 0.0, 0.5);
+  }
+  return a + f * (b - a);
+}
+//PLUME::ENDIF
+
 float viewRay(ivec2 pixel, float depth, out vec3 o, out vec3 r)
 {
   vec2 ndc = (vec2(pixel) + 0.5) / ViewportSize * 2.0 - 1.0;
@@ -638,12 +707,42 @@ void main()
   // llvmpipe runs both sides of a divergent `if` for every pixel of a SIMD
   // block (masked), so an `if (exact)` would cost the exact path everywhere;
   // a loop whose trip count is 0 in every lane is skipped.
+  // A translucent medium at the pixel: the haze splits at xv (mediaSplit)
+  // into the part in front of it (added) and behind it (dimmed by 1 - av).
+  float xv = xs;
+  vec4 layer = vec4(0.0);
+  vec3 tv = vec3(1.0); // the media's transmittance
+//PLUME::IF MEDIA
+  layer = texelFetch(MediaLayer, pixel, 0);
+  tv = HasMediaTransmittance == 1 ? clamp(texelFetch(MediaTransmittance, pixel, 0).rgb - layer.rgb, 0.0, 1.0)
+                                  : vec3(1.0 - clamp(layer.a, 0.0, 1.0));
+  if (any(lessThan(tv, vec3(1.0))) || any(greaterThan(layer.rgb, vec3(0.0))))
+  {
+    // A medium that wrote depth (an opaque isosurface) is a surface: all the
+    // haze up to it in front. (Compared as distances, 0.1 % apart: the depth
+    // before the media may have been copied at another precision.)
+    vec3 o2, r2;
+    bool wroteDepth = HasMediaDepth == 1 && xs < 0.999 * viewRay(pixel, texelFetch(MediaDepth, pixel, 0).r, o2, r2);
+    xv = wroteDepth ? xs : mediaSplit(o, r, xs, 1.0 - (tv.r + tv.g + tv.b) / 3.0);
+    exact = true; // the low-resolution airlight is of the whole ray
+  }
+//PLUME::ENDIF
   for (int k = exact ? 0 : 1; k < 1; ++k)
   {
-    airlight = airlightOf(o, r, xs);
+    airlight = airlightOf(o, r, xv);
+  }
+  vec3 mediumTransmittance = mix(exp(-KappaT * xv), vec3(1.0), vec3(equal(KappaT, vec3(0.0))));
+  vec3 behind = vec3(0.0);
+  for (int k = xv < xs ? 0 : 1; k < 1; ++k)
+  {
+    // the ray from xv on, seen through the haze in front of xv
+    behind = mediumTransmittance * airlightOf(o + xv * r, r, xs - xv);
   }
   // The surface as the window would show it without the medium (the float
-  // target keeps values above 1 that an 8-bit window clamps), then attenuated.
-  vec3 result = clamp(color.rgb, 0.0, 1.0) * transmittance + airlight;
+  // target keeps values above 1 that an 8-bit window clamps), then attenuated;
+  // the translucent media's layer over it, attenuated up to xv.
+  vec3 far = behind + clamp(color.rgb, 0.0, 1.0) * transmittance;
+  vec3 result = airlight + clamp(layer.rgb, 0.0, 1.0) * mediumTransmittance + tv * far;
+  airlight += tv * behind;
   gl_FragData[0] = AirlightOnly == 1 ? vec4(airlight, 0.0) : vec4(result, 1.0);
 }
