@@ -16,6 +16,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -24,6 +25,10 @@
 #include <map>
 #include <string>
 #include <vector>
+
+// The sanitizers' death callback (libFuzzer writes its crash file from it);
+// weak: absent (null) in a build without sanitizers.
+extern "C" void __sanitizer_set_death_callback(void (*callback)(void)) __attribute__((weak));
 
 namespace
 {
@@ -861,6 +866,19 @@ std::string vtkPlumeFormatCheck::RunIsolated(
   if (pid == 0)
   {
     close(fds[0]);
+    // A crash of the reader ends the child by its signal, as in a plain build:
+    // the parent's crash handlers (AddressSanitizer's report, libFuzzer's crash
+    // file) are not for it, and it leaves no core file.
+    for (const int sig : { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP })
+    {
+      std::signal(sig, SIG_DFL);
+    }
+    if (__sanitizer_set_death_callback)
+    {
+      __sanitizer_set_death_callback(nullptr);
+    }
+    const rlimit noCore{ 0, 0 };
+    setrlimit(RLIMIT_CORE, &noCore);
     const int null = open("/dev/null", O_WRONLY);
     if (null >= 0)
     {
