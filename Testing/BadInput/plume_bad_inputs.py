@@ -477,6 +477,23 @@ def build(c):
     c_add("ExposedEnSightAsciiCountLie", "survive", ["info", ens("countlie", ens_geo.replace("coordinates\n         8", "coordinates\n  99999999"))])
     c_add("ExposedEnSightAsciiElementLie", "survive", ["info", ens("elemlie", ens_geo.replace("hexa8\n         1", "hexa8\n   9999999"))])
 
+    # a series whose later step is corrupt: the first step read in a child said nothing of the
+    # others, which were read in process (a count lie in step 1's geometry hangs VTK's reader,
+    # a node lie is caught by the validation after it). Each step is read in a child first.
+    ens_series = ("FORMAT\ntype:  ensight gold\nGEOMETRY\nmodel: 1 box*.geo\nTIME\ntime set: 1\n"
+                  "number of steps: 2\nfilename start number: 0\nfilename increment: 1\ntime values: 0.0 0.5\n")
+    def ens_steps(tag, later):
+        c.write("exposed/series_%s/box0.geo" % tag, ens_geo)
+        c.write("exposed/series_%s/box1.geo" % tag, later)
+        return c.write("exposed/series_%s/box.case" % tag, ens_series)
+    c_add("ExposedSeriesLaterStepCountLie", "error", ["info", ens_steps("countlie",
+          ens_geo.replace("coordinates\n         8", "coordinates\n  99999999"))],
+          r"the ensight reader did not finish within 15 s \(PLUME_READER_TIMEOUT\) reading time step 1 \(t = 0\.5\) "
+          r"of .*series_countlie/box\.case in a child process \(a corrupt file\?\); not read")
+    c_add("ExposedSeriesFirstStepOk", "ok", ["info", ens_steps("countlie2", ens_geo.replace(
+          "coordinates\n         8", "coordinates\n  99999999")), "--time-step", "0"], r"Points: 8")
+    c_add("ExposedSeriesLaterStepOk", "ok", ["info", ens_steps("ok", ens_geo)], r"read step 1, t = 0\.5")
+
     # HDF5 (netCDF-4) Exodus: not parsed here; a forged and a cut HDF5 signature
     c_add("ExposedExodusHdf5Forged", "survive", ["info", c.write("exposed/forged.ex2", b"\x89HDF\r\n\x1a\n" + bytes(range(256)) * 8, "wb")])
     c_add("ExposedExodusHdf5Cut", "survive", ["info", c.write("exposed/cut.ex2", b"\x89HDF\r\n\x1a\n\x00\x00", "wb")])
@@ -527,6 +544,30 @@ def build(c):
         name = "DerivedBudget" + "".join(w.capitalize() for w in source.split("_"))
         seeds = 1000 if source == "streamlines" else 100000  # streamlines: within memory, over the work budget
         c.render(name, "error", derived_scene(source, {"source": source, "seed_resolution": seeds}), expect, env=env)
+    # vtkStreamSurface's iterative version (VTK 9.1: no abort hook) copies its whole surface once a
+    # step and adds seeds where the front spreads, so its work grows with steps^2 and the front may
+    # double every step: refused before tracing when steps^2 alone is over the work budget, else
+    # stopped when the next step would pass a budget (on the office the default surface ran for
+    # hours and grew past 1 M points by step 100 of 143)
+    office = {"path": "classic/office.binary.vtk"}
+    def iterative_scene(tag, derived):
+        return c.scene("iterative_" + tag, {"datasets": {"o": office, "d": dict(derived, input="o",
+                       source="stream_surface", iterative_seeding=True)},
+                       "representations": [{"type": "outline", "dataset": "d"}]})
+    c.render("IterativeSurfaceRefused", "error", iterative_scene("refused", {"seed_resolution": 100, "step": 0.05}),
+             r"datasets\.d: stream_surface: the iterative stream surface \(iterative_seeding\) from 101 seeds x \d+ steps "
+             r"x 2 directions, which copies its whole surface once a step \([\d.e+]+ point copies before it adds any seed\) "
+             r"needs about [\d.e+]+ operations, over the work budget of 1e\+10 \(PLUME_WORK_BUDGET\)")
+    c.render("IterativeSurfaceGrowsWork", "error", iterative_scene("grows", {}),
+             r"datasets\.d: stream_surface: the next step of the iterative stream surface \(iterative_seeding; grown to \d+ "
+             r"points, a front of about \d+ seeds from the 21 given, after \d+ of \d+ steps\) needs about [\d.e+]+ operations, "
+             r"over the work budget of 2e\+09 \(PLUME_WORK_BUDGET\); set iterative_seeding false, a larger step or a shorter "
+             r"maximum_length", env={"PLUME_WORK_BUDGET": "2e9"})
+    c.render("IterativeSurfaceGrowsMemory", "error", iterative_scene("grows_mem", {}),
+             r"datasets\.d: stream_surface: the next step of the iterative stream surface \(iterative_seeding; grown to \d+ "
+             r"points, .* steps\) needs about [\d.]+ MB, over the memory budget of 16 MB \(PLUME_MEMORY_BUDGET_MB\)",
+             env={"PLUME_MEMORY_BUDGET_MB": "16"})
+    c.render("IterativeSurfaceOk", "ok", iterative_scene("ok", {"maximum_length": 1.0}), r"wrote")
     # the same kinds of scene within the budget still render
     c.render("DerivedBudgetContourOk", "ok", derived_scene("contour_ok", {"source": "contour", "values": [0.1, 0.5]}),
              "", env={"PLUME_MEMORY_BUDGET_MB": "64"})
