@@ -52,7 +52,13 @@ public:
   /**
    * "" if the cells of a dataset (vtkPolyData, vtkUnstructuredGrid) are
    * consistent with its points (CheckCellArray on each cell array; the cell
-   * types array of an unstructured grid as long as its cells). Structured
+   * types array of an unstructured grid as long as its cells) and each cell
+   * has the points its type needs: polydata vertices at least 1, lines 2,
+   * polygons and strips 3; a grid cell of a fixed-size type exactly its
+   * count (a hexahedron 8), of a variable one at least its minimum, a
+   * polyhedron its faces, and every type a VTK cell type. VTK's cell classes
+   * read as many points as the type has (a 4-point hexahedron or a 1-point
+   * polygon was a SEGV in the surface, glyph and volume paths). Structured
    * datasets have no explicit connectivity: "" unless their point count
    * disagrees with their extent.
    */

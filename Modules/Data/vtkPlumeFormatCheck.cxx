@@ -574,24 +574,42 @@ std::string vtkPlumeFormatCheck::CheckLegacyVTK(const std::string& path)
   std::getline(in, line);
   std::getline(in, line);
   std::getline(in, line);
-  static const char* const keywords[] = { "VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS", "CELLS" };
+  // VTK matches a keyword by its first letters in any case ("POLYGONS[" is
+  // POLYGONS) and reads the counts as the next words, on that line or later
+  static const char* const keywords[] = { "vertices", "lines", "polygons", "triangle_strips", "cells" };
   while (std::getline(in, line))
   {
     std::istringstream words(line);
     std::string keyword;
-    long long cells = -1, size = -1;
-    if (!(words >> keyword >> cells >> size))
+    if (!(words >> keyword))
     {
       continue;
     }
+    std::string lower = keyword;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+      [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
     bool isCells = false;
     for (const char* k : keywords)
     {
-      isCells = isCells || keyword == k;
+      isCells = isCells || lower.compare(0, std::strlen(k), k) == 0;
     }
     if (!isCells)
     {
       continue;
+    }
+    long long cells = -1, size = -1;
+    const bool haveCells = static_cast<bool>(words >> cells);
+    const bool onLine = haveCells && static_cast<bool>(words >> size);
+    if (!onLine)
+    {
+      if ((!haveCells && !(in >> cells)) || !(in >> size))
+      {
+        return std::string(); // no counts: VTK's reader fails with its own error
+      }
+      if (in.peek() == '\n')
+      {
+        in.get(); // the values start on the next line
+      }
     }
     const std::string where = "the " + keyword + " section (" + std::to_string(cells) + " cells, " +
       std::to_string(size) + " values)";

@@ -293,6 +293,15 @@ def build(c):
     c.add("LegacyCellsFuzzFinding", "error", ["info", c.write("legacy_cells/fuzz.vtk", legacy_poly(
           "POLYGONS 2 8\n3 0 1 ~2\n3 1 3 2\n", tail="POINT_DATA 4\nSCALARS s float 0\nLOOKUP_TABLE default\n1 2 3 4\n"))],
           r"the POLYGONS section \(2 cells, 8 values\): value 3 is '~2', not an integer")
+    # VTK matches a keyword by its first letters in any case ("POLYGONS[" is POLYGONS) and reads the
+    # counts as the next words, on the same line or not: the cell-list check does too (a short list
+    # behind such a header was the same SEGV; found by plumeFuzzDatasetReader)
+    c.add("LegacyCellsKeywordPrefix", "error", ["info", c.write("legacy_cells/prefix.vtk", legacy_poly(
+          "POLYGONS[ 2 8\n3 0 1 2\n"))], r"the POLYGONS\[ section \(2 cells, 8 values\) ends after 4 values")
+    c.add("LegacyCellsCountsNextLine", "error", ["info", c.write("legacy_cells/next_line.vtk", legacy_poly(
+          "polygons\n2 8\n3 0 1 2\n"))], r"the polygons section \(2 cells, 8 values\) ends after 4 values")
+    c.add("LegacyCellsCountsNextLineOk", "ok", ["info", c.write("legacy_cells/next_line_ok.vtk", legacy_poly(
+          "polygons 2\n8\n3 0 1 2\n3 1 3 2\n"))], r"Points: 4\s+Cells: 2")
     # a malformed FIELD section: VTK 9.1's legacy readers dereference the null field data they
     # return (SEGV in every dataset type; found by plumeFuzzDatasetReader). Such files are read in a
     # child process first, so the crash is one error; a well-formed FIELD section still reads.
@@ -308,6 +317,38 @@ def build(c):
               crashed % name)
     c.add("LegacyFieldWellFormed", "ok", ["info", c.write("legacy_field/good.vtk", legacy_poly(
           "POLYGONS 1 4\n3 0 1 2\n", tail="FIELD FieldData 1\nTIME 1 1 double\n2.5\n"))], r"Points: 4\s+Cells: 1")
+    # cells with fewer points than their type reads: VTK's cell classes index a cell's first points
+    # without looking at its size (SEGV in the glyph and volume resampling and the surface filter;
+    # the sizes were unchecked, only the ids); the validation after every read refuses them
+    vel = "POINT_DATA 4\nVECTORS v float\n1 0 0 1 0 0 1 0 0 1 0 0\n"
+    def rep_scene(tag, path, rep):
+        return c.scene("cell_size_" + tag, {"datasets": {"d": {"path": path}},
+                                             "representations": [{"type": rep, "dataset": "d"}]})
+    inconsistent = r"datasets\.d: the %s reader gave inconsistent data from .*%s \(corrupt file\?\): "
+    for tag, section, rep, expect in [
+            ("polygon1", "POLYGONS 2 5\n1 0\n2 1 2\n", "glyphs", r"polygons: cell 0 has 1 point; a polygon needs at least 3"),
+            ("polygon0", "POLYGONS 2 4\n0\n2 1 2\n", "volume", r"polygons: cell 0 has 0 points; a polygon needs at least 3"),
+            ("line1", "LINES 2 3\n1 0\n0\n", "volume", r"lines: cell 0 has 1 point; a line needs at least 2"),
+            ("strip2", "TRIANGLE_STRIPS 1 3\n2 0 1\n", "glyphs", r"triangle strips: cell 0 has 2 points; a triangle strip needs at least 3")]:
+        path = c.write("cell_size/%s.vtk" % tag, legacy_poly(section, tail=vel))
+        c.render("CellSize_" + tag, "error", rep_scene(tag, path, rep), inconsistent % ("legacy", tag + r"\.vtk") + expect)
+    for tag, types, rep, expect in [
+            ("hexahedron4", "CELL_TYPES 1\n12\n", "surface", r"cells: cell 0 \(vtkHexahedron, type 12\) has 4 points; it needs 8"),
+            ("type250", "CELL_TYPES 1\n250\n", "surface", r"cells: cell 0 has type 250, which is no VTK cell type")]:
+        path = c.write("cell_size/%s.vtk" % tag, legacy_ugrid("CELLS 1 5\n4 0 1 2 3", types))
+        c.render("CellSize_" + tag, "error", rep_scene(tag, path, rep), inconsistent % ("legacy", tag + r"\.vtk") + expect)
+    zero_offsets = ('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">\n'
+                    '<UnstructuredGrid><Piece NumberOfPoints="4" NumberOfCells="2">\n<Points><DataArray type="Float32" '
+                    'NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0 0 0 1</DataArray></Points>\n<Cells>'
+                    '<DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 3</DataArray>\n'
+                    '<DataArray type="Int64" Name="offsets" format="ascii">0 0</DataArray>\n'
+                    '<DataArray type="UInt8" Name="types" format="ascii">10 10</DataArray></Cells>\n'
+                    '</Piece></UnstructuredGrid></VTKFile>\n')
+    path = c.write("cell_size/offsets_zero.vtu", zero_offsets)
+    c.render("CellSize_xml_offsets_zero", "error", rep_scene("offsets_zero", path, "surface"),
+             inconsistent % ("xml", r"offsets_zero\.vtu") + r"cells: cell 0 \(vtkTetra, type 10\) has 0 points; it needs 4")
+    c.add("CellSizeWellFormed", "ok", ["info", c.write("cell_size/good.vtk", legacy_ugrid(
+          "CELLS 1 5\n4 0 1 2 3", "CELL_TYPES 1\n10\n"))], r"Points: 4\s+Cells: 1")
     # the office stream sheet as legacy 4.2 polydata (binary and ASCII), cut inside its polygons
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
     from vtkmodules.vtkIOLegacy import vtkPolyDataWriter
