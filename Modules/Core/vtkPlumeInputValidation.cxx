@@ -258,7 +258,7 @@ std::string vtkPlumeInputValidation::CheckCellArray(
 }
 
 //------------------------------------------------------------------------------
-std::string vtkPlumeInputValidation::CheckCells(vtkDataSet* data)
+std::string vtkPlumeInputValidation::CheckCells(vtkDataSet* data, bool polyDataSizes)
 {
   if (!data)
   {
@@ -269,8 +269,11 @@ std::string vtkPlumeInputValidation::CheckCells(vtkDataSet* data)
   {
     const std::pair<vtkCellArray*, const char*> arrays[] = { { poly->GetVerts(), "vertices" },
       { poly->GetLines(), "lines" }, { poly->GetPolys(), "polygons" }, { poly->GetStrips(), "triangle strips" } };
-    const std::pair<vtkIdType, const char*> least[] = { { 1, "a vertex" }, { 2, "a line" }, { 3, "a polygon" },
-      { 3, "a triangle strip" } };
+    // without polyDataSizes only empty cells (no consumer wants one; the splatter
+    // skips a single-vertex line by design)
+    const vtkIdType line = polyDataSizes ? 2 : 1, face = polyDataSizes ? 3 : 1;
+    const std::pair<vtkIdType, const char*> least[] = { { 1, "a vertex" }, { line, "a line" }, { face, "a polygon" },
+      { face, "a triangle strip" } };
     for (int i = 0; i < 4; ++i)
     {
       std::string error = CheckCellArray(arrays[i].first, n, arrays[i].second);
@@ -430,11 +433,11 @@ std::string vtkPlumeInputValidation::CheckFinitePoints(vtkDataSet* data)
 }
 
 //------------------------------------------------------------------------------
-std::string vtkPlumeInputValidation::CheckDataObject(vtkDataObject* data)
+std::string vtkPlumeInputValidation::CheckDataObject(vtkDataObject* data, bool polyDataSizes)
 {
   if (auto* ds = vtkDataSet::SafeDownCast(data))
   {
-    std::string error = CheckCells(ds);
+    std::string error = CheckCells(ds, polyDataSizes);
     return error.empty() ? CheckArrays(ds) : error;
   }
   if (auto* cds = vtkCompositeDataSet::SafeDownCast(data))
@@ -443,7 +446,7 @@ std::string vtkPlumeInputValidation::CheckDataObject(vtkDataObject* data)
     it.TakeReference(cds->NewIterator());
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
-      std::string error = CheckDataObject(it->GetCurrentDataObject());
+      std::string error = CheckDataObject(it->GetCurrentDataObject(), polyDataSizes);
       if (!error.empty())
       {
         return "block " + std::to_string(it->GetCurrentFlatIndex()) + ": " + error;

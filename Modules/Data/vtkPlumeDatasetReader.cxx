@@ -1681,7 +1681,7 @@ int vtkPlumeDatasetReader::RequestData(
 
   // VTK's readers do not check connectivity or array lengths: every Plume filter and mapper
   // downstream would read out of bounds, so a dataset that lies is refused here.
-  const std::string invalid = vtkPlumeInputValidation::CheckDataObject(data);
+  const std::string invalid = vtkPlumeInputValidation::CheckDataObject(data, true);
   if (!invalid.empty())
   {
     return fail("the " + in.Kind + " reader gave inconsistent data from " + in.Path + " (corrupt file?): " +

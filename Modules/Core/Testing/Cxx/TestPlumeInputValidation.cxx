@@ -134,7 +134,13 @@ int TestPlumeInputValidation(int, char*[])
     const vtkIdType one[1] = { 0 };
     lines->InsertNextCell(1, one);
     poly->SetLines(lines);
-    CHECK(Has(V::CheckCells(poly), "lines: cell 0 has 1 point; a line needs at least 2"));
+    CHECK(V::CheckCells(poly).empty()); // the splatter skips a single-vertex line
+    CHECK(Has(V::CheckCells(poly, true), "lines: cell 0 has 1 point; a line needs at least 2"));
+    CHECK(Has(V::CheckDataObject(poly, true), "lines: cell 0 has 1 point; a line needs at least 2"));
+    vtkNew<vtkCellArray> empty;
+    empty->InsertNextCell(0, one);
+    poly->SetLines(empty);
+    CHECK(Has(V::CheckCells(poly), "lines: cell 0 has 0 points; a line needs at least 1"));
   }
 
   // ---- tuple counts
