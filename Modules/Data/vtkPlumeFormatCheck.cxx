@@ -636,7 +636,8 @@ std::string vtkPlumeFormatCheck::CheckLegacyVTK(const std::string& path)
       char* end = nullptr;
       const long long v = std::strtoll(token.c_str(), &end, 10);
       (void)v;
-      if (!end || *end != '\0' || end == token.c_str())
+      // the whole word: strtoll stops at a NUL byte inside it ("3\0\0\x13" is no integer to VTK)
+      if (!end || end != token.c_str() + token.size() || end == token.c_str())
       {
         return where + ": value " + std::to_string(read) + " is '" + token.substr(0, 40) + "', not an integer";
       }
