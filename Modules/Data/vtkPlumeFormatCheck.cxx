@@ -639,7 +639,12 @@ std::string vtkPlumeFormatCheck::CheckLegacyVTK(const std::string& path)
       // the whole word: strtoll stops at a NUL byte inside it ("3\0\0\x13" is no integer to VTK)
       if (!end || end != token.c_str() + token.size() || end == token.c_str())
       {
-        return where + ": value " + std::to_string(read) + " is '" + token.substr(0, 40) + "', not an integer";
+        std::string shown = token.substr(0, 40);
+        for (char& ch : shown)
+        {
+          ch = std::isprint(static_cast<unsigned char>(ch)) ? ch : '?'; // NUL and control bytes
+        }
+        return where + ": value " + std::to_string(read) + " is '" + shown + "', not an integer";
       }
       ++read;
     }
