@@ -1,11 +1,14 @@
 #include "vtkPlumeInputValidation.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellType.h"
+#include "vtkCellTypes.h"
 #include "vtkCellData.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
+#include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -68,6 +71,73 @@ std::string CheckStorage(const T* offsets, vtkIdType numberOfOffsets, const T* c
           std::to_string(id) + ", but the dataset has " + std::to_string(numberOfPoints) +
           " points (valid ids 0 to " + std::to_string(numberOfPoints - 1) + ")";
       }
+    }
+  }
+  return std::string();
+}
+
+// The points a cell of VTK type `type` needs: exactly `exact` (when > 0), else
+// at least `least`; false for a number that is no VTK cell type.
+bool CellSize(int type, vtkIdType& exact, vtkIdType& least)
+{
+  exact = 0;
+  least = 1;
+  switch (type)
+  {
+    case VTK_EMPTY_CELL: least = 0; return true;
+    case VTK_VERTEX: exact = 1; return true;
+    case VTK_LINE: exact = 2; return true;
+    case VTK_TRIANGLE: exact = 3; return true;
+    case VTK_PIXEL: case VTK_QUAD: case VTK_TETRA: case VTK_CUBIC_LINE: exact = 4; return true;
+    case VTK_PYRAMID: exact = 5; return true;
+    case VTK_WEDGE: case VTK_QUADRATIC_TRIANGLE: case VTK_QUADRATIC_LINEAR_QUAD: exact = 6; return true;
+    case VTK_BIQUADRATIC_TRIANGLE: exact = 7; return true;
+    case VTK_VOXEL: case VTK_HEXAHEDRON: case VTK_QUADRATIC_QUAD: exact = 8; return true;
+    case VTK_BIQUADRATIC_QUAD: exact = 9; return true;
+    case VTK_PENTAGONAL_PRISM: case VTK_QUADRATIC_TETRA: exact = 10; return true;
+    case VTK_HEXAGONAL_PRISM: case VTK_QUADRATIC_LINEAR_WEDGE: exact = 12; return true;
+    case VTK_QUADRATIC_PYRAMID: exact = 13; return true;
+    case VTK_QUADRATIC_WEDGE: exact = 15; return true;
+    case VTK_BIQUADRATIC_QUADRATIC_WEDGE: exact = 18; return true;
+    case VTK_TRIQUADRATIC_PYRAMID: exact = 19; return true;
+    case VTK_QUADRATIC_HEXAHEDRON: exact = 20; return true;
+    case VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON: exact = 24; return true;
+    case VTK_TRIQUADRATIC_HEXAHEDRON: exact = 27; return true;
+    case VTK_QUADRATIC_EDGE: exact = 3; return true;
+    case VTK_POLY_VERTEX: case VTK_CONVEX_POINT_SET: return true;
+    case VTK_POLY_LINE: case VTK_LAGRANGE_CURVE: case VTK_BEZIER_CURVE: case VTK_HIGHER_ORDER_EDGE:
+      least = 2; return true;
+    case VTK_TRIANGLE_STRIP: case VTK_POLYGON: case VTK_LAGRANGE_TRIANGLE: case VTK_BEZIER_TRIANGLE:
+    case VTK_HIGHER_ORDER_TRIANGLE: case VTK_HIGHER_ORDER_POLYGON:
+      least = 3; return true;
+    case VTK_LAGRANGE_QUADRILATERAL: case VTK_BEZIER_QUADRILATERAL: case VTK_HIGHER_ORDER_QUAD:
+    case VTK_LAGRANGE_TETRAHEDRON: case VTK_BEZIER_TETRAHEDRON: case VTK_HIGHER_ORDER_TETRAHEDRON:
+    case VTK_POLYHEDRON:
+      least = 4; return true;
+    case VTK_LAGRANGE_PYRAMID: case VTK_BEZIER_PYRAMID: case VTK_HIGHER_ORDER_PYRAMID: least = 5; return true;
+    case VTK_LAGRANGE_WEDGE: case VTK_BEZIER_WEDGE: case VTK_HIGHER_ORDER_WEDGE: least = 6; return true;
+    case VTK_QUADRATIC_POLYGON: least = 6; return true;
+    case VTK_LAGRANGE_HEXAHEDRON: case VTK_BEZIER_HEXAHEDRON: case VTK_HIGHER_ORDER_HEXAHEDRON:
+      least = 8; return true;
+    case VTK_PARAMETRIC_CURVE: case VTK_PARAMETRIC_SURFACE: case VTK_PARAMETRIC_TRI_SURFACE:
+    case VTK_PARAMETRIC_QUAD_SURFACE: case VTK_PARAMETRIC_TETRA_REGION: case VTK_PARAMETRIC_HEX_REGION:
+      return true;
+    default: return false;
+  }
+}
+
+// "" if every cell of `cells` has at least `least` points (VTK's cell classes
+// index a cell's first points without looking at its size).
+std::string CheckLeast(vtkCellArray* cells, vtkIdType least, const char* what, const char* one)
+{
+  const vtkIdType count = cells ? cells->GetNumberOfCells() : 0;
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    const vtkIdType size = cells->GetCellSize(c);
+    if (size < least)
+    {
+      return std::string(what) + ": cell " + std::to_string(c) + " has " + std::to_string(size) + " point" +
+        (size == 1 ? "" : "s") + "; " + one + " needs at least " + std::to_string(least);
     }
   }
   return std::string();
@@ -188,7 +258,7 @@ std::string vtkPlumeInputValidation::CheckCellArray(
 }
 
 //------------------------------------------------------------------------------
-std::string vtkPlumeInputValidation::CheckCells(vtkDataSet* data)
+std::string vtkPlumeInputValidation::CheckCells(vtkDataSet* data, bool polyDataSizes)
 {
   if (!data)
   {
@@ -199,9 +269,18 @@ std::string vtkPlumeInputValidation::CheckCells(vtkDataSet* data)
   {
     const std::pair<vtkCellArray*, const char*> arrays[] = { { poly->GetVerts(), "vertices" },
       { poly->GetLines(), "lines" }, { poly->GetPolys(), "polygons" }, { poly->GetStrips(), "triangle strips" } };
-    for (const auto& a : arrays)
+    // without polyDataSizes only empty cells (no consumer wants one; the splatter
+    // skips a single-vertex line by design)
+    const vtkIdType line = polyDataSizes ? 2 : 1, face = polyDataSizes ? 3 : 1;
+    const std::pair<vtkIdType, const char*> least[] = { { 1, "a vertex" }, { line, "a line" }, { face, "a polygon" },
+      { face, "a triangle strip" } };
+    for (int i = 0; i < 4; ++i)
     {
-      std::string error = CheckCellArray(a.first, n, a.second);
+      std::string error = CheckCellArray(arrays[i].first, n, arrays[i].second);
+      if (error.empty())
+      {
+        error = CheckLeast(arrays[i].first, least[i].first, arrays[i].second, least[i].second);
+      }
       if (!error.empty())
       {
         return error;
@@ -223,6 +302,63 @@ std::string vtkPlumeInputValidation::CheckCells(vtkDataSet* data)
     if (cellCount != typeCount)
     {
       return "cells: " + std::to_string(cellCount) + " cells but " + std::to_string(typeCount) + " cell types";
+    }
+    // each cell's point count against its type: VTK's cell classes read as
+    // many points as the type has (a 4-point "hexahedron" is a SEGV in the
+    // surface and probe filters)
+    for (vtkIdType c = 0; c < cellCount; ++c)
+    {
+      const int type = types->GetValue(c);
+      const vtkIdType size = cells->GetCellSize(c);
+      vtkIdType exact = 0, least = 0;
+      if (!CellSize(type, exact, least))
+      {
+        return "cells: cell " + std::to_string(c) + " has type " + std::to_string(type) +
+          ", which is no VTK cell type";
+      }
+      const std::string name = vtkCellTypes::GetClassNameFromTypeId(type);
+      if (exact > 0 ? size != exact : size < least)
+      {
+        return "cells: cell " + std::to_string(c) + " (" + name + ", type " + std::to_string(type) + ") has " +
+          std::to_string(size) + " point" + (size == 1 ? "" : "s") + "; it needs " +
+          (exact > 0 ? std::to_string(exact) : "at least " + std::to_string(least));
+      }
+      if (type == VTK_POLYHEDRON)
+      {
+        // its face stream: [faces, (points, ids...) per face], inside the faces array
+        vtkIdTypeArray* faces = grid->GetFaces();
+        vtkIdTypeArray* locations = grid->GetFaceLocations();
+        const vtkIdType total = faces ? faces->GetNumberOfValues() : 0;
+        vtkIdType at = locations && c < locations->GetNumberOfValues() ? locations->GetValue(c) : -1;
+        const std::string polyhedron = "cells: cell " + std::to_string(c) + " is a polyhedron (type 42) but ";
+        if (at < 0 || at >= total)
+        {
+          return polyhedron + "the grid has no faces for it";
+        }
+        const vtkIdType faceCount = faces->GetValue(at++);
+        for (vtkIdType f = 0; f < faceCount; ++f)
+        {
+          const vtkIdType count = at < total ? faces->GetValue(at++) : -1;
+          if (count < 0 || count > total - at)
+          {
+            return polyhedron + "its face " + std::to_string(f) + " lies beyond the grid's " +
+              std::to_string(total) + " face values";
+          }
+          for (vtkIdType k = 0; k < count; ++k, ++at)
+          {
+            const vtkIdType id = faces->GetValue(at);
+            if (id < 0 || id >= n)
+            {
+              return polyhedron + "its face " + std::to_string(f) + " references point id " + std::to_string(id) +
+                ", but the dataset has " + std::to_string(n) + " points";
+            }
+          }
+        }
+        if (faceCount < 4)
+        {
+          return polyhedron + "it has " + std::to_string(faceCount) + " faces; it needs at least 4";
+        }
+      }
     }
     return std::string();
   }
@@ -297,11 +433,11 @@ std::string vtkPlumeInputValidation::CheckFinitePoints(vtkDataSet* data)
 }
 
 //------------------------------------------------------------------------------
-std::string vtkPlumeInputValidation::CheckDataObject(vtkDataObject* data)
+std::string vtkPlumeInputValidation::CheckDataObject(vtkDataObject* data, bool polyDataSizes)
 {
   if (auto* ds = vtkDataSet::SafeDownCast(data))
   {
-    std::string error = CheckCells(ds);
+    std::string error = CheckCells(ds, polyDataSizes);
     return error.empty() ? CheckArrays(ds) : error;
   }
   if (auto* cds = vtkCompositeDataSet::SafeDownCast(data))
@@ -310,7 +446,7 @@ std::string vtkPlumeInputValidation::CheckDataObject(vtkDataObject* data)
     it.TakeReference(cds->NewIterator());
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
-      std::string error = CheckDataObject(it->GetCurrentDataObject());
+      std::string error = CheckDataObject(it->GetCurrentDataObject(), polyDataSizes);
       if (!error.empty())
       {
         return "block " + std::to_string(it->GetCurrentFlatIndex()) + ": " + error;

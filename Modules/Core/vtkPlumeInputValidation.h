@@ -52,11 +52,18 @@ public:
   /**
    * "" if the cells of a dataset (vtkPolyData, vtkUnstructuredGrid) are
    * consistent with its points (CheckCellArray on each cell array; the cell
-   * types array of an unstructured grid as long as its cells). Structured
+   * types array of an unstructured grid as long as its cells) and each cell
+   * has the points its type needs: polydata cells at least 1 (with
+   * `polyDataSizes`, what a reader's output must meet: lines 2, polygons and
+   * strips 3); a grid cell of a fixed-size type exactly its
+   * count (a hexahedron 8), of a variable one at least its minimum, a
+   * polyhedron its faces, and every type a VTK cell type. VTK's cell classes
+   * read as many points as the type has (a 4-point hexahedron or a 1-point
+   * polygon was a SEGV in the surface, glyph and volume paths). Structured
    * datasets have no explicit connectivity: "" unless their point count
    * disagrees with their extent.
    */
-  static std::string CheckCells(vtkDataSet* data);
+  static std::string CheckCells(vtkDataSet* data, bool polyDataSizes = false);
 
   /**
    * "" if every point array has one tuple per point and every cell array one
@@ -73,9 +80,11 @@ public:
 
   /**
    * CheckCells and CheckArrays on a dataset or on every leaf of a composite
-   * (the message names the block by its flat index).
+   * (the message names the block by its flat index). `polyDataSizes`: see
+   * CheckCells (vtkPlumeDatasetReader sets it: a 1-point line or polygon in a
+   * file was a SEGV in the glyph and volume resampling).
    */
-  static std::string CheckDataObject(vtkDataObject* data);
+  static std::string CheckDataObject(vtkDataObject* data, bool polyDataSizes = false);
 
   // --- values ------------------------------------------------------------
   /**

@@ -59,6 +59,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <set>
 
 vtkStandardNewMacro(vtkPlumeDatasetReader);
 
@@ -222,6 +223,7 @@ struct vtkPlumeDatasetReader::Internals
   std::string Kind;                      // resolved reader name
   std::string Path;                      // FileName
   std::string QPath;                     // PLOT3D solution file ("" = none)
+  std::set<int> ProbedSteps;             // time steps of Reader already read in a child
 
   std::vector<double> PvdTimes;
   std::vector<std::vector<PvdEntry>> PvdSteps;
@@ -518,8 +520,10 @@ double ExtentPoints(const int* we)
 
 // What the in-process read will do, in the child of RunIsolated(); returns the
 // reader's first error, "" when it read without one (or stopped before reading
-// on a problem the in-process read reports itself).
-std::string ProbeRead(const std::string& kind, const std::string& path, const std::string& qPath, bool patches)
+// on a problem the in-process read reports itself). `time`: the time step to
+// read (nullptr: the reader's default, its first).
+std::string ProbeRead(const std::string& kind, const std::string& path, const std::string& qPath, bool patches,
+  const double* time = nullptr)
 {
   // VTK's error macros invoke no ErrorEvent with the display off; the child's output goes to /dev/null
   vtkObject::GlobalWarningDisplayOn();
@@ -591,7 +595,14 @@ std::string ProbeRead(const std::string& kind, const std::string& path, const st
     return std::string();
   }
   SelectArrays(reader, patches);
-  reader->Update();
+  if (time)
+  {
+    reader->UpdateTimeStep(*time);
+  }
+  else
+  {
+    reader->Update();
+  }
   return errors->Message;
 }
 
@@ -1216,6 +1227,7 @@ int vtkPlumeDatasetReader::RequestInformation(
       in.Reader = nullptr;
       in.Key = key;
       in.Reader = MakeReader(kind, path, qPath);
+      in.ProbedSteps.clear();
       // formats no structural check covers: a first read in a child process
       // turns a crash of VTK's reader into one error
       if (this->IsolateReaders && IsExposed(kind, path, qPath) && IsolationEnabled())
@@ -1492,6 +1504,28 @@ int vtkPlumeDatasetReader::RequestData(
   }
   else
   {
+    if (n > 1 && this->IsolateReaders && IsExposed(in.Kind, in.Path, in.QPath) && IsolationEnabled() &&
+      in.ProbedSteps.count(step) == 0)
+    {
+      // RequestInformation's read in a child covered the reader's first step
+      // only: each step of a series is its own files (EnSight, OpenFOAM) or
+      // blocks (HDF5 Exodus), as exposed as the first
+      const bool patches = !this->BlockNames.empty();
+      const double time = times[step];
+      const std::string kind = in.Kind, path = in.Path, qPath = in.QPath;
+      std::string readError;
+      const std::string crashed = vtkPlumeFormatCheck::RunIsolated(
+        [&]() { return ProbeRead(kind, path, qPath, patches, &time); }, &readError);
+      if (!crashed.empty() || !readError.empty())
+      {
+        in.Reader->Modified(); // nothing of this step was read here
+        const std::string which = "time step " + std::to_string(step) + " (t = " + Number(time) + ") of " + path;
+        return fail(!crashed.empty()
+            ? "the " + kind + " reader " + crashed + " reading " + which + " in a child process (a corrupt file?); not read"
+            : "the " + kind + " reader cannot read " + which + ": " + readError);
+      }
+      in.ProbedSteps.insert(step);
+    }
     in.ProgressOffset = 0;
     in.ProgressScale = 1;
     ScopedReadWarningCatcher warnings;
@@ -1647,7 +1681,7 @@ int vtkPlumeDatasetReader::RequestData(
 
   // VTK's readers do not check connectivity or array lengths: every Plume filter and mapper
   // downstream would read out of bounds, so a dataset that lies is refused here.
-  const std::string invalid = vtkPlumeInputValidation::CheckDataObject(data);
+  const std::string invalid = vtkPlumeInputValidation::CheckDataObject(data, true);
   if (!invalid.empty())
   {
     return fail("the " + in.Kind + " reader gave inconsistent data from " + in.Path + " (corrupt file?): " +

@@ -146,6 +146,8 @@ public:
    * cgns reader crashed (signal 11, ...)")
    * instead of the end of the process; a reader that runs longer than
    * $PLUME_READER_TIMEOUT seconds (default 300) is stopped with an error too.
+   * Each time step of a series is read in a child before it is read here
+   * (once per step and reader), with the step and its time in the error.
    * Costs one more read of such files. Default true; the environment
    * variable PLUME_READER_ISOLATION=0 turns it off as well.
    */

@@ -5,6 +5,7 @@
 
 #include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkCellDataToPointData.h"
 #include "vtkContourFilter.h"
 #include "vtkCutter.h"
@@ -132,6 +133,73 @@ vtkDataArray* DefaultArray(vtkDataSet* data, bool vectors, bool& cell)
   return nullptr;
 }
 
+// Operations (in the work budget's units, a few ns each) one point copy of
+// vtkStreamSurface's iterative loop costs: 5.7e6 copied points took 22 s on the
+// office (VTK 9.1, one core), about 4 us each, with the step's tracing included.
+constexpr double kCopyOperations = 1000;
+// Bytes a point of the iterative surface holds (coordinates, its two double
+// arrays, two triangles) times two: the append filter's copy beside the surface.
+constexpr double kIterativeBytesPerPoint = 2 * (3 * 4 + 2 * 8 + 2 * 4 * 8);
+
+/**
+ * Ends vtkStreamSurface's iterative loop before it passes the memory or work
+ * budget. The loop rebuilds the whole surface once a step (a ModifiedEvent on
+ * the filter's output) and reads its MaximumNumberOfSteps on every pass, so
+ * setting that to 0 stops it after the step just done; Message says why.
+ */
+struct IterativeSurfaceGuard
+{
+  std::string Message;
+  int Steps = 0;
+  double Seeds = 0;
+  double CopiedPoints = 0;  // every direction so far
+  double EarlierPoints = 0; // surfaces of the directions already traced
+  double LastPoints = 0;
+  int StepsDone = 0;
+  vtkStreamSurface* Surface = nullptr;
+
+  void Watch(vtkStreamSurface* surface, int steps)
+  {
+    this->EarlierPoints += this->LastPoints;
+    this->LastPoints = 0;
+    this->StepsDone = 0;
+    this->Steps = steps;
+    this->Surface = surface;
+    surface->GetOutput()->AddObserver(vtkCommand::ModifiedEvent, this, &IterativeSurfaceGuard::OnModified);
+  }
+
+  void OnModified(vtkObject* caller, unsigned long, void*)
+  {
+    auto* surface = vtkPolyData::SafeDownCast(caller);
+    const double points = surface ? static_cast<double>(surface->GetNumberOfPoints()) : 0;
+    if (!this->Message.empty() || points == this->LastPoints)
+    {
+      return;
+    }
+    const double strip = std::max(0.0, points - this->LastPoints);
+    this->LastPoints = points;
+    this->CopiedPoints += points;
+    ++this->StepsDone;
+    // the next step: the front (half the strip's points) may double
+    const double next = points + 2 * strip;
+    std::ostringstream what;
+    what << "the next step of the iterative stream surface (iterative_seeding; grown to " << Num(points)
+         << " points, a front of about " << Num(std::round(strip / 2)) << " seeds from the " << Num(this->Seeds)
+         << " given, after " << this->StepsDone << " of " << this->Steps << " steps)";
+    this->Message = vtkPlumeInputValidation::CheckMemory(
+      (this->EarlierPoints + next) * kIterativeBytesPerPoint, what.str());
+    if (this->Message.empty())
+    {
+      this->Message =
+        vtkPlumeInputValidation::CheckWork((this->CopiedPoints + next) * kCopyOperations, what.str());
+    }
+    if (!this->Message.empty() && this->Surface)
+    {
+      this->Surface->SetMaximumNumberOfSteps(0); // ends the loop after this step
+    }
+  }
+};
+
 /** |array| as a new one-component array named "|name|" (contours of a vector's magnitude). */
 vtkSmartPointer<vtkDataArray> Magnitude(vtkDataArray* array)
 {
@@ -237,7 +305,8 @@ const vtkPlumeParameterTable& vtkPlumeDerivedGeometry::GetParameterTable()
       .Doc("Full width of ribbons; 0: 1 % of the diagonal of the input's bounds.")
       .Bind(&T::SetRibbonWidth, &T::GetRibbonWidth);
     t.Boolean("iterative_seeding", "IterativeSeeding", false)
-      .Doc("vtkStreamSurface's iterative version: adds seeds where the surface spreads (better surface, slower).")
+      .Doc("vtkStreamSurface's iterative version: adds seeds where the surface spreads (better surface, slower: "
+           "refused, or stopped while tracing, with an error once it would pass the memory or work budget).")
       .Bind(&T::SetIterativeSeeding, &T::GetIterativeSeeding);
     t.Boolean("inside_out", "InsideOut", false)
       .Doc("Clip: keep the half against the normal instead.")
@@ -762,18 +831,41 @@ bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDa
     {
       tooMuch = vtkPlumeInputValidation::CheckWork(seedCount * maximumSteps * directions, what.str());
     }
+    if (tooMuch.empty() && this->Operation == STREAM_SURFACE && this->IterativeSeeding)
+    {
+      // vtkStreamSurface's iterative version appends each step's strip to a
+      // copy of the whole surface so far: seeds x steps^2 point copies per
+      // direction even when it adds no seed (measured: about 4 us a copied
+      // point, so each counts as kCopyOperations)
+      std::ostringstream iterative;
+      iterative << "the iterative stream surface (iterative_seeding) from " << seedData->GetNumberOfPoints()
+                << " seeds x " << maximumSteps << " steps x " << directions
+                << " directions, which copies its whole surface once a step (" << Num(points * maximumSteps)
+                << " point copies before it adds any seed)";
+      tooMuch = vtkPlumeInputValidation::CheckWork(points * maximumSteps * kCopyOperations, iterative.str());
+    }
     if (!tooMuch.empty())
     {
       return fail(tooMuch);
     }
     this->Estimate = "at most " + Num(points) + " points";
   }
+  // The iterative version adds seeds where the front spreads (it may double
+  // every step) and VTK 9.1 gives it no abort hook: watch the surface it
+  // rebuilds once a step (its output's ModifiedEvent) and end the loop (its
+  // step count, read on every pass) once the next step would pass a budget.
+  IterativeSurfaceGuard guard;
+  guard.Seeds = static_cast<double>(seedData->GetNumberOfPoints());
   auto makeTracer = [&](int direction) {
     vtkSmartPointer<vtkStreamTracer> tracer;
     if (this->Operation == STREAM_SURFACE)
     {
       auto surface = vtkSmartPointer<vtkStreamSurface>::New();
       surface->SetUseIterativeSeeding(this->IterativeSeeding);
+      if (this->IterativeSeeding)
+      {
+        guard.Watch(surface, maximumSteps);
+      }
       tracer = surface;
     }
     else
@@ -791,7 +883,10 @@ bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDa
     tracer->SetTerminalSpeed(this->TerminalSpeed);
     tracer->SetIntegrationDirection(direction);
     tracer->SetComputeVorticity(this->Operation == RIBBON);
-    tracer->Update();
+    if (guard.Message.empty())
+    {
+      tracer->Update();
+    }
     return tracer;
   };
   vtkSmartPointer<vtkPolyData> tracedData;
@@ -822,6 +917,10 @@ bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDa
         : this->IntegrationDirection == BACKWARD                   ? vtkStreamTracer::BACKWARD
                                                                    : vtkStreamTracer::BOTH);
     tracedData = vtkPolyData::SafeDownCast(tracer->GetOutputDataObject(0));
+  }
+  if (!guard.Message.empty())
+  {
+    return fail(guard.Message + "; set iterative_seeding false, a larger step or a shorter maximum_length");
   }
   vtkPolyData* traced = tracedData;
   const std::string seedText = seeds ? "the seeds dataset (" + std::to_string(seeds->GetNumberOfPoints()) + " points)"

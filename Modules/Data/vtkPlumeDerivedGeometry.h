@@ -210,7 +210,12 @@ public:
   ///@}
 
   ///@{
-  /** vtkStreamSurface's iterative seeding (adds seeds where the surface spreads; slower). Default false. */
+  /**
+   * vtkStreamSurface's iterative seeding (adds seeds where the surface spreads; slower). Its work grows
+   * with steps^2 and its front may double every step: seeds x steps^2 is checked against the work
+   * budget before tracing, and tracing stops with an error once the next step would pass the memory
+   * or work budget. Default false.
+   */
   vtkSetMacro(IterativeSeeding, bool);
   vtkGetMacro(IterativeSeeding, bool);
   ///@}

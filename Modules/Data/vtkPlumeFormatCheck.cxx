@@ -16,6 +16,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -24,6 +25,10 @@
 #include <map>
 #include <string>
 #include <vector>
+
+// The sanitizers' death callback (libFuzzer writes its crash file from it);
+// weak: absent (null) in a build without sanitizers.
+extern "C" void __sanitizer_set_death_callback(void (*callback)(void)) __attribute__((weak));
 
 namespace
 {
@@ -569,24 +574,42 @@ std::string vtkPlumeFormatCheck::CheckLegacyVTK(const std::string& path)
   std::getline(in, line);
   std::getline(in, line);
   std::getline(in, line);
-  static const char* const keywords[] = { "VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS", "CELLS" };
+  // VTK matches a keyword by its first letters in any case ("POLYGONS[" is
+  // POLYGONS) and reads the counts as the next words, on that line or later
+  static const char* const keywords[] = { "vertices", "lines", "polygons", "triangle_strips", "cells" };
   while (std::getline(in, line))
   {
     std::istringstream words(line);
     std::string keyword;
-    long long cells = -1, size = -1;
-    if (!(words >> keyword >> cells >> size))
+    if (!(words >> keyword))
     {
       continue;
     }
+    std::string lower = keyword;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+      [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
     bool isCells = false;
     for (const char* k : keywords)
     {
-      isCells = isCells || keyword == k;
+      isCells = isCells || lower.compare(0, std::strlen(k), k) == 0;
     }
     if (!isCells)
     {
       continue;
+    }
+    long long cells = -1, size = -1;
+    const bool haveCells = static_cast<bool>(words >> cells);
+    const bool onLine = haveCells && static_cast<bool>(words >> size);
+    if (!onLine)
+    {
+      if ((!haveCells && !(in >> cells)) || !(in >> size))
+      {
+        return std::string(); // no counts: VTK's reader fails with its own error
+      }
+      if (in.peek() == '\n')
+      {
+        in.get(); // the values start on the next line
+      }
     }
     const std::string where = "the " + keyword + " section (" + std::to_string(cells) + " cells, " +
       std::to_string(size) + " values)";
@@ -613,9 +636,15 @@ std::string vtkPlumeFormatCheck::CheckLegacyVTK(const std::string& path)
       char* end = nullptr;
       const long long v = std::strtoll(token.c_str(), &end, 10);
       (void)v;
-      if (!end || *end != '\0' || end == token.c_str())
+      // the whole word: strtoll stops at a NUL byte inside it ("3\0\0\x13" is no integer to VTK)
+      if (!end || end != token.c_str() + token.size() || end == token.c_str())
       {
-        return where + ": value " + std::to_string(read) + " is '" + token.substr(0, 40) + "', not an integer";
+        std::string shown = token.substr(0, 40);
+        for (char& ch : shown)
+        {
+          ch = std::isprint(static_cast<unsigned char>(ch)) ? ch : '?'; // NUL and control bytes
+        }
+        return where + ": value " + std::to_string(read) + " is '" + shown + "', not an integer";
       }
       ++read;
     }
@@ -861,6 +890,19 @@ std::string vtkPlumeFormatCheck::RunIsolated(
   if (pid == 0)
   {
     close(fds[0]);
+    // A crash of the reader ends the child by its signal, as in a plain build:
+    // the parent's crash handlers (AddressSanitizer's report, libFuzzer's crash
+    // file) are not for it, and it leaves no core file.
+    for (const int sig : { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP })
+    {
+      std::signal(sig, SIG_DFL);
+    }
+    if (__sanitizer_set_death_callback)
+    {
+      __sanitizer_set_death_callback(nullptr);
+    }
+    const rlimit noCore{ 0, 0 };
+    setrlimit(RLIMIT_CORE, &noCore);
     const int null = open("/dev/null", O_WRONLY);
     if (null >= 0)
     {

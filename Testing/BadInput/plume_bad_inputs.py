@@ -293,6 +293,17 @@ def build(c):
     c.add("LegacyCellsFuzzFinding", "error", ["info", c.write("legacy_cells/fuzz.vtk", legacy_poly(
           "POLYGONS 2 8\n3 0 1 ~2\n3 1 3 2\n", tail="POINT_DATA 4\nSCALARS s float 0\nLOOKUP_TABLE default\n1 2 3 4\n"))],
           r"the POLYGONS section \(2 cells, 8 values\): value 3 is '~2', not an integer")
+    # VTK matches a keyword by its first letters in any case ("POLYGONS[" is POLYGONS) and reads the
+    # counts as the next words, on the same line or not: the cell-list check does too (a short list
+    # behind such a header was the same SEGV; found by plumeFuzzDatasetReader)
+    c.add("LegacyCellsKeywordPrefix", "error", ["info", c.write("legacy_cells/prefix.vtk", legacy_poly(
+          "POLYGONS[ 2 8\n3 0 1 2\n"))], r"the POLYGONS\[ section \(2 cells, 8 values\) ends after 4 values")
+    c.add("LegacyCellsCountsNextLine", "error", ["info", c.write("legacy_cells/next_line.vtk", legacy_poly(
+          "polygons\n2 8\n3 0 1 2\n"))], r"the polygons section \(2 cells, 8 values\) ends after 4 values")
+    c.add("LegacyCellsNulInValue", "error", ["info", c.write("legacy_cells/nul.vtk", legacy_poly(
+          "POLYGONS 2 8\n3 0 1 2\n3\0\0\0\x13 1 2 2\n"))], r"the POLYGONS section \(2 cells, 8 values\): value 4 is '3\?\?\?\?', not an integer")
+    c.add("LegacyCellsCountsNextLineOk", "ok", ["info", c.write("legacy_cells/next_line_ok.vtk", legacy_poly(
+          "polygons 2\n8\n3 0 1 2\n3 1 3 2\n"))], r"Points: 4\s+Cells: 2")
     # a malformed FIELD section: VTK 9.1's legacy readers dereference the null field data they
     # return (SEGV in every dataset type; found by plumeFuzzDatasetReader). Such files are read in a
     # child process first, so the crash is one error; a well-formed FIELD section still reads.
@@ -309,6 +320,38 @@ def build(c):
               crashed % name)
     c.add("LegacyFieldWellFormed", "ok", ["info", c.write("legacy_field/good.vtk", legacy_poly(
           "POLYGONS 1 4\n3 0 1 2\n", tail="FIELD FieldData 1\nTIME 1 1 double\n2.5\n"))], r"Points: 4\s+Cells: 1")
+    # cells with fewer points than their type reads: VTK's cell classes index a cell's first points
+    # without looking at its size (SEGV in the glyph and volume resampling and the surface filter;
+    # the sizes were unchecked, only the ids); the validation after every read refuses them
+    vel = "POINT_DATA 4\nVECTORS v float\n1 0 0 1 0 0 1 0 0 1 0 0\n"
+    def rep_scene(tag, path, rep):
+        return c.scene("cell_size_" + tag, {"datasets": {"d": {"path": path}},
+                                             "representations": [{"type": rep, "dataset": "d"}]})
+    inconsistent = r"datasets\.d: the %s reader gave inconsistent data from .*%s \(corrupt file\?\): "
+    for tag, section, rep, expect in [
+            ("polygon1", "POLYGONS 2 5\n1 0\n2 1 2\n", "glyphs", r"polygons: cell 0 has 1 point; a polygon needs at least 3"),
+            ("polygon0", "POLYGONS 2 4\n0\n2 1 2\n", "volume", r"polygons: cell 0 has 0 points; a polygon needs at least 3"),
+            ("line1", "LINES 2 3\n1 0\n0\n", "volume", r"lines: cell 0 has 1 point; a line needs at least 2"),
+            ("strip2", "TRIANGLE_STRIPS 1 3\n2 0 1\n", "glyphs", r"triangle strips: cell 0 has 2 points; a triangle strip needs at least 3")]:
+        path = c.write("cell_size/%s.vtk" % tag, legacy_poly(section, tail=vel))
+        c.render("CellSize_" + tag, "error", rep_scene(tag, path, rep), inconsistent % ("legacy", tag + r"\.vtk") + expect)
+    for tag, types, rep, expect in [
+            ("hexahedron4", "CELL_TYPES 1\n12\n", "surface", r"cells: cell 0 \(vtkHexahedron, type 12\) has 4 points; it needs 8"),
+            ("type250", "CELL_TYPES 1\n250\n", "surface", r"cells: cell 0 has type 250, which is no VTK cell type")]:
+        path = c.write("cell_size/%s.vtk" % tag, legacy_ugrid("CELLS 1 5\n4 0 1 2 3", types))
+        c.render("CellSize_" + tag, "error", rep_scene(tag, path, rep), inconsistent % ("legacy", tag + r"\.vtk") + expect)
+    zero_offsets = ('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">\n'
+                    '<UnstructuredGrid><Piece NumberOfPoints="4" NumberOfCells="2">\n<Points><DataArray type="Float32" '
+                    'NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0 0 0 1</DataArray></Points>\n<Cells>'
+                    '<DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 3</DataArray>\n'
+                    '<DataArray type="Int64" Name="offsets" format="ascii">0 0</DataArray>\n'
+                    '<DataArray type="UInt8" Name="types" format="ascii">10 10</DataArray></Cells>\n'
+                    '</Piece></UnstructuredGrid></VTKFile>\n')
+    path = c.write("cell_size/offsets_zero.vtu", zero_offsets)
+    c.render("CellSize_xml_offsets_zero", "error", rep_scene("offsets_zero", path, "surface"),
+             inconsistent % ("xml", r"offsets_zero\.vtu") + r"cells: cell 0 \(vtkTetra, type 10\) has 0 points; it needs 4")
+    c.add("CellSizeWellFormed", "ok", ["info", c.write("cell_size/good.vtk", legacy_ugrid(
+          "CELLS 1 5\n4 0 1 2 3", "CELL_TYPES 1\n10\n"))], r"Points: 4\s+Cells: 1")
     # the office stream sheet as legacy 4.2 polydata (binary and ASCII), cut inside its polygons
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
     from vtkmodules.vtkIOLegacy import vtkPolyDataWriter
@@ -478,6 +521,24 @@ def build(c):
     c_add("ExposedEnSightAsciiCountLie", "survive", ["info", ens("countlie", ens_geo.replace("coordinates\n         8", "coordinates\n  99999999"))])
     c_add("ExposedEnSightAsciiElementLie", "survive", ["info", ens("elemlie", ens_geo.replace("hexa8\n         1", "hexa8\n   9999999"))])
 
+    # a series whose later step is corrupt: the first step read in a child said nothing of the
+    # others, which were read in process (a count lie in step 1's geometry hangs VTK's reader,
+    # a node lie is caught by the validation after it). Each step is read in a child first.
+    ens_series = ("FORMAT\ntype:  ensight gold\nGEOMETRY\nmodel: 1 box*.geo\nTIME\ntime set: 1\n"
+                  "number of steps: 2\nfilename start number: 0\nfilename increment: 1\ntime values: 0.0 0.5\n")
+    def ens_steps(tag, later):
+        c.write("exposed/series_%s/box0.geo" % tag, ens_geo)
+        c.write("exposed/series_%s/box1.geo" % tag, later)
+        return c.write("exposed/series_%s/box.case" % tag, ens_series)
+    c.add("ExposedSeriesLaterStepCountLie", "error", ["info", ens_steps("countlie",
+          ens_geo.replace("coordinates\n         8", "coordinates\n  99999999"))],
+          r"the ensight reader did not finish within 5 s \(PLUME_READER_TIMEOUT\) reading time step 1 \(t = 0\.5\) "
+          r"of .*series_countlie/box\.case in a child process \(a corrupt file\?\); not read",
+          env={"PLUME_READER_TIMEOUT": "5"})  # the hang's length, not the check's: kept short
+    c_add("ExposedSeriesFirstStepOk", "ok", ["info", ens_steps("countlie2", ens_geo.replace(
+          "coordinates\n         8", "coordinates\n  99999999")), "--time-step", "0"], r"Points: 8")
+    c_add("ExposedSeriesLaterStepOk", "ok", ["info", ens_steps("ok", ens_geo)], r"read step 1, t = 0\.5")
+
     # HDF5 (netCDF-4) Exodus: not parsed here; a forged and a cut HDF5 signature
     c_add("ExposedExodusHdf5Forged", "survive", ["info", c.write("exposed/forged.ex2", b"\x89HDF\r\n\x1a\n" + bytes(range(256)) * 8, "wb")])
     c_add("ExposedExodusHdf5Cut", "survive", ["info", c.write("exposed/cut.ex2", b"\x89HDF\r\n\x1a\n\x00\x00", "wb")])
@@ -528,6 +589,30 @@ def build(c):
         name = "DerivedBudget" + "".join(w.capitalize() for w in source.split("_"))
         seeds = 1000 if source == "streamlines" else 100000  # streamlines: within memory, over the work budget
         c.render(name, "error", derived_scene(source, {"source": source, "seed_resolution": seeds}), expect, env=env)
+    # vtkStreamSurface's iterative version (VTK 9.1: no abort hook) copies its whole surface once a
+    # step and adds seeds where the front spreads, so its work grows with steps^2 and the front may
+    # double every step: refused before tracing when steps^2 alone is over the work budget, else
+    # stopped when the next step would pass a budget (on the office the default surface ran for
+    # hours and grew past 1 M points by step 100 of 143)
+    office = {"path": "classic/office.binary.vtk"}
+    def iterative_scene(tag, derived):
+        return c.scene("iterative_" + tag, {"datasets": {"o": office, "d": dict(derived, input="o",
+                       source="stream_surface", iterative_seeding=True)},
+                       "representations": [{"type": "outline", "dataset": "d"}]})
+    c.render("IterativeSurfaceRefused", "error", iterative_scene("refused", {"seed_resolution": 100, "step": 0.05}),
+             r"datasets\.d: stream_surface: the iterative stream surface \(iterative_seeding\) from 101 seeds x \d+ steps "
+             r"x 2 directions, which copies its whole surface once a step \([\d.e+]+ point copies before it adds any seed\) "
+             r"needs about [\d.e+]+ operations, over the work budget of 1e\+10 \(PLUME_WORK_BUDGET\)")
+    c.render("IterativeSurfaceGrowsWork", "error", iterative_scene("grows", {}),
+             r"datasets\.d: stream_surface: the next step of the iterative stream surface \(iterative_seeding; grown to \d+ "
+             r"points, a front of about \d+ seeds from the 21 given, after \d+ of \d+ steps\) needs about [\d.e+]+ operations, "
+             r"over the work budget of 2e\+09 \(PLUME_WORK_BUDGET\); set iterative_seeding false, a larger step or a shorter "
+             r"maximum_length", env={"PLUME_WORK_BUDGET": "2e9"})
+    c.render("IterativeSurfaceGrowsMemory", "error", iterative_scene("grows_mem", {}),
+             r"datasets\.d: stream_surface: the next step of the iterative stream surface \(iterative_seeding; grown to \d+ "
+             r"points, .* steps\) needs about [\d.]+ MB, over the memory budget of 16 MB \(PLUME_MEMORY_BUDGET_MB\)",
+             env={"PLUME_MEMORY_BUDGET_MB": "16"})
+    c.render("IterativeSurfaceOk", "ok", iterative_scene("ok", {"maximum_length": 1.0}), r"wrote")
     # the same kinds of scene within the budget still render
     c.render("DerivedBudgetContourOk", "ok", derived_scene("contour_ok", {"source": "contour", "values": [0.1, 0.5]}),
              "", env={"PLUME_MEMORY_BUDGET_MB": "64"})

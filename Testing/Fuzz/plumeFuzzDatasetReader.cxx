@@ -4,11 +4,18 @@
 // EnSight Gold geometry (under a fixed .case), .pvd, PLOT3D .bin. A bad file
 // must give GetLastError(); a crash or a sanitizer report is a finding. The
 // output, when there is one, must pass vtkPlumeInputValidation (the reader
-// promises consistent data).
+// promises consistent data), and what passes goes through what the
+// representations run first (the surface filter, the resampling onto an 8^3
+// image that glyphs and volumes use): data the validation lets through must
+// not crash them (cells with fewer points than their type did).
 #include "vtkPlumeDatasetReader.h"
 #include "vtkPlumeInputValidation.h"
 
+#include "vtkPlumeResampleToImage.h"
+
 #include "vtkDataObject.h"
+#include "vtkDataSet.h"
+#include "vtkDataSetSurfaceFilter.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
 
@@ -53,11 +60,24 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   vtkDataObject* output = reader->GetOutputDataObject(0);
   if (reader->GetLastError().empty() && output)
   {
-    const std::string invalid = vtkPlumeInputValidation::CheckDataObject(output);
+    const std::string invalid = vtkPlumeInputValidation::CheckDataObject(output, true);
     if (!invalid.empty())
     {
       std::fprintf(stderr, "reader output fails validation: %s\n", invalid.c_str());
       std::abort();
+    }
+    if (auto* data = vtkDataSet::SafeDownCast(output))
+    {
+      if (data->GetNumberOfCells() > 0 && data->GetNumberOfCells() < 100000)
+      {
+        vtkNew<vtkDataSetSurfaceFilter> surface;
+        surface->SetInputData(data);
+        surface->Update();
+        vtkNew<vtkPlumeResampleToImage> resample;
+        resample->SetInputData(data);
+        resample->SetSamplingDimensions(8, 8, 8);
+        resample->Update();
+      }
     }
   }
   return 0;

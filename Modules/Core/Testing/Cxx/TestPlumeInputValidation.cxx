@@ -5,6 +5,7 @@
 #include "vtkPlumeInputValidation.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellType.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
@@ -16,12 +17,14 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <cmath>
+#include <initializer_list>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <limits>
 #include <string>
+#include <vector>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -98,6 +101,46 @@ int TestPlumeInputValidation(int, char*[])
     const vtkIdType tet[4] = { 0, 1, 2, 9 };
     grid->InsertNextCell(VTK_TETRA, 4, tet);
     CHECK(Has(V::CheckCells(grid), "cells: cell 0 references point id 9"));
+  }
+  // ---- each cell's size against its type (VTK's cell classes read as many points as the type has)
+  {
+    auto grid = [](int type, std::initializer_list<vtkIdType> ids) {
+      vtkNew<vtkUnstructuredGrid> g;
+      g->SetPoints(Square(2)->GetPoints());
+      const std::vector<vtkIdType> v(ids);
+      vtkNew<vtkCellArray> cells; // no face stream, as a reader that sets types and cells only
+      cells->InsertNextCell(static_cast<vtkIdType>(v.size()), v.data());
+      g->SetCells(type, cells);
+      return vtkSmartPointer<vtkUnstructuredGrid>(g);
+    };
+    CHECK(V::CheckCells(grid(VTK_TETRA, { 0, 1, 2, 3 })).empty());
+    CHECK(V::CheckCells(grid(VTK_POLYGON, { 0, 1, 2, 3 })).empty());
+    CHECK(Has(V::CheckCells(grid(VTK_HEXAHEDRON, { 0, 1, 2, 3 })),
+      "cells: cell 0 (vtkHexahedron, type 12) has 4 points; it needs 8"));
+    CHECK(Has(V::CheckCells(grid(VTK_POLYGON, { 0, 1 })), "(vtkPolygon, type 7) has 2 points; it needs at least 3"));
+    CHECK(Has(V::CheckCells(grid(250, { 0 })), "cells: cell 0 has type 250, which is no VTK cell type"));
+    {
+      // a tetrahedron as a polyhedron: 4 triangular faces; then one face naming point 9
+      vtkNew<vtkUnstructuredGrid> g;
+      g->SetPoints(Square(2)->GetPoints());
+      vtkIdType stream[] = { 4, 3, 0, 1, 2, 3, 0, 1, 3, 3, 1, 2, 3, 3, 0, 2, 3 };
+      g->InsertNextCell(VTK_POLYHEDRON, 4, stream);
+      CHECK(V::CheckCells(g).empty());
+      g->GetFaces()->SetValue(g->GetFaceLocations()->GetValue(0) + 3, 9);
+      CHECK(Has(V::CheckCells(g), "is a polyhedron (type 42) but its face 0 references point id 9"));
+    }
+    auto poly = Square(2);
+    vtkNew<vtkCellArray> lines;
+    const vtkIdType one[1] = { 0 };
+    lines->InsertNextCell(1, one);
+    poly->SetLines(lines);
+    CHECK(V::CheckCells(poly).empty()); // the splatter skips a single-vertex line
+    CHECK(Has(V::CheckCells(poly, true), "lines: cell 0 has 1 point; a line needs at least 2"));
+    CHECK(Has(V::CheckDataObject(poly, true), "lines: cell 0 has 1 point; a line needs at least 2"));
+    vtkNew<vtkCellArray> empty;
+    empty->InsertNextCell(0, one);
+    poly->SetLines(empty);
+    CHECK(Has(V::CheckCells(poly), "lines: cell 0 has 0 points; a line needs at least 1"));
   }
 
   // ---- tuple counts
