@@ -79,7 +79,8 @@ bool vtkPlumePingPongTexture3D::Upload(const float* values)
     return false;
   }
   front->Activate();
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  // float rows are 4·n bytes, so VTK's GL_UNPACK_ALIGNMENT of 1 fits; setting 4 here
+  // left it changed for later byte uploads (the volume's occupancy rows: ASan overflow)
   glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, this->Dimensions[0], this->Dimensions[1], this->Dimensions[2],
     this->Components == 4 ? GL_RGBA : GL_RED, GL_FLOAT, values);
   front->Deactivate();
