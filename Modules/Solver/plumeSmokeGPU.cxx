@@ -11,6 +11,7 @@
 #include "vtkNew.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPlumeComputeContext.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderWindow.h"
@@ -31,17 +32,6 @@ namespace smoke
 {
 namespace
 {
-std::string DrainErrors()
-{
-  std::string errors;
-  for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError())
-  {
-    std::ostringstream s;
-    s << (errors.empty() ? "" : ", ") << "0x" << std::hex << e;
-    errors += s.str();
-  }
-  return errors;
-}
 
 using Binding = std::pair<const char*, vtkTextureObject*>;
 
@@ -55,7 +45,7 @@ void SetIVec3(vtkShaderProgram* program, const char* name, int count, const int*
 class SmokeGPU::Internals
 {
 public:
-  vtkSmartPointer<vtkRenderWindow> OwnWindow;
+  vtkNew<vtkPlumeComputeContext> Compute; // the user's window or an own offscreen one
   vtkOpenGLRenderWindow* Window = nullptr;
   GPUGrid Grid{};
   vtkNew<vtkPlumePingPongTexture3D> U[3];
@@ -125,37 +115,17 @@ public:
 
   vtkOpenGLRenderWindow* Context(vtkRenderWindow* given, std::string& error)
   {
-    vtkRenderWindow* window = given;
-    if (!window)
-    {
-      if (!this->OwnWindow)
-      {
-        this->OwnWindow = vtkSmartPointer<vtkRenderWindow>::New();
-        this->OwnWindow->SetOffScreenRendering(1);
-        this->OwnWindow->SetMultiSamples(0);
-        this->OwnWindow->SetSize(8, 8);
-      }
-      window = this->OwnWindow;
-    }
-    auto* ogl = vtkOpenGLRenderWindow::SafeDownCast(window);
+    vtkOpenGLRenderWindow* ogl = this->Compute->Resolve(given, error);
     if (!ogl)
     {
-      error = std::string("the render window is a ") + window->GetClassName() + ", not a vtkOpenGLRenderWindow";
       return nullptr;
     }
     if (this->Window && this->Window != ogl)
     {
       this->Release();
     }
-    ogl->MakeCurrent();
-    if (!ogl->IsCurrent())
+    if (!vtkPlumeComputeContext::MakeCurrent(ogl, error))
     {
-      ogl->Initialize(); // a window that never rendered has no context yet
-      ogl->MakeCurrent();
-    }
-    if (!ogl->IsCurrent())
-    {
-      error = "no OpenGL context (an offscreen window needs a display with this VTK)";
       return nullptr;
     }
     this->Window = ogl;
@@ -252,7 +222,7 @@ public:
       return false;
     }
     this->Window->MakeCurrent();
-    DrainErrors(); // not ours
+    vtkPlumeComputeContext::DrainErrors(); // not ours
     vtkOpenGLState* state = this->Window->GetState();
     state->PushFramebufferBindings();
     this->Framebuffer->Bind(GL_FRAMEBUFFER);
@@ -276,7 +246,7 @@ public:
       this->VAO->Release();
     }
     state->PopFramebufferBindings();
-    const std::string errors = DrainErrors();
+    const std::string errors = vtkPlumeComputeContext::DrainErrors();
     if (ok && !errors.empty())
     {
       error = "GL error " + errors;
@@ -332,7 +302,7 @@ bool SmokeGPU::Upload(vtkRenderWindow* window, const GPUGrid& grid, const std::v
   {
     return false;
   }
-  DrainErrors();
+  vtkPlumeComputeContext::DrainErrors();
   GLint max3D = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
   for (int a = 0; a < 3; ++a)
@@ -396,7 +366,7 @@ bool SmokeGPU::Upload(vtkRenderWindow* window, const GPUGrid& grid, const std::v
   {
     impl.VAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
   }
-  const std::string errors = DrainErrors();
+  const std::string errors = vtkPlumeComputeContext::DrainErrors();
   if (!errors.empty())
   {
     error = "GL error " + errors + " while uploading the state";
@@ -654,7 +624,7 @@ bool SmokeGPU::CellVelocity(float* rgba, std::string& error)
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, rgba);
   impl.CellVelocity->Deactivate();
-  const std::string errors = DrainErrors();
+  const std::string errors = vtkPlumeComputeContext::DrainErrors();
   if (!errors.empty())
   {
     error = "GL error " + errors + " reading the cell velocity";
@@ -707,7 +677,7 @@ bool SmokeGPU::Download(std::vector<double> u[3], std::vector<double>& density, 
     return false;
   }
   impl.Window->MakeCurrent();
-  DrainErrors();
+  vtkPlumeComputeContext::DrainErrors();
   std::vector<float> values;
   auto download = [&](vtkPlumePingPongTexture3D* texture, std::vector<double>& out) {
     const int* m = texture->GetDimensions();
@@ -722,7 +692,7 @@ bool SmokeGPU::Download(std::vector<double> u[3], std::vector<double>& density, 
   download(impl.Density, density);
   download(impl.Temperature, temperature);
   download(impl.Pressure, q);
-  const std::string errors = DrainErrors();
+  const std::string errors = vtkPlumeComputeContext::DrainErrors();
   if (!errors.empty())
   {
     error = "GL error " + errors + " reading the state back";

@@ -10,6 +10,7 @@
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPlumeComputeContext.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
@@ -36,23 +37,12 @@ namespace
 constexpr size_t MaxBatchSplats = 1 << 16;
 constexpr size_t MaxBatchWeights = 1 << 22;
 
-std::string DrainErrors()
-{
-  std::string errors;
-  for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError())
-  {
-    std::ostringstream s;
-    s << (errors.empty() ? "" : ", ") << "0x" << std::hex << e;
-    errors += s.str();
-  }
-  return errors;
-}
 }
 
 class SplatGPU::Internals
 {
 public:
-  vtkSmartPointer<vtkRenderWindow> OwnWindow;
+  vtkNew<vtkPlumeComputeContext> Compute; // the user's window or an own offscreen one
   vtkOpenGLRenderWindow* Window = nullptr; // the context the GL objects below belong to
   vtkSmartPointer<vtkOpenGLVertexArrayObject> VAO;
   vtkSmartPointer<vtkOpenGLBufferObject> SplatBuffer;
@@ -102,38 +92,17 @@ public:
 
   vtkOpenGLRenderWindow* Context(vtkRenderWindow* given, std::string& error)
   {
-    vtkRenderWindow* window = given;
-    if (!window)
-    {
-      if (!this->OwnWindow)
-      {
-        this->OwnWindow = vtkSmartPointer<vtkRenderWindow>::New();
-        this->OwnWindow->SetOffScreenRendering(1);
-        this->OwnWindow->SetMultiSamples(0);
-        this->OwnWindow->SetSize(8, 8);
-      }
-      window = this->OwnWindow;
-    }
-    auto* ogl = vtkOpenGLRenderWindow::SafeDownCast(window);
+    vtkOpenGLRenderWindow* ogl = this->Compute->Resolve(given, error);
     if (!ogl)
     {
-      error = std::string("the render window is a ") + window->GetClassName() + ", not a vtkOpenGLRenderWindow";
       return nullptr;
     }
     if (this->Window && this->Window != ogl)
     {
       this->Release();
     }
-    // A window that never rendered has no context yet: make one.
-    ogl->MakeCurrent();
-    if (!ogl->IsCurrent())
+    if (!vtkPlumeComputeContext::MakeCurrent(ogl, error))
     {
-      ogl->Initialize();
-      ogl->MakeCurrent();
-    }
-    if (!ogl->IsCurrent())
-    {
-      error = "no OpenGL context (an offscreen window needs a display with this VTK)";
       return nullptr;
     }
     this->Window = ogl;
@@ -172,7 +141,7 @@ bool SplatGPU::Run(vtkRenderWindow* window, const Grid& grid, const Settings& se
   {
     return false;
   }
-  DrainErrors(); // not ours
+  vtkPlumeComputeContext::DrainErrors(); // not ours
   const bool sum = settings.Mode == Kind::Sum;
   const int comps = settings.Components;
 
@@ -409,7 +378,7 @@ bool SplatGPU::Run(vtkRenderWindow* window, const Grid& grid, const Settings& se
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glGetTexImage(GL_TEXTURE_3D, 0, comps == 3 ? GL_RGB : GL_RED, GL_FLOAT, out);
   impl.Target->Deactivate();
-  const std::string errors = DrainErrors();
+  const std::string errors = vtkPlumeComputeContext::DrainErrors();
   if (!errors.empty())
   {
     error = "GL error " + errors;
