@@ -1,4 +1,5 @@
-// The parameter tables of the renderers the scene format exposes, in the
+// The parameter tables of the classes the scene format exposes (dataset
+// sources, derived datasets, representations, the medium), in the
 // order Documentation/SceneFormat.md lists them (`plume params`).
 #ifndef plumeParameterTables_h
 #define plumeParameterTables_h

@@ -11,12 +11,14 @@
 #include "plumeSceneError.h"
 
 #include "vtkPlumeGaussianSplatter.h"
+#include "vtkPlumeParameterTable.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPlaneSource.h"
@@ -84,11 +86,11 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
   const std::string reference = p.String("reference", "");
   const std::string save = p.String("save", "");
   const bool closed = p.Boolean("closed", false);
-  const std::string mode = p.Choice("mode", "velocity", { "velocity", "density", "distance" });
-  const double sigma = p.Number("sigma", 0.1, 1e-12);
-  const double cutoff = p.Number("cutoff", 4.0, 0.5, 40.0);
-  const double scale = p.Number("scale", 1.0);
-  const bool integrate = p.Boolean("integrate", true);
+  // the splatter's own parameters (mode, sigma, scale, cutoff, integrate,
+  // backend, ...) come from its table: one declaration of their defaults and
+  // ranges for scenes, ParaView and the documentation
+  vtkNew<vtkPlumeGaussianSplatter> splatter;
+  p.Apply(vtkPlumeGaussianSplatter::GetParameterTable(), splatter);
   const auto dims = p.Vector<3>("dimensions", { 32, 32, 32 });
   const bool hasBounds = p.Has("bounds");
   const auto bounds = p.Vector<6>("bounds", { 1, -1, 1, -1, 1, -1 });
@@ -198,15 +200,7 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
     }
   }
 
-  vtkNew<vtkPlumeGaussianSplatter> splatter;
   splatter->SetLinesData(lines);
-  splatter->SetMode(mode == "velocity" ? vtkPlumeGaussianSplatter::VECTOR_SUM
-      : mode == "density"              ? vtkPlumeGaussianSplatter::SCALAR_SUM
-                                       : vtkPlumeGaussianSplatter::DISTANCE_MAX);
-  splatter->SetRadius(sigma);
-  splatter->SetCutoffFactor(cutoff);
-  splatter->SetLineScaleFactor(scale);
-  splatter->SetIntegrateOverVoxel(integrate);
   splatter->SetDimensions(int(dims[0]), int(dims[1]), int(dims[2]));
   if (hasBounds)
   {
@@ -216,16 +210,13 @@ vtkSmartPointer<vtkDataObject> BuildSplatDataset(Parameters& p, SceneDatasets& d
   {
     splatter->SetReferenceImage(datasets.GetImage(reference, where)); // its grid, not its data
   }
-  // The command line renders without X (OSMesa), where the GPU backend would
-  // need a window of its own; the CPU backend is the faster one here anyway.
-  splatter->SetBackend(vtkPlumeGaussianSplatter::BACKEND_CPU);
   splatter->Update();
   if (!splatter->GetLastError().empty())
   {
     throw SceneError(where + ": " + splatter->GetLastError());
   }
   vtkSmartPointer<vtkImageData> image = splatter->GetOutput();
-  if (mode == "velocity")
+  if (splatter->GetMode() == vtkPlumeGaussianSplatter::VECTOR_SUM)
   {
     vtkDataArray* v = image->GetPointData()->GetVectors();
     vtkNew<vtkFloatArray> speed;

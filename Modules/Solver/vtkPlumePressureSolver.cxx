@@ -100,7 +100,7 @@ const vtkPlumeParameterTable& vtkPlumePressureSolver::GetParameterTable()
     t.Real("pressure_tolerance", "Tolerance", 1e-6)
       .Between(0.0, 1.0)
       .Panel("Pressure")
-      .Doc("Relative residual ‖b − Aq‖ / ‖b‖ at which the pressure solve stops; 0 runs max_iterations.")
+      .Doc("Relative residual ‖b − Aq‖ / ‖b‖ at which the pressure solve stops; 0 runs pressure_max_iterations.")
       .Bind(&T::SetTolerance, &T::GetTolerance);
     t.Integer("pressure_max_iterations", "MaximumIterations", 1000)
       .Between(1, 10000000)

@@ -111,7 +111,7 @@ const vtkPlumeParameterTable& vtkPlumeGaussianSplatter::GetParameterTable()
 {
   static const vtkPlumeParameterTable table = [] {
     using T = vtkPlumeGaussianSplatter;
-    vtkPlumeParameterTable t("vtkPlumeGaussianSplatter", "");
+    vtkPlumeParameterTable t("vtkPlumeGaussianSplatter", "splat");
     t.Choice("mode", "Mode", "velocity")
       .Choice("velocity", VECTOR_SUM, "sum of the points' vectors (line segments: their velocity) times the Gaussian; output 'velocity'")
       .Choice("density", SCALAR_SUM, "sum of the points' scalars (line segments: their length) times the Gaussian; output 'density'")
@@ -119,7 +119,7 @@ const vtkPlumeParameterTable& vtkPlumeGaussianSplatter::GetParameterTable()
       .Panel("Splat")
       .Doc("What is splatted.")
       .Bind(&T::SetMode, &T::GetMode);
-    t.Real("radius", "Radius", 0.1)
+    t.Real("sigma", "Radius", 0.1)
       .Between(0.0, 1e30)
       .Units("world units")
       .Panel("Splat")
@@ -138,7 +138,7 @@ const vtkPlumeParameterTable& vtkPlumeGaussianSplatter::GetParameterTable()
       .Panel("Splat")
       .Doc("Scalar array of the points (density, distance); empty: the active scalars, else 1.")
       .Bind(&T::SetScalarArrayName, &T::GetScalarArrayName);
-    t.Real("line_scale", "LineScaleFactor", 1.0)
+    t.Real("scale", "LineScaleFactor", 1.0)
       .Between(-1e30, 1e30)
       .Panel("Splat")
       .Advanced()
@@ -151,7 +151,7 @@ const vtkPlumeParameterTable& vtkPlumeGaussianSplatter::GetParameterTable()
       .Advanced()
       .Doc("Splats touch voxels within cutoff x sigma per axis (error about exp(-cutoff^2/2) of the peak).")
       .Bind(&T::SetCutoffFactor, &T::GetCutoffFactor);
-    t.Boolean("integrate_over_voxel", "IntegrateOverVoxel", true)
+    t.Boolean("integrate", "IntegrateOverVoxel", true)
       .Panel("Accuracy")
       .Advanced()
       .Doc("Average each splat over the voxel (erf) instead of sampling it at the voxel's centre.")

@@ -102,8 +102,9 @@ public:
 #ifndef __VTK_WRAP__
   /**
    * The one declaration of the splatter's user parameters (the ParaView
-   * filter's properties are made from it); the constructor applies its
-   * defaults. Dimensions, ModelBounds and the inputs are not in it.
+   * filter's properties and the keys of a scene's splat dataset are made
+   * from it); the constructor applies its defaults. Dimensions, ModelBounds
+   * and the inputs are not in it.
    */
   static const vtkPlumeParameterTable& GetParameterTable();
 #endif
