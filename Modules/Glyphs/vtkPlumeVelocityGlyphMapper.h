@@ -58,18 +58,21 @@
  * G = max(1, A / ScreenSpacing²) glyphs, the stride is
  * max(1, ceil(cbrt(N / G))), reported by GetEffectiveStride().
  *
- * Compositing: glyphs are drawn in the opaque pass with depth test and depth
- * write on and standard (non-premultiplied) alpha blending,
- * (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) for colour and (ONE, ONE_MINUS_SRC_ALPHA)
- * for alpha; fragments with alpha < 1/512 are discarded (no depth write).
- * Opaque actors occlude glyphs and glyphs occlude what is behind them; the
- * faded part of a glyph blends with what was drawn before it. With a
- * vtkPlumeCompositingPass on the renderer the glyphs draw right after the
- * whole opaque scene (its surface step), before media read the depth, in any
- * actor order; in a plain vtkRenderer add the glyph actor after the opaque
- * actors it overlaps. Keep the actor's opacity at 1
- * (it multiplies the glyph alpha, but opacity < 1 moves the actor into VTK's
- * translucent pass, which this mapper does not take part in).
+ * Compositing: glyphs are drawn with depth test and depth write on and
+ * standard (non-premultiplied) alpha blending, (SRC_ALPHA,
+ * ONE_MINUS_SRC_ALPHA) for colour and (ONE, ONE_MINUS_SRC_ALPHA) for alpha;
+ * fragments with alpha < 1/512 are discarded (no depth write). Opaque actors
+ * occlude glyphs and glyphs occlude what is behind them; the faded part of a
+ * glyph (RootAlpha, a table with alpha, the actor's opacity, which multiplies
+ * the glyph alpha) blends with what was drawn before it. Where they draw:
+ *  - with a vtkPlumeCompositingPass on the renderer: always in its surface
+ *    step, right after the whole opaque scene, whatever the actor's opacity
+ *    and in any actor order; VTK's translucent actors (step 4) and the media
+ *    (step 5) come after and see the glyphs' depth;
+ *  - in a plain vtkRenderer: an actor with opacity 1 in the opaque pass (add
+ *    it after the opaque actors its faded parts overlap); an actor with
+ *    opacity < 1 in VTK's translucent pass (order-independent transparency
+ *    or depth peeling), whose shader replacements the mapper applies.
  *
  * Precision: positions in the shaders are offsets from the volume centre;
  * the model-to-clip matrix is composed in double precision on the CPU
@@ -310,10 +313,10 @@ public:
   int GetHandOverCount();
 
   /**
-   * Glyphs of an opaque actor are drawn in the opaque pass (blended there when
-   * they fade, see the class documentation); an actor with opacity < 1 is
-   * drawn by VTK's translucent pass (order-independent transparency or depth
-   * peeling), whose shader replacements the mapper applies.
+   * The mapper reports opaque geometry only; vtkActor still sends an actor
+   * with opacity < 1 to the translucent pass. Which pass draws the glyphs,
+   * with and without a vtkPlumeCompositingPass: "Compositing" in the class
+   * documentation.
    */
   bool HasOpaqueGeometry() override { return true; }
   bool HasTranslucentPolygonalGeometry() override { return false; }
