@@ -17,6 +17,7 @@
 #include "vtkPlumeGlyphGS.h"
 #include "vtkPlumeGlyphLineVS.h"
 #include "vtkPlumeGlyphVS.h"
+#include "vtkPlumeWindowChange.h"
 
 #include "vtkActor.h"
 #include "vtkAlgorithmOutput.h"
@@ -618,11 +619,7 @@ void vtkPlumeVelocityGlyphMapper::Render(vtkRenderer* ren, vtkActor* actor)
     vtkErrorMacro(<< "an OpenGL render window and camera are required");
     return;
   }
-  if (impl.Window && impl.Window != frame.Window)
-  {
-    impl.ReleaseGraphicsResources(impl.Window); // GL objects belong to one context
-  }
-  impl.Window = frame.Window;
+  plume::ReleaseOnWindowChange(impl, frame.Window);
 
   if (!impl.UpdateResources(this, frame, vectors, mask) || !impl.ComputeFrame(this, frame) ||
     !impl.UpdateRoots(this, frame) || !impl.UpdateColors(this, frame))

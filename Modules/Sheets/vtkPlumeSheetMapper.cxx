@@ -19,6 +19,7 @@
 
 #include "vtkPlumeSheetDensityGrid.h"
 #include "vtkPlumeVolumeMapper.h"
+#include "vtkPlumeWindowChange.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
 #include "vtkPiecewiseFunction.h"
@@ -505,11 +506,7 @@ void vtkPlumeSheetMapper::Render(vtkRenderer* ren, vtkActor* actor)
     vtkErrorMacro(<< "an OpenGL render window and camera are required");
     return;
   }
-  if (impl.Window && impl.Window != frame.Window)
-  {
-    impl.ReleaseGraphicsResources(impl.Window); // GL objects belong to one context
-  }
-  impl.Window = frame.Window;
+  plume::ReleaseOnWindowChange(impl, frame.Window);
   if (this->RenderMode == RENDER_GRID)
   {
     if (impl.UpdateGrid(this, frame))

@@ -12,6 +12,7 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPlumeComputeContext.h"
+#include "vtkPlumeTexture3DSize.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderWindow.h"
@@ -303,16 +304,13 @@ bool SmokeGPU::Upload(vtkRenderWindow* window, const GPUGrid& grid, const std::v
     return false;
   }
   vtkPlumeComputeContext::DrainErrors();
-  GLint max3D = 0;
-  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
-  for (int a = 0; a < 3; ++a)
+  // the face-velocity textures are one larger than the cells along each axis
+  const int faces[3] = { grid.Cells[0] + 1, grid.Cells[1] + 1, grid.Cells[2] + 1 };
+  int max3D = 0; // asked each time: the context may differ
+  error = plume::Check3DTextureSize(win, faces, max3D);
+  if (!error.empty())
   {
-    if (grid.Cells[a] + 1 > max3D)
-    {
-      error = "grid dimension " + std::to_string(grid.Cells[a]) + " (+1 for the faces) exceeds GL_MAX_3D_TEXTURE_SIZE " +
-        std::to_string(max3D);
-      return false;
-    }
+    return false;
   }
   impl.Grid = grid;
   const int* n = grid.Cells;

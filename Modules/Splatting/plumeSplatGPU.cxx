@@ -11,6 +11,7 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPlumeComputeContext.h"
+#include "vtkPlumeTexture3DSize.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
@@ -145,18 +146,14 @@ bool SplatGPU::Run(vtkRenderWindow* window, const Grid& grid, const Settings& se
   const bool sum = settings.Mode == Kind::Sum;
   const int comps = settings.Components;
 
-  GLint max3D = 0, maxBuffer = 0;
-  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxBuffer);
-  for (int a = 0; a < 3; ++a)
+  int max3D = 0; // asked each run: the context may differ
+  error = plume::Check3DTextureSize(win, grid.Dims, max3D);
+  if (!error.empty())
   {
-    if (grid.Dims[a] > max3D)
-    {
-      error = "grid dimension " + std::to_string(grid.Dims[a]) + " exceeds GL_MAX_3D_TEXTURE_SIZE " +
-        std::to_string(max3D);
-      return false;
-    }
+    return false;
   }
+  GLint maxBuffer = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxBuffer);
   if (size_t(maxBuffer) < MaxBatchWeights || size_t(maxBuffer) < 3 * MaxBatchSplats)
   {
     error = "GL_MAX_TEXTURE_BUFFER_SIZE " + std::to_string(maxBuffer) + " is too small";

@@ -13,6 +13,7 @@
 #include "vtkPlumeShaderProgramCache.h"
 #include "vtkPlumeVolumeFS.h"
 #include "vtkPlumeVolumeVS.h"
+#include "vtkPlumeWindowChange.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -534,11 +535,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkErrorMacro(<< "cell scalars are not supported; use point data (e.g. vtkCellDataToPointData)");
     return;
   }
-  if (impl.Window && impl.Window != renWin)
-  {
-    impl.ReleaseGraphicsResources(impl.Window);
-  }
-  impl.Window = renWin;
+  plume::ReleaseOnWindowChange(impl, renWin);
 
   Internals::Frame frame;
   frame.Renderer = ren;
