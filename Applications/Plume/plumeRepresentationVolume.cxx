@@ -37,18 +37,19 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   // outside the data
   vtkNew<vtkPlumeVolumeMapper> mapper;
   p.Apply(vtkPlumeVolumeMapper::GetParameterTable(), mapper);
-  const int mode = mapper->GetRenderMode();
-  const bool smoke = mode == vtkPlumeVolumeMapper::RENDER_SMOKE;
   Coloring coloring;
   coloring.Read(p, { 1, 1, 1 });
   coloring.ReadLegend(p);
   const bool solid = p.Boolean("solid_color", false);
   const nlohmann::json* opacityPoints = p.Raw("opacity");
-  // vtkVolumeProperty's lighting: smoke is lit more evenly by default
-  const double ambient = p.Number("ambient", smoke ? 0.3 : 0.15, 0.0, 10.0);
-  const double diffuse = p.Number("diffuse", smoke ? 1.0 : 0.75, 0.0, 10.0);
-  const double specular = p.Number("specular", 0.3, 0.0, 10.0);
-  const double specularPower = p.Number("specular_power", 20.0, 1.0, 1000.0);
+  // the mapper's lighting for its mode (smoke is lit more evenly); the scene may override each value
+  vtkNew<vtkVolume> volume;
+  vtkVolumeProperty* property = volume->GetProperty();
+  mapper->ApplyDefaultLighting(property);
+  property->SetAmbient(p.Number("ambient", property->GetAmbient(), 0.0, 10.0));
+  property->SetDiffuse(p.Number("diffuse", property->GetDiffuse(), 0.0, 10.0));
+  property->SetSpecular(p.Number("specular", property->GetSpecular(), 0.0, 10.0));
+  property->SetSpecularPower(p.Number("specular_power", property->GetSpecularPower(), 1.0, 1000.0));
   p.RejectUnknown();
   if (dataset.empty())
   {
@@ -109,8 +110,6 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
       rangeComponent >= 0 || array->GetNumberOfComponents() == 1 ? name : "|" + name + "|");
   }
 
-  vtkNew<vtkVolume> volume;
-  vtkVolumeProperty* property = volume->GetProperty();
   vtkNew<vtkColorTransferFunction> color;
   for (int i = 0; i < 64; ++i)
   {
@@ -148,10 +147,6 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
   property->SetInterpolationTypeToLinear();
-  property->SetAmbient(ambient);
-  property->SetDiffuse(diffuse);
-  property->SetSpecular(specular);
-  property->SetSpecularPower(specularPower);
 
   mapper->SetInputData(image);
   mapper->SetScalarModeToUsePointFieldData();

@@ -401,6 +401,19 @@ double vtkPlumeVolumeMapper::GetAutomaticOpacityUnitDistance(vtkImageData* image
   return mean > 0 && std::isfinite(mean) ? mean : 1.0;
 }
 
+void vtkPlumeVolumeMapper::ApplyDefaultLighting(vtkVolumeProperty* property)
+{
+  if (!property)
+  {
+    return;
+  }
+  const bool smoke = this->GetRenderMode() == RENDER_SMOKE;
+  property->SetAmbient(smoke ? 0.3 : 0.15);
+  property->SetDiffuse(smoke ? 1.0 : 0.75);
+  property->SetSpecular(0.3);
+  property->SetSpecularPower(20.0);
+}
+
 double vtkPlumeVolumeMapper::GetAutomaticIsoValue(vtkVolumeProperty* property, const double range[2])
 {
   // the middle of the colour map (what the user sees coloured), else of the range

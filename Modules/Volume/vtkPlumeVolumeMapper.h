@@ -330,6 +330,18 @@ public:
   /** The automatic opacity unit distance: the image's mean absolute spacing (1 if it has none). */
   static double GetAutomaticOpacityUnitDistance(vtkImageData* image);
 
+  /**
+   * Plume's lighting for the vtkVolumeProperty that goes with this mapper, in
+   * its current render mode (VTK's own defaults, ambient 0.1, diffuse 0.7,
+   * specular 0.2, specular power 10, are made for surfaces): RENDER_SMOKE is
+   * lit more evenly, ambient 0.3 and diffuse 1.0 (the scattering's ka and
+   * kd); the other modes' shading ambient 0.15 and diffuse 0.75; specular 0.3
+   * and specular power 20 in every mode. Sets them on `property` (call it
+   * after choosing the mode); the `plume` command line starts every volume
+   * from them (scene keys ambient, diffuse, specular, specular_power).
+   */
+  void ApplyDefaultLighting(vtkVolumeProperty* property);
+
   ///@{
   /** Smoke: emission–absorption with single-scattered, self-shadowed light. Default off. */
   vtkSetMacro(Smoke, bool);

@@ -9,7 +9,8 @@
 //    middle of the colour transfer function's range,
 //    drawing exactly what that value set explicitly draws;
 //  - an iso value outside the data warns once per value (no surface shows);
-//  - the unit distance and the iso value declared in the parameter table.
+//  - the unit distance and the iso value declared in the parameter table;
+//  - the lighting per mode (ApplyDefaultLighting: smoke 0.3/1.0, else 0.15/0.75).
 #include "plumeVolumeTestUtil.h"
 
 #include "vtkCallbackCommand.h"
@@ -143,6 +144,26 @@ int TestVolumeDefaults(int, char*[])
   if (!iso || iso->Property != "IsoValue" || !iso->IsAutomatic || !std::isnan(std::get<double>(iso->Default)))
   {
     fail("iso_value is not in the parameter table as an automatic (NaN) IsoValue");
+  }
+
+  // ---- lighting: the mapper's, per mode (the command line starts from it)
+  {
+    vtkNew<vtkPlumeVolumeMapper> mapper;
+    vtkNew<vtkVolumeProperty> lit;
+    mapper->SetRenderMode(vtkPlumeVolumeMapper::RENDER_SMOKE);
+    mapper->ApplyDefaultLighting(lit);
+    const bool smoke = lit->GetAmbient() == 0.3 && lit->GetDiffuse() == 1.0 && lit->GetSpecular() == 0.3 &&
+      lit->GetSpecularPower() == 20.0;
+    mapper->SetRenderMode(vtkPlumeVolumeMapper::RENDER_ISOSURFACE);
+    mapper->ApplyDefaultLighting(lit);
+    const bool surface = lit->GetAmbient() == 0.15 && lit->GetDiffuse() == 0.75 && lit->GetSpecular() == 0.3 &&
+      lit->GetSpecularPower() == 20.0;
+    std::printf("default lighting: smoke %s, isosurface %s\n", smoke ? "0.3/1/0.3/20" : "WRONG",
+      surface ? "0.15/0.75/0.3/20" : "WRONG");
+    if (!smoke || !surface)
+    {
+      fail("ApplyDefaultLighting does not set the documented lighting");
+    }
   }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
