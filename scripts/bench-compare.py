@@ -18,8 +18,12 @@ run the jobs through this script, not by hand):
   /usr/bin/python3 scripts/bench-compare.py --report results.jsonl
 --new-lib DIR puts DIR first on LD_LIBRARY_PATH for the new binary (for a copy
 of a build's bin/ and lib/ taken before the build dir changes; RUNPATH yields).
+--old and --new are split like a shell command line, so a build from before
+plume-bench existed (the jobs ran inside the plume executable) is given as
+--old "OLD/build/bin/plume bench". --skip BENCH:JOB leaves out a job (repeatable),
+e.g. one the old build does not have; --also BENCH:JOB adds one (repeatable).
 """
-import argparse, glob, json, math, os, resource, statistics, subprocess, time
+import argparse, glob, json, math, os, resource, shlex, statistics, subprocess, time
 
 # (bench, job, --quick): 128^3 volume at 512^2, glyphs 64^3, 10k splats -> 128^3,
 # and the sheet jobs that finish in seconds (the quick 128^2 office sheet, the
@@ -45,7 +49,7 @@ TIMES = {"volume": ["render_s"], "glyphs": ["first_s", "rerender_s"], "splat": [
 
 
 def run(binary, env, bench, job, quick):
-    args = [binary, bench, "--job", job] + (["--quick"] if quick else [])
+    args = shlex.split(binary) + [bench, "--job", job] + (["--quick"] if quick else [])
     t0 = time.time()
     p = subprocess.Popen(args, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     stdout, stderr = p.communicate()
@@ -88,7 +92,9 @@ def measure(a):
             order = [("old", a.old, env_old), ("new", a.new, env_new)]
             if rnd % 2 == 0:
                 order.reverse()
-            for bench, job, quick in JOBS:
+            for bench, job, quick in JOBS + [tuple(j.split(":", 1)) + (False,) for j in a.also]:
+                if "%s:%s" % (bench, job) in a.skip:
+                    continue
                 for who, binary, env in order:
                     record(kind="run", round=rnd, who=who, bench=bench, job=job, **run(binary, env, bench, job, quick))
 
@@ -151,6 +157,10 @@ if __name__ == "__main__":
     p.add_argument("--references-from", type=int, metavar="PID",
                    help="reuse the references an earlier run (process PID, same --out) computed")
     p.add_argument("--stop-at", type=float, help="start no further round after this time (seconds since the epoch)")
+    p.add_argument("--skip", action="append", default=[], metavar="BENCH:JOB",
+                   help="leave out this job (repeatable), e.g. one the old build does not have")
+    p.add_argument("--also", action="append", default=[], metavar="BENCH:JOB",
+                   help="run this job too (repeatable; without --quick), after the list's")
     p.add_argument("--out", default="bench-compare.jsonl")
     p.add_argument("--report", metavar="JSONL")
     a = p.parse_args()
