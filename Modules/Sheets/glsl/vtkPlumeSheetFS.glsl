@@ -107,7 +107,14 @@ float TEnd;
 // Gauss-Legendre nodes across the footprint (PLUME_GRID_B), for triangles whose sigmas vary
 const float GLBX[PLUME_GRID_B] = float[PLUME_GRID_B](PLUME_GLB_NODES);
 const float GLBW[PLUME_GRID_B] = float[PLUME_GRID_B](PLUME_GLB_WEIGHTS);
+//PLUME::IF SIGMA_VARIES
 bool SigmaVaries; // sigma_b or sigma_t differ between the triangle's corners
+//PLUME::ENDIF
+//PLUME::IF SIGMA_CONSTANT
+// every corner has the same sigmas (no blur/thickness array, the pixel floor
+// not reached): the varying-sigma branches compile away
+const bool SigmaVaries = false;
+//PLUME::ENDIF
 
 // The line integral of the Gaussian of a source point at footprint
 // coordinates (a, b) with sigmas sb, st (bounded ray: times the fraction of
@@ -431,7 +438,9 @@ void main()
   CB = cb;
   TStart = tStart;
   TEnd = tEnd;
+//PLUME::IF SIGMA_VARIES
   SigmaVaries = any(notEqual(triSigmaB, triSigmaB.xxx)) || any(notEqual(triSigmaT, triSigmaT.xxx));
+//PLUME::ENDIF
 //PLUME::ENDIF
 //PLUME::IF ADAPTIVE
   {
