@@ -5,7 +5,8 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
-#include "vtkPlumeShaderVariants.h"
+#include "vtkPlumeShaderFeatures.h"
+#include "vtkPlumeShaderProgramCache.h"
 
 #include "vtkCamera.h"
 #include "vtkInformation.h"
@@ -20,7 +21,6 @@
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
-#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
@@ -39,8 +39,6 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <set>
-#include <sstream>
 #include <string>
 
 vtkStandardNewMacro(vtkPlumeAirlightPass);
@@ -299,10 +297,6 @@ vtkPlumeAirlightPass::~vtkPlumeAirlightPass()
 {
   // GL objects are released by the renderer (ReleaseGraphicsResources); the
   // helpers hold no context of their own.
-  for (auto& q : this->Quads)
-  {
-    delete q.second;
-  }
   for (ShadowMap* m : this->ShadowMaps)
   {
     m->Release();
@@ -914,51 +908,30 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   {
     const Group& group = groups[gi];
     // 3. The program for this group's variant (lights count, spot lights, shadows).
-    std::ostringstream defines;
-    defines << "#define NUMBER_OF_LIGHTS " << std::max(group.Count, 1) << "\n";
-    std::set<std::string> features;
-    if (group.AnySpot || group.Shadows > 0) // the shadowed march uses the spot path's running integral
-    {
-      features.insert("SPOT");
-      defines << "#define HAS_SPOT\n";
-    }
+    vtkPlumeShaderFeatures features;
+    features.Define("NUMBER_OF_LIGHTS", std::max(group.Count, 1));
+    // the shadowed march uses the spot path's running integral
+    features.Enable("SPOT", group.AnySpot || group.Shadows > 0);
     if (group.Shadows > 0)
     {
-      features.insert("SHADOW");
-      defines << "#define NUMBER_OF_SHADOWS " << group.Shadows << "\n";
+      features.Enable("SHADOW").Define("NUMBER_OF_SHADOWS", group.Shadows);
     }
-    if (media)
-    {
-      features.insert("MEDIA");
-      defines << "#define HAS_MEDIA\n";
-    }
+    features.Enable("MEDIA", media);
     if (this->MarchSteps > 0)
     {
-      defines << "#define MARCH\n#define MARCH_STEPS " << this->MarchSteps << "\n";
+      features.Enable("MARCH").Define("MARCH_STEPS", this->MarchSteps);
     }
     const double kt0 = this->Scattering[0] + this->Absorption[0];
-    if (kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2])
-    {
-      defines << "#define GREY\n"; // one table look-up for the three channels
-    }
-    const std::string key = defines.str();
-    vtkOpenGLQuadHelper*& quad = this->Quads[key];
+    // one table look-up for the three channels
+    features.Enable("GREY",
+      kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2]);
+    vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, vtkPlumeAirlightFS, features);
     if (!quad)
-    {
-      const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeAirlightFS, features, key);
-      quad = new vtkOpenGLQuadHelper(
-        renWin, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
-    }
-    else
-    {
-      renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
-    }
-    vtkShaderProgram* program = quad->Program;
-    if (!program || !program->GetCompiled())
     {
       vtkErrorMacro("Could not build the airlight shader program.");
       break;
     }
+    vtkShaderProgram* program = quad->Program;
 
     // 4. Uniforms and the full-screen pass.
     program->SetUniformi("SceneColor", this->ColorTexture->GetTextureUnit());
@@ -1151,11 +1124,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
 void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  for (auto& q : this->Quads)
-  {
-    delete q.second;
-  }
-  this->Quads.clear();
+  this->Programs->ReleaseGraphicsResources(w);
   for (vtkTextureObject** t :
     { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->LowTexture, &this->MediaTexture,
       &this->MediaTransmittanceTexture })

@@ -90,13 +90,12 @@
 
 #include "PlumeAirlightModule.h" // For export macro
 #include "vtkImageProcessingPass.h"
+#include "vtkNew.h"                      // For vtkNew
+#include "vtkPlumeShaderProgramCache.h" // For Programs
 
-#include <map>    // For std::map
-#include <string> // For std::string
 #include <vector> // For std::vector
 
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkPlumeParameterTable;
 class vtkRenderState;
@@ -354,9 +353,9 @@ protected:
   vtkTextureObject* MediaTransmittanceTexture = nullptr; // the media over 1: minus the layer, their RGB transmittance
   int UploadedTableResolution = 0;
   double UploadedTableAnisotropy = 0.0;
-  // One full-screen program per variant (lights, spots, shadows of a group),
-  // keyed by its defines: a frame with several light groups switches between them.
-  std::map<std::string, vtkOpenGLQuadHelper*> Quads;
+  // One full-screen program per variant (lights, spots, shadows of a group):
+  // a frame with several light groups switches between them.
+  vtkNew<vtkPlumeShaderProgramCache> Programs;
 
 private:
   vtkPlumeAirlightPass(const vtkPlumeAirlightPass&) = delete;

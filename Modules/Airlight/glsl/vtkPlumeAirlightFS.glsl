@@ -152,7 +152,7 @@ vec3 headPotential(float t, float h)
   float dm = max(d - t, 1e-30); // = d + |t| >= d: no cancellation
   float tau = min(h / dm, 1.0);
   float hh = h * (h / dm);      // = t + d without cancellation
-#ifdef GREY
+#ifdef PLUME_FEATURE_GREY
   // kt is the same in R, G and B: one look-up serves the three channels.
   return vec3(lookupH(KappaT.x * hh, tau) / dm);
 #else
@@ -175,7 +175,7 @@ vec3 tailPotential(float t, float h, float x)
   float d = sqrt(t * t + h * h);
   float dp = max(t + d, 1e-30);
   float eps = min(h / dp, 1.0);
-#ifdef GREY
+#ifdef PLUME_FEATURE_GREY
   return vec3(exp(-KappaT.x * (x + d)) * lookupG(KappaT.x * dp, eps) / dp);
 #else
   vec3 r;
@@ -446,7 +446,7 @@ vec3 shadowedMarch(vec3 o, vec3 r, vec2 span, float tc, float h, int l, float ex
 }
 //PLUME::ENDIF
 
-#ifdef MARCH
+#ifdef PLUME_FEATURE_MARCH
 // The brute-force peer (vtkPlumeAirlightPass::MarchSteps > 0): the same
 // integral by the midpoint rule with MARCH_STEPS samples per ray and light,
 // as a user would write it; rays that hit nothing stop at MarchFar. Returns
@@ -464,7 +464,7 @@ vec3 march(vec3 o, vec3 r, float xs, int l)
     float d2 = max(dot(v, v), 1e-30);
     float d = sqrt(d2);
     float w = 1.0;
-#ifdef HAS_SPOT
+#ifdef PLUME_FEATURE_SPOT
     if (LightCosCone[l] > -1.5)
     {
       float c = dot(v, LightAxis[l]) / d;
@@ -499,7 +499,7 @@ vec3 airlightOf(vec3 o, vec3 r, float xs)
     float h = length(toLight - tc * r);         // distance of the light from the ray's line
     h = max(h, 1e-30);
     vec3 unit = vec3(0.0);
-#ifdef MARCH
+#ifdef PLUME_FEATURE_MARCH
     unit = march(o, r, xs, l);
 #else
     vec2 span = vec2(0.0, xs); // the lit part of the ray: all of it, or a spot's cone interval
