@@ -37,32 +37,25 @@ const char* Template = "a\n"
 const char* VS = "//VTK::System::Dec\n"
                  "in vec4 vertexMC;\n"
                  "void main() { gl_Position = vertexMC; }\n";
+// The variants' bodies, for a plain program and for a full-screen quad.
+#define VARIANTS                                                                                   \
+  "//PLUME::IF RED\n"                                                                              \
+  "  gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0);\n"                                                 \
+  "//PLUME::ENDIF\n"                                                                               \
+  "//PLUME::IF BLUE\n"                                                                             \
+  "  gl_FragData[0] = vec4(0.0, 0.0, float(PLUME_LEVEL) / 4.0, 1.0);\n"                            \
+  "//PLUME::ENDIF\n"
 const char* FS = "//VTK::System::Dec\n"
                  "//VTK::Output::Dec\n"
                  "//PLUME::Defines\n"
-                 "void main() {\n"
-                 "//PLUME::IF RED\n"
-                 "  gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0);\n"
-                 "//PLUME::ENDIF\n"
-                 "//PLUME::IF BLUE\n"
-                 "  gl_FragData[0] = vec4(0.0, 0.0, float(PLUME_LEVEL) / 4.0, 1.0);\n"
-                 "//PLUME::ENDIF\n"
-                 "}\n";
-
-// the same for a full-screen quad (VTK's quad vertex shader passes texCoord, which must be used)
+                 "void main() {\n" VARIANTS "}\n";
+// VTK's quad vertex shader passes texCoord, which must be used (else the quad cannot bind it)
 const char* QuadFS = "//VTK::System::Dec\n"
                      "//VTK::Output::Dec\n"
                      "//PLUME::Defines\n"
                      "in vec2 texCoord;\n"
                      "void main() {\n"
-                     "  if (texCoord.x < -1.0) discard;\n"
-                     "//PLUME::IF RED\n"
-                     "  gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0);\n"
-                     "//PLUME::ENDIF\n"
-                     "//PLUME::IF BLUE\n"
-                     "  gl_FragData[0] = vec4(0.0, 0.0, float(PLUME_LEVEL) / 4.0, 1.0);\n"
-                     "//PLUME::ENDIF\n"
-                     "}\n";
+                     "  if (texCoord.x < -1.0) discard;\n" VARIANTS "}\n";
 
 // The centre pixel of an 8x8 float target after drawing the variant's quad over it.
 void DrawQuad(vtkOpenGLRenderWindow* gl, vtkPlumeShaderProgramCache* cache, const vtkPlumeShaderFeatures& f,
