@@ -24,6 +24,8 @@
 #include "vtkPointData.h"
 #include "vtkPropCollection.h"
 #include "vtkImageData.h"
+#include "vtkImageReader2.h"
+#include "vtkImageReader2Factory.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkOutputWindow.h"
@@ -32,6 +34,9 @@
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
 #include "vtksys/SystemTools.hxx"
+
+#include <ImfArray.h>
+#include <ImfRgbaFile.h>
 
 #include <algorithm>
 #include <array>
@@ -707,7 +712,67 @@ void BuildCamera(
   renderer->ResetCameraClippingRange();
 }
 
-void BuildLights(const nlohmann::json* spec, vtkRenderer* renderer)
+// A light's image: OpenEXR (linear float RGB, through OpenEXR: VTK 9.1 has no
+// EXR reader) or any format VTK's image readers know (PNG, JPEG, TIFF, ...),
+// row 0 at the bottom as VTK's readers give it.
+vtkSmartPointer<vtkImageData> ReadLightImage(const std::string& path, const std::string& where)
+{
+  if (!vtksys::SystemTools::FileExists(path, true))
+  {
+    throw SceneError(where + ": texture '" + path + "' not found");
+  }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  if (vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path)) == ".exr")
+  {
+    try
+    {
+      Imf::RgbaInputFile file(path.c_str());
+      const Imath::Box2i dw = file.dataWindow();
+      const int w = dw.max.x - dw.min.x + 1;
+      const int h = dw.max.y - dw.min.y + 1;
+      Imf::Array2D<Imf::Rgba> pixels(h, w);
+      file.setFrameBuffer(&pixels[0][0] - dw.min.x - dw.min.y * w, 1, w);
+      file.readPixels(dw.min.y, dw.max.y);
+      image->SetDimensions(w, h, 1);
+      image->AllocateScalars(VTK_FLOAT, 3);
+      auto* out = static_cast<float*>(image->GetScalarPointer());
+      for (int j = 0; j < h; ++j)
+      {
+        const Imf::Rgba* row = pixels[h - 1 - j]; // EXR rows run top to bottom
+        for (int i = 0; i < w; ++i)
+        {
+          out[3 * (size_t(j) * w + i) + 0] = row[i].r;
+          out[3 * (size_t(j) * w + i) + 1] = row[i].g;
+          out[3 * (size_t(j) * w + i) + 2] = row[i].b;
+        }
+      }
+    }
+    catch (const std::exception& e)
+    {
+      throw SceneError(where + ": cannot read texture '" + path + "': " + e.what());
+    }
+    return image;
+  }
+  vtkNew<vtkImageReader2Factory> factory;
+  vtkSmartPointer<vtkImageReader2> reader;
+  reader.TakeReference(factory->CreateImageReader2(path.c_str()));
+  if (!reader)
+  {
+    throw SceneError(where + ": texture '" + path + "' is not an image VTK can read (PNG, JPEG, TIFF, ...) nor EXR");
+  }
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  if (dims[0] < 1 || dims[1] < 1 || dims[2] != 1 || !reader->GetOutput()->GetPointData()->GetScalars())
+  {
+    throw SceneError(where + ": texture '" + path + "' is not a 2D image");
+  }
+  image->ShallowCopy(reader->GetOutput());
+  return image;
+}
+
+void BuildLights(const nlohmann::json* spec, vtkRenderer* renderer, const SceneDatasets& datasets)
 {
   if (!spec)
   {
@@ -722,7 +787,8 @@ void BuildLights(const nlohmann::json* spec, vtkRenderer* renderer)
   int index = 0;
   for (const auto& item : *spec)
   {
-    Parameters p(item, "lights[" + std::to_string(index++) + "]");
+    const std::string where = "lights[" + std::to_string(index++) + "]";
+    Parameters p(item, where);
     vtkNew<vtkLight> light;
     const std::string type = p.Choice("type", "scene", { "headlight", "camera", "scene" });
     if (type == "headlight")
@@ -749,6 +815,17 @@ void BuildLights(const nlohmann::json* spec, vtkRenderer* renderer)
     light->SetConeAngle(p.Number("cone_angle", 30.0, 0.0, 180.0));
     light->SetExponent(p.Number("exponent", 1.0, 0.0, 128.0));
     light->SetAttenuationValues(p.Vector<3>("attenuation", { 1, 0, 0 }).data());
+    // a spot light's projected image (the airlight's textured spot lights)
+    const std::string texture = p.String("texture", "");
+    if (!texture.empty())
+    {
+      vtkPlumeAirlightPass::SetLightTexture(light, ReadLightImage(datasets.Resolve(texture), where));
+    }
+    if (p.Has("texture_up"))
+    {
+      const auto up = p.Vector<3>("texture_up", { 0, 1, 0 });
+      vtkPlumeAirlightPass::SetLightTextureUp(light, up[0], up[1], up[2]);
+    }
     p.RejectUnknown();
     renderer->AddLight(light);
   }
@@ -899,7 +976,7 @@ void Scene::Build(
     renderer->AddActor2D(text);
   }
   BuildCamera(camera, renderer, options.Width, options.Height, datasets);
-  BuildLights(lights, renderer);
+  BuildLights(lights, renderer, datasets);
   BuildMedium(medium, renderer);
 }
 

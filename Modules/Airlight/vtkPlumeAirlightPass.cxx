@@ -5,10 +5,16 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
-#include "vtkPlumeShaderVariants.h"
+#include "vtkPlumeShaderFeatures.h"
+#include "vtkPlumeShaderProgramCache.h"
 
 #include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
+#include "vtkInformationObjectBaseKey.h"
+#include "vtkPointData.h"
 #include "vtkOpaquePass.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
@@ -20,7 +26,6 @@
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
-#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
@@ -39,11 +44,121 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <set>
-#include <sstream>
 #include <string>
 
 vtkStandardNewMacro(vtkPlumeAirlightPass);
+vtkInformationKeyMacro(vtkPlumeAirlightPass, LIGHT_TEXTURE, ObjectBase);
+vtkInformationKeyMacro(vtkPlumeAirlightPass, LIGHT_TEXTURE_UP, DoubleVector);
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightPass::SetLightTexture(vtkLight* light, vtkImageData* image)
+{
+  if (!light)
+  {
+    return;
+  }
+  if (!light->GetInformation())
+  {
+    vtkNew<vtkInformation> info;
+    light->SetInformation(info);
+  }
+  if (image)
+  {
+    light->GetInformation()->Set(LIGHT_TEXTURE(), image);
+  }
+  else
+  {
+    light->GetInformation()->Remove(LIGHT_TEXTURE());
+  }
+  light->Modified();
+}
+
+vtkImageData* vtkPlumeAirlightPass::GetLightTexture(vtkLight* light)
+{
+  vtkInformation* info = light ? light->GetInformation() : nullptr;
+  return info ? vtkImageData::SafeDownCast(info->Get(LIGHT_TEXTURE())) : nullptr;
+}
+
+void vtkPlumeAirlightPass::SetLightTextureUp(vtkLight* light, double x, double y, double z)
+{
+  if (!light)
+  {
+    return;
+  }
+  if (!light->GetInformation())
+  {
+    vtkNew<vtkInformation> info;
+    light->SetInformation(info);
+  }
+  const double up[3] = { x, y, z };
+  light->GetInformation()->Set(LIGHT_TEXTURE_UP(), up, 3);
+  light->Modified();
+}
+
+namespace
+{
+// The light's image if it projects one this frame: a spot light with a 2D
+// image (x-y plane) that has point values.
+vtkImageData* ProjectedTexture(vtkLight* light)
+{
+  vtkImageData* image = vtkPlumeAirlightPass::GetLightTexture(light);
+  if (!image || !(light->GetConeAngle() < 90.0))
+  {
+    return nullptr;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  if (!values && image->GetPointData()->GetNumberOfArrays() > 0)
+  {
+    values = image->GetPointData()->GetArray(0);
+  }
+  if (dims[0] < 1 || dims[1] < 1 || dims[2] != 1 || !values ||
+    values->GetNumberOfTuples() != static_cast<vtkIdType>(dims[0]) * dims[1])
+  {
+    return nullptr;
+  }
+  return image;
+}
+
+// The image's RGB (see SetLightTexture's rules) appended as RGBA floats, row by row.
+void AppendTexels(vtkImageData* image, std::vector<float>& atlas, int atlasWidth)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  if (!values)
+  {
+    values = image->GetPointData()->GetArray(0);
+  }
+  const int nc = values->GetNumberOfComponents();
+  double scale = 1.0;
+  if (values->GetDataType() == VTK_UNSIGNED_CHAR)
+  {
+    scale = 1.0 / 255.0;
+  }
+  else if (values->GetDataType() == VTK_UNSIGNED_SHORT)
+  {
+    scale = 1.0 / 65535.0;
+  }
+  const size_t row0 = atlas.size();
+  atlas.resize(row0 + 4 * size_t(atlasWidth) * dims[1], 0.0f);
+  for (int j = 0; j < dims[1]; ++j)
+  {
+    for (int i = 0; i < dims[0]; ++i)
+    {
+      const vtkIdType id = i + static_cast<vtkIdType>(j) * dims[0];
+      float* out = &atlas[row0 + 4 * (size_t(j) * atlasWidth + i)];
+      for (int c = 0; c < 3; ++c)
+      {
+        const double v = values->GetComponent(id, nc >= 3 ? c : 0) * scale;
+        out[c] = (v > 0.0 && v < 1e30) ? static_cast<float>(v) : 0.0f;
+      }
+      out[3] = 1.0f;
+    }
+  }
+}
+}
 
 // One spot light's shadow map: the light's camera, a depth (+ unused colour)
 // target and the key it was baked for.
@@ -299,10 +414,6 @@ vtkPlumeAirlightPass::~vtkPlumeAirlightPass()
 {
   // GL objects are released by the renderer (ReleaseGraphicsResources); the
   // helpers hold no context of their own.
-  for (auto& q : this->Quads)
-  {
-    delete q.second;
-  }
   for (ShadowMap* m : this->ShadowMaps)
   {
     m->Release();
@@ -730,6 +841,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   {
     int First = 0, Count = 0, FirstShadow = 0, Shadows = 0;
     bool AnySpot = false;
+    bool AnyTexture = false;
   };
   std::vector<Group> groups(1);
   // The opaque props that can cast shadows: their bounds and their latest change.
@@ -771,9 +883,30 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   // (colour, depth, table, low-resolution airlight).
   GLint textureUnits = 16;
   glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &textureUnits);
-  const int shadowLimit = std::max(0, std::min<int>(MaximumShadowedLights, textureUnits - (media ? 7 : 4)));
   vtkLightCollection* lights = r->GetLights();
   vtkCollectionSimpleIterator it;
+  // Textured spot lights: their images go into one atlas (one more sampler).
+  std::vector<std::pair<vtkImageData*, vtkMTimeType>> atlasKey;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    vtkImageData* image = light->GetSwitch() && light->GetPositional() ? ProjectedTexture(light) : nullptr;
+    if (image)
+    {
+      atlasKey.emplace_back(image, image->GetMTime());
+    }
+  }
+  const bool anyTexture = !atlasKey.empty();
+  const int shadowLimit = std::max(
+    0, std::min<int>(MaximumShadowedLights, textureUnits - (media ? 7 : 4) - (anyTexture ? 1 : 0)));
+  std::vector<float> textureRects, textureRights, textureUps; // per light (rect width 0: untextured)
+  int atlasWidth = 1, atlasHeight = 0;
+  for (const auto& k : atlasKey)
+  {
+    int dims[3];
+    k.first->GetDimensions(dims);
+    atlasWidth = std::max(atlasWidth, dims[0]);
+  }
   lights->InitTraversal(it);
   while (vtkLight* light = lights->GetNextLight(it))
   {
@@ -812,6 +945,50 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     }
     cosCones.push_back(
       spot ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()))) : -2.0f);
+    vtkImageData* image = ProjectedTexture(light);
+    {
+      float rect[4] = { 0, 0, 0, 0 };
+      glm::dvec3 right(0.0), up(0.0);
+      if (image)
+      {
+        int dims[3];
+        image->GetDimensions(dims);
+        rect[1] = static_cast<float>(atlasHeight);
+        rect[2] = static_cast<float>(dims[0]);
+        rect[3] = static_cast<float>(dims[1]);
+        atlasHeight += dims[1];
+        // The image's axes in world coordinates (see SetLightTexture), scaled
+        // by 1/tan(cone) so that the shader divides by v.a only.
+        const glm::dvec3 wp(position[0], position[1], position[2]);
+        glm::dvec3 wa = glm::dvec3(focal[0], focal[1], focal[2]) - wp;
+        wa = glm::length(wa) > 0 ? glm::normalize(wa) : glm::dvec3(0, 0, -1);
+        glm::dvec3 hint(0.0, 1.0, 0.0);
+        vtkInformation* li = light->GetInformation();
+        if (li && li->Has(LIGHT_TEXTURE_UP()) && li->Length(LIGHT_TEXTURE_UP()) == 3)
+        {
+          const double* u = li->Get(LIGHT_TEXTURE_UP());
+          hint = glm::dvec3(u[0], u[1], u[2]);
+        }
+        if (!(glm::length(glm::cross(wa, hint)) > 1e-9 * glm::length(hint)))
+        {
+          hint = glm::dvec3(0.0, 0.0, 1.0);
+        }
+        const glm::dvec3 wr = glm::normalize(glm::cross(wa, hint));
+        const glm::dvec3 wu = glm::cross(wr, wa);
+        const double scaleTan =
+          1.0 / std::max(std::tan(vtkMath::RadiansFromDegrees(light->GetConeAngle())), 1e-9);
+        const double wrs[3] = { wr.x * scaleTan, wr.y * scaleTan, wr.z * scaleTan };
+        const double wus[3] = { wu.x * scaleTan, wu.y * scaleTan, wu.z * scaleTan };
+        right = toEye(wrs, 0.0); // directions: the view's rotation only
+        up = toEye(wus, 0.0);
+      }
+      textureRects.insert(textureRects.end(), rect, rect + 4);
+      for (int c = 0; c < 3; ++c)
+      {
+        textureRights.push_back(static_cast<float>(right[c]));
+        textureUps.push_back(static_cast<float>(up[c]));
+      }
+    }
     // A shadow map for a spot light whose cone holds some opaque prop's
     // bounding sphere, or for a point light with any opaque prop (a cube map).
     int shadow = -1;
@@ -876,10 +1053,30 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     Group& group = groups.back();
     ++group.Count;
     group.AnySpot = group.AnySpot || spot;
+    group.AnyTexture = group.AnyTexture || image != nullptr;
     shadowIndex.push_back(shadow);
     exponents.push_back(static_cast<float>(light->GetExponent()));
   }
   this->NumberOfShadowedLights = shadowCount;
+  this->NumberOfTexturedLights = static_cast<int>(atlasKey.size());
+  if (anyTexture && (!this->TextureAtlas || atlasKey != this->TextureAtlasKey))
+  {
+    std::vector<float> texels;
+    for (const auto& k : atlasKey)
+    {
+      AppendTexels(k.first, texels, atlasWidth);
+    }
+    if (!this->TextureAtlas)
+    {
+      this->TextureAtlas = vtkTextureObject::New();
+      this->TextureAtlas->SetContext(renWin);
+    }
+    // read with texelFetch (bilinear in the shader, within each image)
+    this->TextureAtlas->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->TextureAtlas->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->TextureAtlas->Create2DFromRaw(atlasWidth, atlasHeight, 4, VTK_FLOAT, texels.data());
+    this->TextureAtlasKey = atlasKey;
+  }
   this->NumberOfUnshadowedLights = unshadowed;
   this->NumberOfLightGroups = static_cast<int>(groups.size());
   if (unshadowed > 0 && unshadowed != this->ReportedUnshadowed)
@@ -898,6 +1095,10 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   this->ColorTexture->Activate();
   this->DepthTexture->Activate();
   this->TableTexture->Activate();
+  if (anyTexture)
+  {
+    this->TextureAtlas->Activate();
+  }
   if (media)
   {
     this->MediaTexture->Activate();
@@ -914,51 +1115,31 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   {
     const Group& group = groups[gi];
     // 3. The program for this group's variant (lights count, spot lights, shadows).
-    std::ostringstream defines;
-    defines << "#define NUMBER_OF_LIGHTS " << std::max(group.Count, 1) << "\n";
-    std::set<std::string> features;
-    if (group.AnySpot || group.Shadows > 0) // the shadowed march uses the spot path's running integral
-    {
-      features.insert("SPOT");
-      defines << "#define HAS_SPOT\n";
-    }
+    vtkPlumeShaderFeatures features;
+    features.Define("NUMBER_OF_LIGHTS", std::max(group.Count, 1));
+    // the shadowed march uses the spot path's running integral
+    features.Enable("SPOT", group.AnySpot || group.Shadows > 0);
+    features.Enable("TEXTURE", group.AnyTexture); // only spot lights project one
     if (group.Shadows > 0)
     {
-      features.insert("SHADOW");
-      defines << "#define NUMBER_OF_SHADOWS " << group.Shadows << "\n";
+      features.Enable("SHADOW").Define("NUMBER_OF_SHADOWS", group.Shadows);
     }
-    if (media)
-    {
-      features.insert("MEDIA");
-      defines << "#define HAS_MEDIA\n";
-    }
+    features.Enable("MEDIA", media);
     if (this->MarchSteps > 0)
     {
-      defines << "#define MARCH\n#define MARCH_STEPS " << this->MarchSteps << "\n";
+      features.Enable("MARCH").Define("MARCH_STEPS", this->MarchSteps);
     }
     const double kt0 = this->Scattering[0] + this->Absorption[0];
-    if (kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2])
-    {
-      defines << "#define GREY\n"; // one table look-up for the three channels
-    }
-    const std::string key = defines.str();
-    vtkOpenGLQuadHelper*& quad = this->Quads[key];
+    // one table look-up for the three channels
+    features.Enable("GREY",
+      kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2]);
+    vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, vtkPlumeAirlightFS, features);
     if (!quad)
-    {
-      const std::string fs = vtkPlumeShaderVariants::Select(vtkPlumeAirlightFS, features, key);
-      quad = new vtkOpenGLQuadHelper(
-        renWin, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
-    }
-    else
-    {
-      renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
-    }
-    vtkShaderProgram* program = quad->Program;
-    if (!program || !program->GetCompiled())
     {
       vtkErrorMacro("Could not build the airlight shader program.");
       break;
     }
+    vtkShaderProgram* program = quad->Program;
 
     // 4. Uniforms and the full-screen pass.
     program->SetUniformi("SceneColor", this->ColorTexture->GetTextureUnit());
@@ -1044,6 +1225,14 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
         program->SetUniform1fv("LightCosCone", n, &cosCones[l0]);
         program->SetUniform1fv("LightExponent", n, &exponents[l0]);
         program->SetUniformi("SpotSteps", this->SpotSteps);
+      }
+      if (group.AnyTexture)
+      {
+        program->SetUniformi("LightTextures", this->TextureAtlas->GetTextureUnit());
+        program->SetUniform4fv("LightTextureRect", n, reinterpret_cast<const float(*)[4]>(&textureRects[4 * l0]));
+        program->SetUniform3fv(
+          "LightTextureRight", n, reinterpret_cast<const float(*)[3]>(&textureRights[3 * l0]));
+        program->SetUniform3fv("LightTextureUp", n, reinterpret_cast<const float(*)[3]>(&textureUps[3 * l0]));
       }
       if (group.Shadows > 0)
       {
@@ -1132,6 +1321,10 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   this->ColorTexture->Deactivate();
   this->DepthTexture->Deactivate();
   this->TableTexture->Deactivate();
+  if (anyTexture)
+  {
+    this->TextureAtlas->Deactivate();
+  }
   if (media)
   {
     this->MediaTexture->Deactivate();
@@ -1151,14 +1344,10 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
 void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  for (auto& q : this->Quads)
-  {
-    delete q.second;
-  }
-  this->Quads.clear();
+  this->Programs->ReleaseGraphicsResources(w);
   for (vtkTextureObject** t :
     { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->LowTexture, &this->MediaTexture,
-      &this->MediaTransmittanceTexture })
+      &this->MediaTransmittanceTexture, &this->TextureAtlas })
   {
     if (*t)
     {
@@ -1167,6 +1356,7 @@ void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
     }
   }
   this->UploadedTableResolution = 0;
+  this->TextureAtlasKey.clear();
   for (ShadowMap* m : this->ShadowMaps)
   {
     m->Release();

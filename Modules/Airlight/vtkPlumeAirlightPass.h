@@ -70,6 +70,15 @@
  * unshadowed result; no arctan in the loop). Every light can be shadowed
  * (MaximumShadowedLights = 8 per light group, one sampler each).
  *
+ * Textured spot lights (a gobo, a slide projector): a vtkImageData set on
+ * a spot light (SetLightTexture, the LIGHT_TEXTURE() key of the light's
+ * information) is projected by it and multiplies I0 per RGB channel by
+ * direction; see SetLightTexture for the projection. The closed form treats
+ * the image like the exponent weight, per sub-interval at its middle
+ * direction (two sub-intervals per texel the ray's image crosses); the
+ * shader variant with this code is compiled only for a light group that has
+ * a textured light.
+ *
  * Translucent media (Plume's volumes and smoke sheets, VTK's volumes): when
  * the delegate is a vtkPlumeCompositingPass, its media step draws into a
  * layer of this pass (vtkPlumeCompositingPass::MEDIA_LAYER) instead of the
@@ -90,13 +99,17 @@
 
 #include "PlumeAirlightModule.h" // For export macro
 #include "vtkImageProcessingPass.h"
+#include "vtkNew.h"                      // For vtkNew
+#include "vtkPlumeShaderProgramCache.h" // For Programs
 
-#include <map>    // For std::map
-#include <string> // For std::string
-#include <vector> // For std::vector
+#include <utility> // For std::pair
+#include <vector>  // For std::vector
 
+class vtkImageData;
+class vtkInformationDoubleVectorKey;
+class vtkInformationObjectBaseKey;
+class vtkLight;
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkPlumeParameterTable;
 class vtkRenderState;
@@ -291,6 +304,43 @@ public:
   /** At most this many media bounding boxes go to the shader; further media share the last (their union). */
   static constexpr int MaximumMediaBoxes = 8;
 
+  ///@{
+  /**
+   * Textured spot lights. LIGHT_TEXTURE() on a vtkLight's information holds
+   * the vtkImageData it projects (none by default: an untextured light);
+   * SetLightTexture(light, image) sets it (nullptr removes it). The image
+   * is 2D in x and y (dimensions W x H x 1, W, H >= 1), its point scalars
+   * (else its first point array) give the colour: 1 or 2 components grey
+   * (the first), 3 or 4 RGB (alpha ignored); unsigned char and unsigned
+   * short are divided by 255 and 65535, other types (float EXR images) are
+   * taken as they are (HDR allowed); negative, NaN and infinite values count
+   * as 0. Only spot lights (cone angle < 90) project a texture; on a point
+   * light it is ignored. Changing the image (its MTime) re-uploads it.
+   *
+   * The projection, a slide projector at the light: a direction v from the
+   * light, with the light's unit axis a (to its focal point), the image's
+   * right axis x = normalize(a x U) and up axis y = x x a (U the up hint,
+   * LIGHT_TEXTURE_UP(), default (0, 1, 0); if a is parallel to U, (0, 0, 1)
+   * instead), meets the image at
+   *   u = 1/2 + (v.x) / (2 (v.a) tan(cone)),  v' = 1/2 + (v.y) / (2 (v.a) tan(cone)),
+   * so the image's square fills the cone's square and the cone's circle is
+   * inscribed in it (the corners are outside the cone and never seen); a
+   * light looking along -z with up (0, 1, 0) shows the image as a camera at
+   * the light would (row 0 at the bottom, VTK's image order). Texel (i, j)
+   * sits at ((i + 1/2)/W, (j + 1/2)/H), read bilinearly, clamped at the
+   * borders.
+   */
+  static vtkInformationObjectBaseKey* LIGHT_TEXTURE();
+  static vtkInformationDoubleVectorKey* LIGHT_TEXTURE_UP();
+  static void SetLightTexture(vtkLight* light, vtkImageData* image);
+  static vtkImageData* GetLightTexture(vtkLight* light);
+  /** The up hint U of the light's image (world coordinates). Default (0, 1, 0). */
+  static void SetLightTextureUp(vtkLight* light, double x, double y, double z);
+  ///@}
+
+  /** How many lights projected a texture in the last frame. */
+  vtkGetMacro(NumberOfTexturedLights, int);
+
   /** True if the medium scatters or absorbs in some channel (else the pass only runs its delegate). */
   bool HasMedium() const;
 
@@ -337,6 +387,11 @@ protected:
   int NumberOfIgnoredLights = 0; // always 0 (kept for compatibility)
   int NumberOfLightGroups = 0;
   int NumberOfMediaInLayer = 0;
+  int NumberOfTexturedLights = 0;
+  // The textured lights' images stacked in one RGBA32F atlas, rebuilt when an
+  // image or the set of textured lights changes (key: image pointers and MTimes).
+  vtkTextureObject* TextureAtlas = nullptr;
+  std::vector<std::pair<vtkImageData*, vtkMTimeType>> TextureAtlasKey;
 
   struct ShadowMap;
   std::vector<ShadowMap*> ShadowMaps;
@@ -354,9 +409,9 @@ protected:
   vtkTextureObject* MediaTransmittanceTexture = nullptr; // the media over 1: minus the layer, their RGB transmittance
   int UploadedTableResolution = 0;
   double UploadedTableAnisotropy = 0.0;
-  // One full-screen program per variant (lights, spots, shadows of a group),
-  // keyed by its defines: a frame with several light groups switches between them.
-  std::map<std::string, vtkOpenGLQuadHelper*> Quads;
+  // One full-screen program per variant (lights, spots, shadows of a group):
+  // a frame with several light groups switches between them.
+  vtkNew<vtkPlumeShaderProgramCache> Programs;
 
 private:
   vtkPlumeAirlightPass(const vtkPlumeAirlightPass&) = delete;

@@ -4,6 +4,12 @@
 #include "vtkActorCollection.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
+#include "vtkPlumeAirlightPass.h"
+#include "vtkPointData.h"
 #include "vtkMapper.h"
 #include "vtkOBBTree.h"
 #include "vtkPoints.h"
@@ -190,7 +196,88 @@ void vtkPlumeAirlightReference::SetLights(vtkRenderer* renderer)
     l.CosCone = std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()));
     l.Exponent = light->GetExponent();
     l.Shadowed = this->Tree != nullptr; // spot and point lights alike
+    // A spot light's projected image (the pass's documented rules).
+    vtkImageData* image = l.Spot ? vtkPlumeAirlightPass::GetLightTexture(light) : nullptr;
+    vtkDataArray* values = nullptr;
+    int dims[3] = { 0, 0, 0 };
+    if (image)
+    {
+      image->GetDimensions(dims);
+      values = image->GetPointData()->GetScalars();
+      if (!values && image->GetPointData()->GetNumberOfArrays() > 0)
+      {
+        values = image->GetPointData()->GetArray(0);
+      }
+    }
+    if (values && dims[0] >= 1 && dims[1] >= 1 && dims[2] == 1 &&
+      values->GetNumberOfTuples() == static_cast<vtkIdType>(dims[0]) * dims[1])
+    {
+      const int type = values->GetDataType();
+      const double norm = type == VTK_UNSIGNED_CHAR ? 255.0 : (type == VTK_UNSIGNED_SHORT ? 65535.0 : 1.0);
+      const int nc = values->GetNumberOfComponents();
+      l.TextureWidth = dims[0];
+      l.TextureHeight = dims[1];
+      l.Texels.resize(3 * static_cast<size_t>(dims[0]) * dims[1]);
+      for (vtkIdType id = 0; id < values->GetNumberOfTuples(); ++id)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          const double x = values->GetComponent(id, nc < 3 ? 0 : c) / norm;
+          l.Texels[3 * id + c] = (x > 0.0 && x < 1e30) ? x : 0.0; // NaN, negative, huge: 0
+        }
+      }
+      glm::dvec3 hint(0.0, 1.0, 0.0);
+      vtkInformation* info = light->GetInformation();
+      if (info && info->Has(vtkPlumeAirlightPass::LIGHT_TEXTURE_UP()) &&
+        info->Length(vtkPlumeAirlightPass::LIGHT_TEXTURE_UP()) == 3)
+      {
+        const double* u = info->Get(vtkPlumeAirlightPass::LIGHT_TEXTURE_UP());
+        hint = glm::dvec3(u[0], u[1], u[2]);
+      }
+      glm::dvec3 right = glm::cross(axis, hint);
+      if (!(glm::length(right) > 1e-9 * glm::length(hint)))
+      {
+        right = glm::cross(axis, glm::dvec3(0.0, 0.0, 1.0));
+      }
+      right = glm::normalize(right);
+      const glm::dvec3 up = glm::cross(right, axis);
+      const double tanCone = std::tan(vtkMath::RadiansFromDegrees(light->GetConeAngle()));
+      for (int c = 0; c < 3; ++c)
+      {
+        l.TextureRight[c] = right[c] / tanCone;
+        l.TextureUp[c] = up[c] / tanCone;
+      }
+    }
     this->Lights.push_back(l);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightReference::TextureAt(const Light& light, const double v[3], double rgb[3])
+{
+  const double z = v[0] * light.Axis[0] + v[1] * light.Axis[1] + v[2] * light.Axis[2];
+  double st[2];
+  const double* axes[2] = { light.TextureRight, light.TextureUp };
+  const int size[2] = { light.TextureWidth, light.TextureHeight };
+  int lo[2], hi[2];
+  double frac[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    const double q = v[0] * axes[k][0] + v[1] * axes[k][1] + v[2] * axes[k][2];
+    // image coordinate in [0, 1] (z > 0 inside the cone), then texel units from the first centre
+    const double u = z > 0.0 ? std::min(1.0, std::max(0.0, 0.5 + 0.5 * q / z)) : 0.5;
+    st[k] = u * size[k] - 0.5;
+    const double f = std::floor(st[k]);
+    frac[k] = st[k] - f;
+    lo[k] = std::min(std::max(static_cast<int>(f), 0), size[k] - 1);
+    hi[k] = std::min(std::max(static_cast<int>(f) + 1, 0), size[k] - 1);
+  }
+  auto texel = [&](int i, int j, int c) { return light.Texels[3 * (static_cast<size_t>(j) * size[0] + i) + c]; };
+  for (int c = 0; c < 3; ++c)
+  {
+    const double bottom = (1.0 - frac[0]) * texel(lo[0], lo[1], c) + frac[0] * texel(hi[0], lo[1], c);
+    const double top = (1.0 - frac[0]) * texel(lo[0], hi[1], c) + frac[0] * texel(hi[0], hi[1], c);
+    rgb[c] = (1.0 - frac[1]) * bottom + frac[1] * top;
   }
 }
 
@@ -371,12 +458,18 @@ void vtkPlumeAirlightReference::ComputeRay(
       }
       // the smoke's optical depth between the eye and the scattering point
       const double smoke = chords.empty() ? 0.0 : this->SmokeDepth(chords, x);
+      double tint[3] = { 1.0, 1.0, 1.0 };
+      if (light.TextureWidth > 0 && w > 0.0)
+      {
+        const double vv[3] = { v.x, v.y, v.z };
+        TextureAt(light, vv, tint);
+      }
       RGB value;
       for (int c = 0; c < 3; ++c)
       {
         // exp of the sum: 1/d^2 and the extinction never meet as inf * 0.
-        value[c] = (d2 > 0.0 && w > 0.0)
-          ? coef[c] * w * std::exp(-kt[c] * (x + d) - std::log(d2) - smoke)
+        value[c] = (d2 > 0.0 && w * tint[c] > 0.0)
+          ? coef[c] * w * tint[c] * std::exp(-kt[c] * (x + d) - std::log(d2) - smoke)
           : 0.0;
       }
       return value;

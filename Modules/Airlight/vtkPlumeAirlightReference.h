@@ -12,8 +12,11 @@
  * the map x = X + s/(1-s) when the ray hits nothing. The lights follow the
  * pass's documented rules (positional, switched on, I0 = Intensity *
  * DiffuseColor * IntensityScale, divided by c2 for purely quadratic
- * attenuation, VTK's spot cone and exponent), but are read in world
- * coordinates.
+ * attenuation, VTK's spot cone and exponent, a spot light's projected
+ * image: vtkPlumeAirlightPass::LIGHT_TEXTURE), but are read in world
+ * coordinates. A textured light's image is evaluated at every point of the
+ * integral (the documented projection and bilinear rule, in double, written
+ * here anew), so the reference has no sub-intervals.
  *
  * ComputeImage composes a whole frame the way the pass does:
  * C_surface * exp(-kt ds) + airlight, from a read-back of the scene rendered
@@ -138,7 +141,16 @@ protected:
     double CosCone;
     double Exponent;
     bool Shadowed;
+    // A projected image (TextureWidth 0: none): RGB per texel, row 0 at the
+    // bottom; the image's axes in world coordinates divided by tan(cone).
+    int TextureWidth = 0;
+    int TextureHeight = 0;
+    std::vector<double> Texels;
+    double TextureRight[3];
+    double TextureUp[3];
   };
+  // The light's image (RGB) in the world direction v from the light.
+  static void TextureAt(const Light& light, const double v[3], double rgb[3]);
 
   struct SmokeBox
   {

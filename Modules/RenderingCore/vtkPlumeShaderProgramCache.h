@@ -8,6 +8,12 @@
  * (its programs belong to the old window's shader cache). Programs are owned
  * by the window's vtkOpenGLShaderCache, as VTK's mappers' are: call
  * ReleaseGraphicsResources with the mapper's.
+ *
+ * Full-screen passes (a vtkRenderPass that runs one fragment shader over the
+ * viewport) take ReadyQuad(): the same variant selection and key, with VTK's
+ * full-screen-quad vertex shader and a quad whose vertex array is bound to
+ * that program (a vtkOpenGLQuadHelper per variant, owned by the cache and
+ * deleted with its window).
  */
 #ifndef vtkPlumeShaderProgramCache_h
 #define vtkPlumeShaderProgramCache_h
@@ -19,6 +25,7 @@
 #include <map>    // For std::map
 #include <string> // For std::string
 
+class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkPlumeShaderFeatures;
 class vtkShaderProgram;
@@ -40,9 +47,20 @@ public:
    */
   vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const char* vs, const char* gs, const char* fs,
     const vtkPlumeShaderFeatures& features);
+
+  /**
+   * The full-screen quad of fragment template `fs` selected by `features`
+   * (vertex shader: VTK's full-screen quad, which passes `texCoord`), its
+   * program bound; draw with its Render(). nullptr if the program does not
+   * compile or link. The quad stays owned by the cache. As for Ready(),
+   * `window`'s context must be current (the quad's vertex array is made in
+   * the current context).
+   */
+  vtkOpenGLQuadHelper* ReadyQuad(
+    vtkOpenGLRenderWindow* window, const char* fs, const vtkPlumeShaderFeatures& features);
 #endif
 
-  /** Programs built so far (tests: switching back to a variant builds nothing). */
+  /** Programs built so far, quads included (tests: switching back to a variant builds nothing). */
   vtkGetMacro(BuildCount, int);
 
   void ReleaseGraphicsResources(vtkWindow* window);
@@ -53,9 +71,13 @@ protected:
 
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   std::map<std::string, vtkShaderProgram*> Programs; // owned by the window's shader cache
+  std::map<std::string, vtkOpenGLQuadHelper*> Quads;  // owned here (their vertex arrays)
   int BuildCount = 0;
 
 private:
+  void SetWindow(vtkOpenGLRenderWindow* window);
+  void DeleteQuads();
+
   vtkPlumeShaderProgramCache(const vtkPlumeShaderProgramCache&) = delete;
   void operator=(const vtkPlumeShaderProgramCache&) = delete;
 };

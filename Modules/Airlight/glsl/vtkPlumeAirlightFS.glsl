@@ -48,6 +48,15 @@ uniform float LightCosCone[NUMBER_OF_LIGHTS]; // cos(cone angle); -2 for point l
 uniform float LightExponent[NUMBER_OF_LIGHTS];
 uniform int SpotSteps;
 //PLUME::ENDIF
+//PLUME::IF TEXTURE
+// Textured spot lights: the images of a frame's textured lights stacked in one
+// RGBA32F atlas, read texel by texel (bilinear by hand, clamped to the
+// light's own rectangle: no bleeding from a neighbour, exact in float).
+uniform sampler2D LightTextures;
+uniform vec4 LightTextureRect[NUMBER_OF_LIGHTS];  // atlas texels x0, y0, width, height; width 0: untextured
+uniform vec3 LightTextureRight[NUMBER_OF_LIGHTS]; // the image's u axis / tan(cone), eye coordinates
+uniform vec3 LightTextureUp[NUMBER_OF_LIGHTS];    // the image's v axis / tan(cone)
+//PLUME::ENDIF
 //PLUME::IF SHADOW
 // Shadowed lights: LightShadow[l] is the light's shadow map (-1: none).
 // ShadowMatrixK[f]: eye coordinates -> the light camera's clip coordinates of
@@ -152,7 +161,7 @@ vec3 headPotential(float t, float h)
   float dm = max(d - t, 1e-30); // = d + |t| >= d: no cancellation
   float tau = min(h / dm, 1.0);
   float hh = h * (h / dm);      // = t + d without cancellation
-#ifdef GREY
+#ifdef PLUME_FEATURE_GREY
   // kt is the same in R, G and B: one look-up serves the three channels.
   return vec3(lookupH(KappaT.x * hh, tau) / dm);
 #else
@@ -175,7 +184,7 @@ vec3 tailPotential(float t, float h, float x)
   float d = sqrt(t * t + h * h);
   float dp = max(t + d, 1e-30);
   float eps = min(h / dp, 1.0);
-#ifdef GREY
+#ifdef PLUME_FEATURE_GREY
   return vec3(exp(-KappaT.x * (x + d)) * lookupG(KappaT.x * dp, eps) / dp);
 #else
   vec3 r;
@@ -290,6 +299,49 @@ vec2 coneInterval(vec3 o, vec3 r, float xs, vec3 apex, vec3 axis, float c)
     }
   }
   return vec2(lo, hi);
+}
+//PLUME::ENDIF
+
+//PLUME::IF TEXTURE
+bool textured(int l)
+{
+  return LightTextureRect[l].z > 0.0;
+}
+
+// Where the direction v (from the light, any length) meets light l's image:
+// the cone's square, the cone's circle inscribed, u along Right, v along Up.
+vec2 lightTextureCoordinates(int l, vec3 v)
+{
+  float z = max(dot(v, LightAxis[l]), 1e-30); // > 0 inside a cone of at most 90 degrees
+  return clamp(0.5 + 0.5 * vec2(dot(v, LightTextureRight[l]), dot(v, LightTextureUp[l])) / z, 0.0, 1.0);
+}
+
+// The light's image (RGB) in direction v, bilinear between texel centres.
+vec3 lightTexture(int l, vec3 v)
+{
+  ivec4 rect = ivec4(LightTextureRect[l]);
+  vec2 s = lightTextureCoordinates(l, v) * vec2(rect.zw) - 0.5;
+  vec2 s0 = floor(s);
+  vec2 f = s - s0;
+  ivec2 i0 = clamp(ivec2(s0), ivec2(0), rect.zw - 1);
+  ivec2 i1 = clamp(ivec2(s0) + 1, ivec2(0), rect.zw - 1);
+  vec3 t00 = texelFetch(LightTextures, rect.xy + i0, 0).rgb;
+  vec3 t10 = texelFetch(LightTextures, rect.xy + ivec2(i1.x, i0.y), 0).rgb;
+  vec3 t01 = texelFetch(LightTextures, rect.xy + ivec2(i0.x, i1.y), 0).rgb;
+  vec3 t11 = texelFetch(LightTextures, rect.xy + i1, 0).rgb;
+  return mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
+}
+
+// Sub-intervals for a textured light over the ray's span in its cone: two per
+// texel the ray's image crosses (a straight line: the projection is
+// perspective), at least `steps`, at most 1024.
+int textureSteps(int l, vec3 o, vec3 r, vec2 span, int steps)
+{
+  vec3 L = LightPosition[l];
+  vec2 a = lightTextureCoordinates(l, o + span.x * r - L);
+  vec2 b = lightTextureCoordinates(l, isinf(span.y) ? r : o + span.y * r - L);
+  float texels = length((b - a) * LightTextureRect[l].zw);
+  return clamp(int(ceil(2.0 * texels)), steps, 1024);
 }
 //PLUME::ENDIF
 
@@ -411,6 +463,14 @@ vec3 shadowedMarch(vec3 o, vec3 r, vec2 span, float tc, float h, int l, float ex
   float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
   int spotSteps = exponent == 0.0 ? 1 : min(SpotSteps * int(ceil(sqrt(max(exponent, 2.0) / 2.0))), 256);
   int steps = max(ShadowSteps, spotSteps);
+  bool weighted = exponent != 0.0;
+//PLUME::IF TEXTURE
+  if (textured(l))
+  {
+    steps = textureSteps(l, o, r, span, steps);
+    weighted = true;
+  }
+//PLUME::ENDIF
   float dth = (th1 - th0) / float(steps);
   // Interleaved gradient noise: a per-pixel offset of the lit test in each step.
   float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
@@ -427,12 +487,18 @@ vec3 shadowedMarch(vec3 o, vec3 r, vec2 span, float tc, float h, int l, float ex
     float xj = tc + h * tan(th0 + (float(k) - 1.0 + jitter) * dth);
     if (lit(s, o + xj * r) > 0.0)
     {
-      float w = 1.0;
-      if (exponent != 0.0)
+      vec3 w = vec3(1.0);
+      if (weighted)
       {
         float thm = th0 + (float(k) - 0.5) * dth;
         vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
-        w = pow(max(dot(dir, LightAxis[l]), 0.0), exponent);
+        w = vec3(exponent == 0.0 ? 1.0 : pow(max(dot(dir, LightAxis[l]), 0.0), exponent));
+//PLUME::IF TEXTURE
+        if (textured(l))
+        {
+          w *= lightTexture(l, dir);
+        }
+//PLUME::ENDIF
       }
       // Not clamped per step: the table's interpolation error can make a
       // short step's difference slightly negative, and clamping each step
@@ -446,7 +512,7 @@ vec3 shadowedMarch(vec3 o, vec3 r, vec2 span, float tc, float h, int l, float ex
 }
 //PLUME::ENDIF
 
-#ifdef MARCH
+#ifdef PLUME_FEATURE_MARCH
 // The brute-force peer (vtkPlumeAirlightPass::MarchSteps > 0): the same
 // integral by the midpoint rule with MARCH_STEPS samples per ray and light,
 // as a user would write it; rays that hit nothing stop at MarchFar. Returns
@@ -464,13 +530,20 @@ vec3 march(vec3 o, vec3 r, float xs, int l)
     float d2 = max(dot(v, v), 1e-30);
     float d = sqrt(d2);
     float w = 1.0;
-#ifdef HAS_SPOT
+#ifdef PLUME_FEATURE_SPOT
     if (LightCosCone[l] > -1.5)
     {
       float c = dot(v, LightAxis[l]) / d;
       w = c >= LightCosCone[l] ? pow(max(c, 0.0), LightExponent[l]) : 0.0;
     }
 #endif
+    vec3 tint = vec3(1.0);
+//PLUME::IF TEXTURE
+    if (textured(l) && w > 0.0)
+    {
+      tint = lightTexture(l, v);
+    }
+//PLUME::ENDIF
 //PLUME::IF SHADOW
     // A shadowed light: the same shadow map test at every sample.
     if (LightShadow[l] >= 0 && w > 0.0)
@@ -481,7 +554,7 @@ vec3 march(vec3 o, vec3 r, float xs, int l)
     // Henyey-Greenstein times 4 pi; cos(scattering angle) = -dot(v, r) / d.
     float g = Anisotropy;
     w *= (1.0 - g * g) / pow(max(1.0 + g * g + 2.0 * g * dot(v, r) / d, 1e-30), 1.5);
-    sum += w * exp(-KappaT * (x + d)) / d2;
+    sum += w * tint * exp(-KappaT * (x + d)) / d2;
   }
   return 0.5 * dx * sum;
 }
@@ -499,16 +572,21 @@ vec3 airlightOf(vec3 o, vec3 r, float xs)
     float h = length(toLight - tc * r);         // distance of the light from the ray's line
     h = max(h, 1e-30);
     vec3 unit = vec3(0.0);
-#ifdef MARCH
+#ifdef PLUME_FEATURE_MARCH
     unit = march(o, r, xs, l);
 #else
     vec2 span = vec2(0.0, xs); // the lit part of the ray: all of it, or a spot's cone interval
     float exponent = 0.0;
+    bool weighted = false; // the exponent's or the image's weight: sub-intervals
 //PLUME::IF SPOT
     if (LightCosCone[l] > -1.5)
     {
       span = coneInterval(o, r, xs, L, LightAxis[l], LightCosCone[l]);
       exponent = LightExponent[l];
+      weighted = exponent != 0.0;
+//PLUME::IF TEXTURE
+      weighted = weighted || textured(l);
+//PLUME::ENDIF
     }
 //PLUME::ENDIF
     if (span.x < span.y)
@@ -520,7 +598,7 @@ vec3 airlightOf(vec3 o, vec3 r, float xs)
       }
       else
 //PLUME::ENDIF
-      if (exponent == 0.0)
+      if (!weighted)
       {
         unit = segment(span.x, span.y, tc, h);
       }
@@ -534,6 +612,12 @@ vec3 airlightOf(vec3 o, vec3 r, float xs)
         // The weight's angular width shrinks as 1/sqrt(exponent): SpotSteps
         // sub-intervals per unit of sqrt(exponent / 2), at most 256.
         int steps = min(SpotSteps * int(ceil(sqrt(max(exponent, 2.0) / 2.0))), 256);
+//PLUME::IF TEXTURE
+        if (textured(l))
+        {
+          steps = textureSteps(l, o, r, span, steps);
+        }
+//PLUME::ENDIF
         float dth = (th1 - th0) / float(steps);
         vec3 footPhi = tc > 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
         float tStart = max(-tc, 0.0);
@@ -544,7 +628,13 @@ vec3 airlightOf(vec3 o, vec3 r, float xs)
           float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
           float thm = th0 + (float(k) - 0.5) * dth;
           vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
-          float w = pow(max(dot(dir, LightAxis[l]), 0.0), exponent);
+          vec3 w = vec3(exponent == 0.0 ? 1.0 : pow(max(dot(dir, LightAxis[l]), 0.0), exponent));
+//PLUME::IF TEXTURE
+          if (textured(l))
+          {
+            w *= lightTexture(l, dir);
+          }
+//PLUME::ENDIF
           vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
           unit += w * (phiB - phiA); // not clamped per step, see shadowedMarch
           phiA = phiB;

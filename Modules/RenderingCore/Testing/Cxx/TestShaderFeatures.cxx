@@ -1,7 +1,9 @@
 // Shader variants: //PLUME::IF blocks nest, "A+B" is AND and spaces are OR;
 // a feature set's defines and key follow its content (not the order of the
 // calls); the program cache builds a variant once per window, returns to a
-// variant without building, and rebuilds for a new window.
+// variant without building, and rebuilds for a new window; full-screen quads
+// (ReadyQuad) draw the variant asked for, share that bookkeeping, and are
+// dropped with their window.
 #include "vtkPlumeShaderFeatures.h"
 #include "vtkPlumeShaderProgramCache.h"
 #include "vtkPlumeShaderVariants.h"
@@ -9,7 +11,11 @@
 #include "plumeRenderingCoreTestUtil.h"
 
 #include "vtkNew.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtk_glew.h"
 #include "vtkShaderProgram.h"
 
 #include <cstdlib>
@@ -31,17 +37,47 @@ const char* Template = "a\n"
 const char* VS = "//VTK::System::Dec\n"
                  "in vec4 vertexMC;\n"
                  "void main() { gl_Position = vertexMC; }\n";
+// The variants' bodies, for a plain program and for a full-screen quad.
+#define VARIANTS                                                                                   \
+  "//PLUME::IF RED\n"                                                                              \
+  "  gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0);\n"                                                 \
+  "//PLUME::ENDIF\n"                                                                               \
+  "//PLUME::IF BLUE\n"                                                                             \
+  "  gl_FragData[0] = vec4(0.0, 0.0, float(PLUME_LEVEL) / 4.0, 1.0);\n"                            \
+  "//PLUME::ENDIF\n"
 const char* FS = "//VTK::System::Dec\n"
                  "//VTK::Output::Dec\n"
                  "//PLUME::Defines\n"
-                 "void main() {\n"
-                 "//PLUME::IF RED\n"
-                 "  gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0);\n"
-                 "//PLUME::ENDIF\n"
-                 "//PLUME::IF BLUE\n"
-                 "  gl_FragData[0] = vec4(0.0, 0.0, float(PLUME_LEVEL) / 4.0, 1.0);\n"
-                 "//PLUME::ENDIF\n"
-                 "}\n";
+                 "void main() {\n" VARIANTS "}\n";
+// VTK's quad vertex shader passes texCoord, which must be used (else the quad cannot bind it)
+const char* QuadFS = "//VTK::System::Dec\n"
+                     "//VTK::Output::Dec\n"
+                     "//PLUME::Defines\n"
+                     "in vec2 texCoord;\n"
+                     "void main() {\n"
+                     "  if (texCoord.x < -1.0) discard;\n" VARIANTS "}\n";
+
+// The centre pixel of an 8x8 float target after drawing the variant's quad over it.
+void DrawQuad(vtkOpenGLRenderWindow* gl, vtkPlumeShaderProgramCache* cache, const vtkPlumeShaderFeatures& f,
+  float rgba[4])
+{
+  gl->MakeCurrent();
+  vtkOpenGLQuadHelper* quad = cache->ReadyQuad(gl, QuadFS, f);
+  vtkNew<vtkOpenGLFramebufferObject> fbo;
+  fbo->SetContext(gl);
+  gl->GetState()->PushFramebufferBindings();
+  fbo->PopulateFramebuffer(8, 8, true, 1, VTK_FLOAT, false, 0, 0, false);
+  fbo->Bind();
+  fbo->ActivateDrawBuffer(0);
+  fbo->ActivateReadBuffer(0);
+  gl->GetState()->vtkglViewport(0, 0, 8, 8);
+  gl->GetState()->vtkglDisable(GL_DEPTH_TEST);
+  gl->GetState()->vtkglDisable(GL_BLEND);
+  gl->GetState()->vtkglDisable(GL_SCISSOR_TEST);
+  quad->Render();
+  glReadPixels(4, 4, 1, 1, GL_RGBA, GL_FLOAT, rgba);
+  gl->GetState()->PopFramebufferBindings();
+}
 }
 
 int TestShaderFeatures(int, char*[])
@@ -92,6 +128,24 @@ int TestShaderFeatures(int, char*[])
   auto other = plumetest::MakeTestWindow();
   CHECK(cache->Ready(vtkOpenGLRenderWindow::SafeDownCast(other), VS, nullptr, FS, red) != nullptr);
   CHECK(cache->GetBuildCount() == 4);
+
+  // full-screen quads: same variants, same key rules, counted in BuildCount
+  // (a quad's vertex array belongs to the context current when it is built)
+  gl->MakeCurrent();
+  vtkOpenGLQuadHelper* qr = cache->ReadyQuad(gl, QuadFS, red);
+  CHECK(qr != nullptr && cache->GetBuildCount() == 5);
+  vtkOpenGLQuadHelper* qb = cache->ReadyQuad(gl, QuadFS, blue2);
+  CHECK(qb != nullptr && qb != qr && cache->GetBuildCount() == 6);
+  CHECK(cache->ReadyQuad(gl, QuadFS, red) == qr && cache->GetBuildCount() == 6);
+  float px[4] = { -1, -1, -1, -1 };
+  DrawQuad(gl, cache, red, px);
+  CHECK(px[0] == 1.0f && px[1] == 0.0f && px[2] == 0.0f && px[3] == 1.0f);
+  DrawQuad(gl, cache, blue2, px);
+  CHECK(px[0] == 0.0f && px[2] == 0.5f);
+  auto* otherGL = vtkOpenGLRenderWindow::SafeDownCast(other);
+  CHECK(cache->ReadyQuad(otherGL, QuadFS, red) != nullptr && cache->GetBuildCount() == 7);
+  cache->ReleaseGraphicsResources(other);
+  CHECK(cache->ReadyQuad(otherGL, QuadFS, red) != nullptr && cache->GetBuildCount() == 8);
   cache->ReleaseGraphicsResources(other);
   std::printf("programs built: %d\n", cache->GetBuildCount());
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
