@@ -5,9 +5,27 @@
 
 #include "vtk_glew.h"
 
+#include <cstdlib>
 #include <sstream>
+#include <string>
 
 vtkStandardNewMacro(vtkPlumeComputeContext);
+
+namespace
+{
+// Whether the render window VTK makes by default is an X window and no
+// display is named. Asked of the object factory without opening anything.
+bool NeedsXDisplay()
+{
+  const char* display = std::getenv("DISPLAY");
+  if (display && *display)
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkRenderWindow> probe = vtkSmartPointer<vtkRenderWindow>::New();
+  return probe && std::string(probe->GetClassName()) == "vtkXOpenGLRenderWindow";
+}
+}
 
 vtkPlumeComputeContext::vtkPlumeComputeContext() = default;
 vtkPlumeComputeContext::~vtkPlumeComputeContext() = default;
@@ -17,6 +35,15 @@ vtkOpenGLRenderWindow* vtkPlumeComputeContext::Resolve(vtkRenderWindow* given, s
   vtkRenderWindow* window = given;
   if (!window)
   {
+    // VTK's X window aborts the process when it cannot open a display: say so
+    // instead (the usual headless case: DISPLAY unset). A window handed over,
+    // e.g. plume's OSMesa one, needs no display.
+    if (!this->OwnWindow && NeedsXDisplay())
+    {
+      error = "no OpenGL context: this VTK's offscreen window needs an X display and DISPLAY is not set "
+              "(run under an X server, e.g. xvfb-run, or hand the computation a render window)";
+      return nullptr;
+    }
     if (!this->OwnWindow)
     {
       this->OwnWindow = vtkSmartPointer<vtkRenderWindow>::New();

@@ -8,6 +8,7 @@
 #include "vtkPlumeTextureHandOver.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkAlgorithmOutput.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -22,6 +23,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
 
 #include <glm/glm.hpp>
 
@@ -352,14 +354,28 @@ class vtkPlumeSmokeSolver::GPUBackend
 {
 public:
   plume::smoke::SmokeGPU Engine;
-  vtkSmartPointer<vtkRenderWindow> Window; // the user's, or none
+  vtkWeakPointer<vtkRenderWindow> Window; // the user's, or none (not owned: see SetRenderWindow)
+  unsigned long WindowObserver = 0;       // its DeleteEvent
   vtkSmartPointer<vtkPlumeTextureHandOver> DensityHandOver;
   vtkSmartPointer<vtkPlumeTextureHandOver> VelocityHandOver;
 };
 
 vtkPlumeSmokeSolver::~vtkPlumeSmokeSolver()
 {
+  if (this->GPU && this->GPU->Window)
+  {
+    this->GPU->Window->RemoveObserver(this->GPU->WindowObserver);
+  }
   delete this->GPU;
+}
+
+void vtkPlumeSmokeSolver::OnRenderWindowDeleted()
+{
+  // the window is still whole here: read the state back into the CPU arrays
+  // and free the textures in its context; later GPU steps use an own window
+  this->ReleaseGraphicsResources();
+  this->GPU->Window = nullptr;
+  this->GPU->WindowObserver = 0;
 }
 
 void vtkPlumeSmokeSolver::SetRenderWindow(vtkRenderWindow* window)
@@ -374,7 +390,17 @@ void vtkPlumeSmokeSolver::SetRenderWindow(vtkRenderWindow* window)
     this->RevokeHandOvers();
     this->GPU->Engine.Release();
     this->InvalidateGPUState();
+    if (this->GPU->Window)
+    {
+      this->GPU->Window->RemoveObserver(this->GPU->WindowObserver);
+      this->GPU->WindowObserver = 0;
+    }
     this->GPU->Window = window;
+    if (window)
+    {
+      this->GPU->WindowObserver =
+        window->AddObserver(vtkCommand::DeleteEvent, this, &vtkPlumeSmokeSolver::OnRenderWindowDeleted);
+    }
     this->Modified();
   }
 }

@@ -307,7 +307,12 @@ public:
   ///@}
 
   ///@{
-  /** GL context of the GPU backend (a vtkOpenGLRenderWindow). Default none: an offscreen window of its own. */
+  /**
+   * GL context of the GPU backend (a vtkOpenGLRenderWindow). Default none: an
+   * offscreen window of its own. Not owned (the window's renderers may hold a
+   * mapper whose input is this solver): when the window is deleted the state
+   * is read back and the GPU backend falls back to a window of its own.
+   */
   void SetRenderWindow(vtkRenderWindow* window);
   vtkRenderWindow* GetRenderWindow();
   ///@}
@@ -497,6 +502,7 @@ protected:
   void FillOutput(vtkImageData* output);
 
   // GPU backend
+  void OnRenderWindowDeleted(); // the state leaves the window's context before it goes
   class GPUBackend;
   GPUBackend* GPU = nullptr;
   int Backend = BACKEND_CPU;
