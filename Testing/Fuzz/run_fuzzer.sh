@@ -37,14 +37,15 @@ limits=(-rss_limit_mb=6144 -malloc_limit_mb=4096 -timeout=60)
 # Address randomization off: libFuzzer keys its tables of recent comparisons
 # (which feed its mutations) by code address, so with ASLR the same seed
 # explores different inputs in each run.
-# And a fixed environment (only the sanitizers' and Plume's variables, PATH
+# And a fixed environment (the sanitizers' variables, PLUME_DATA_DIR,
+# PLUME_READER_ISOLATION, PATH
 # and HOME): the stack starts below the environment, and libFuzzer's
 # comparison dictionary picks up stack addresses, so a CI job's changing
 # variables would change the exploration too.
 norandom=(env -i PATH="$PATH" HOME="${HOME:-/}")
 while IFS= read -r var; do
   norandom+=("$var")
-done < <(env | grep -E '^(PLUME_|ASAN_OPTIONS=|LSAN_OPTIONS=|UBSAN_OPTIONS=|LD_PRELOAD=)' | sort)
+done < <(env | grep -E '^(PLUME_DATA_DIR=|PLUME_READER_ISOLATION=|ASAN_OPTIONS=|LSAN_OPTIONS=|UBSAN_OPTIONS=|LD_PRELOAD=)' | sort)
 if setarch "$(uname -m)" -R true 2>/dev/null; then
   norandom+=(setarch "$(uname -m)" -R)
 elif [[ "$mode" == explore ]]; then
