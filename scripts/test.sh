@@ -7,7 +7,8 @@
 #     the VTK 9.1 build's); PLUME_SKIP_PARAVIEW=1 skips them;
 #  3. the label "sanitize" alone: the libraries, the command line, the tests
 #     of Plume's CPU code and the fuzz targets in a clang ASan + UBSan + LSan
-#     build, those tests, then 15 s of each fuzzer (scripts/test-sanitize.sh);
+#     build, those tests, then each fuzzer's deterministic replay and
+#     fixed-seed, fixed-count exploration (scripts/test-sanitize.sh);
 #     PLUME_SANITIZE=0 skips it.
 # Arguments go to the first ctest instead (e.g. -R Volume), and then only
 # part 1 runs. See Documentation/Testing.md.

@@ -577,6 +577,52 @@ std::string vtkPlumeFormatCheck::CheckLegacyVTK(const std::string& path)
   // VTK matches a keyword by its first letters in any case ("POLYGONS[" is
   // POLYGONS) and reads the counts as the next words, on that line or later
   static const char* const keywords[] = { "vertices", "lines", "polygons", "triangle_strips", "cells" };
+  // `count` integers follow (ASCII: each a whole word; strtoll stops at a NUL
+  // byte inside one, "3\0\0\x13" is no integer to VTK), or 4-byte ones (binary)
+  auto checkList = [&](const std::string& where, long long count) -> std::string {
+    if (binary)
+    {
+      const std::streamoff at = in.tellg();
+      if (at < 0 || double(count) * 4.0 > double(fileSize - at))
+      {
+        return where + " needs " + std::to_string(count * 4) + " bytes, but the file ends after " +
+          std::to_string(at < 0 ? 0 : fileSize - at) + " (truncated file?)";
+      }
+      in.seekg(at + static_cast<std::streamoff>(count) * 4);
+      return std::string();
+    }
+    long long read = 0;
+    std::string token;
+    while (read < count && in >> token)
+    {
+      char* end = nullptr;
+      const long long v = std::strtoll(token.c_str(), &end, 10);
+      (void)v;
+      if (!end || end != token.c_str() + token.size() || end == token.c_str())
+      {
+        std::string shown = token.substr(0, 40);
+        for (char& ch : shown)
+        {
+          ch = std::isprint(static_cast<unsigned char>(ch)) ? ch : '?'; // NUL and control bytes
+        }
+        return where + ": value " + std::to_string(read) + " is '" + shown + "', not an integer";
+      }
+      ++read;
+    }
+    if (read < count)
+    {
+      return where + " ends after " + std::to_string(read) + " values (truncated file?)";
+    }
+    std::string rest;
+    std::getline(in, rest); // the rest of the last line
+    return std::string();
+  };
+  auto lowered = [](std::string word) {
+    std::transform(word.begin(), word.end(), word.begin(),
+      [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    return word;
+  };
+  long long gridCells = -1, gridTypes = -1; // an unstructured grid's CELLS and CELL_TYPES counts
   while (std::getline(in, line))
   {
     std::istringstream words(line);
@@ -585,9 +631,38 @@ std::string vtkPlumeFormatCheck::CheckLegacyVTK(const std::string& path)
     {
       continue;
     }
-    std::string lower = keyword;
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-      [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    const std::string lower = lowered(keyword);
+    if (lower.compare(0, 10, "cell_types") == 0)
+    {
+      // VTK's unstructured grid reader leaks its cell arrays when this list
+      // is short (every error return after CELLS) and pairs the two lists by
+      // index, so the counts must agree
+      long long types = -1;
+      if (!(words >> types))
+      {
+        if (!(in >> types))
+        {
+          return std::string(); // no count: VTK's reader fails with its own error
+        }
+        if (in.peek() == '\n')
+        {
+          in.get(); // the values start on the next line
+        }
+      }
+      const std::string where = "the " + keyword + " section (" + std::to_string(types) + " types)";
+      if (types < 0 || (gridCells >= 0 && types != gridCells))
+      {
+        return where + (types < 0 ? " has an impossible header"
+                                  : " does not match the CELLS section's " + std::to_string(gridCells) + " cells");
+      }
+      gridTypes = types;
+      const std::string bad = checkList(where, types);
+      if (!bad.empty())
+      {
+        return bad;
+      }
+      continue;
+    }
     bool isCells = false;
     for (const char* k : keywords)
     {
@@ -617,42 +692,19 @@ std::string vtkPlumeFormatCheck::CheckLegacyVTK(const std::string& path)
     {
       return where + " has an impossible header";
     }
-    if (binary)
+    if (lower.compare(0, 5, "cells") == 0)
     {
-      const std::streamoff at = in.tellg();
-      if (at < 0 || double(size) * 4.0 > double(fileSize - at))
+      if (gridTypes >= 0 && cells != gridTypes)
       {
-        return where + " needs " + std::to_string(size * 4) + " bytes, but the file ends after " +
-          std::to_string(at < 0 ? 0 : fileSize - at) + " (truncated file?)";
+        return where + " does not match the CELL_TYPES section's " + std::to_string(gridTypes) + " types";
       }
-      in.seekg(at + static_cast<std::streamoff>(size) * 4);
-      continue;
+      gridCells = cells;
     }
-    // ASCII: `size` integers, each cell's count followed by that many ids
-    long long read = 0;
-    std::string token;
-    while (read < size && in >> token)
+    const std::string bad = checkList(where, size);
+    if (!bad.empty())
     {
-      char* end = nullptr;
-      const long long v = std::strtoll(token.c_str(), &end, 10);
-      (void)v;
-      // the whole word: strtoll stops at a NUL byte inside it ("3\0\0\x13" is no integer to VTK)
-      if (!end || end != token.c_str() + token.size() || end == token.c_str())
-      {
-        std::string shown = token.substr(0, 40);
-        for (char& ch : shown)
-        {
-          ch = std::isprint(static_cast<unsigned char>(ch)) ? ch : '?'; // NUL and control bytes
-        }
-        return where + ": value " + std::to_string(read) + " is '" + shown + "', not an integer";
-      }
-      ++read;
+      return bad;
     }
-    if (read < size)
-    {
-      return where + " ends after " + std::to_string(read) + " values (truncated file?)";
-    }
-    std::getline(in, line); // the rest of the last line
   }
   return std::string();
 }

@@ -302,6 +302,17 @@ def build(c):
           "polygons\n2 8\n3 0 1 2\n"))], r"the polygons section \(2 cells, 8 values\) ends after 4 values")
     c.add("LegacyCellsNulInValue", "error", ["info", c.write("legacy_cells/nul.vtk", legacy_poly(
           "POLYGONS 2 8\n3 0 1 2\n3\0\0\0\x13 1 2 2\n"))], r"the POLYGONS section \(2 cells, 8 values\): value 4 is '3\?\?\?\?', not an integer")
+    # a CELL_TYPES list shorter than announced, or a count other than the CELLS section's: VTK 9.1's
+    # unstructured grid reader returns without freeing its cell arrays (a leak; found by
+    # plumeFuzzDatasetReader, regression-legacy-cell-types-short) or pairs the lists by index
+    c.add("LegacyCellTypesCount", "error", ["info", c.write("legacy_cells/types_count.vtk", legacy_ugrid(
+          "CELLS 1 5\n4 0 1 2 3", "CELL_TYPES 2\n12 12"))],
+          r"the CELL_TYPES section \(2 types\) does not match the CELLS section's 1 cells")
+    c.add("LegacyCellTypesShort", "error", ["info", c.write("legacy_cells/types_short.vtk", legacy_ugrid(
+          "CELLS 2 10\n4 0 1 2 3\n4 0 1 2 3", "CELL_TYPES 2\n10"))],
+          r"the CELL_TYPES section \(2 types\) ends after 1 values \(truncated file\?\)")
+    c.add("LegacyCellTypesNotNumber", "error", ["info", c.write("legacy_cells/types_x.vtk", legacy_ugrid(
+          "CELLS 1 5\n4 0 1 2 3", "CELL_TYPES 1\nx"))], r"the CELL_TYPES section \(1 types\): value 0 is 'x', not an integer")
     c.add("LegacyCellsCountsNextLineOk", "ok", ["info", c.write("legacy_cells/next_line_ok.vtk", legacy_poly(
           "polygons 2\n8\n3 0 1 2\n3 1 3 2\n"))], r"Points: 4\s+Cells: 2")
     # a malformed FIELD section: VTK 9.1's legacy readers dereference the null field data they

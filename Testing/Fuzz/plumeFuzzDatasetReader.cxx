@@ -18,12 +18,14 @@
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
+#include "vtkSMPTools.h"
 
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace
@@ -34,9 +36,21 @@ std::string folder;
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
   setenv("PLUME_MEMORY_BUDGET_MB", "64", 1);
+  // One thread: code run by vtkSMPTools' worker threads (Debian's VTK links TBB)
+  // gives coverage that depends on scheduling, so libFuzzer's feedback, and
+  // with it the inputs a fixed seed explores, would differ from run to run.
+  vtkSMPTools::SetBackend("Sequential");
+  // A hanging reader in the isolated child (exposed formats) becomes a quick
+  // clear error ("did not finish within 10 s") instead of libFuzzer's timeout.
+  setenv("PLUME_READER_TIMEOUT", "10", 0);
   vtkObject::GlobalWarningDisplayOff();
-  char templ[] = "/tmp/plume-fuzz-reader-XXXXXX";
-  folder = mkdtemp(templ);
+  // The files go to one folder per working directory (run_fuzzer.sh: one per
+  // test), not a random one: libFuzzer records the bytes compared by strcmp and
+  // memcmp for its mutations, and a random path among them would change what a
+  // fixed seed explores.
+  char cwd[4096];
+  folder = std::string(getcwd(cwd, sizeof(cwd)) ? cwd : "/tmp") + "/plume-fuzz-reader-files";
+  mkdir(folder.c_str(), 0700);
   std::ofstream(folder + "/data.case") << "FORMAT\ntype:  ensight gold\nGEOMETRY\nmodel: data.geo\n";
   return 0;
 }
