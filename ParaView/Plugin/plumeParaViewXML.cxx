@@ -359,7 +359,9 @@ int main(int argc, char* argv[])
   std::vector<Representation> reps;
   reps.push_back({ "PlumeVolumeRepresentation", "Plume Volume", "PlumeVolume", "PlumeVolumeMapper",
     &vtkPlumeVolumeMapper::GetParameterTable(),
-    InputProperty("vtkImageData vtkMultiBlockDataSet vtkPartitionedDataSet vtkOverlappingAMR vtkNonOverlappingAMR") +
+    InputProperty(
+      "vtkImageData vtkMultiBlockDataSet vtkPartitionedDataSet vtkPartitionedDataSetCollection vtkOverlappingAMR "
+      "vtkNonOverlappingAMR") +
       ColorArrayProperty +
       R"(      <ProxyProperty name="ScalarOpacityFunction" command="SetScalarOpacity">
         <ProxyGroupDomain name="groups"><Group name="piecewise_functions"/></ProxyGroupDomain>
@@ -377,11 +379,13 @@ int main(int argc, char* argv[])
     { { "UniformGridRepresentation", "VolumeRepresentation" }, { "AMRRepresentation", "VolumeRepresentation" } } });
   reps.push_back({ "PlumeSheetRepresentation", "Plume Smoke Sheet", "PlumeSheet", "PlumeSheetMapper",
     &vtkPlumeSheetMapper::GetParameterTable(),
-    InputProperty("vtkPolyData vtkMultiBlockDataSet vtkPartitionedDataSet"), {},
+    InputProperty("vtkPolyData vtkMultiBlockDataSet vtkPartitionedDataSet vtkPartitionedDataSetCollection"), {},
     { { "GeometryRepresentation", "SurfaceRepresentation" } } });
   reps.push_back({ "PlumeVelocityLinesRepresentation", "Plume Velocity Lines", "PlumeLines",
     "PlumeVelocityGlyphMapper", &vtkPlumeVelocityGlyphMapper::GetParameterTable(),
-    InputProperty("vtkDataSet vtkMultiBlockDataSet vtkPartitionedDataSet vtkOverlappingAMR vtkNonOverlappingAMR") +
+    InputProperty(
+      "vtkDataSet vtkMultiBlockDataSet vtkPartitionedDataSet vtkPartitionedDataSetCollection vtkOverlappingAMR "
+      "vtkNonOverlappingAMR") +
       ColorArrayProperty,
     {},
     { { "UniformGridRepresentation", "SurfaceRepresentation" }, { "AMRRepresentation", "SurfaceRepresentation" },

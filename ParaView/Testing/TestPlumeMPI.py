@@ -9,7 +9,7 @@ Distribution: carotid.vtk is written as .vti and read back with the XML
 image reader, which gives each rank a slab of the grid (image data stays
 image data; the volume and the lines need images); the smoke sheet is the
 contour of each rank's slab (its output carries a layer of ghost cells at the seam: the
-sheet representation drops those cells, which the other rank draws); the
+sheet mapper skips cells flagged DUPLICATECELL, which the other rank draws); the
 splat's input is the centres of the cells inside the vessels (each cell on
 one rank). A fifth scene moves the sheet's contour between the ranks with
 RedistributeDataSet (its transfers are VTK XML files with appended data:

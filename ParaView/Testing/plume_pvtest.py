@@ -116,9 +116,10 @@ def compare(a, b, levels=1, fraction=0.995):
     return share >= fraction, share, int(diff.max())
 
 
-def check_baseline(image, name, levels=2, fraction=0.995):
-    """Compares with Baseline/<name>.png; writes the rendered image next to the test output."""
-    rendered = os.path.join(OUT, name + ".png")
+def check_baseline(image, name, levels=2, fraction=0.995, output=None):
+    """Compares with Baseline/<name>.png; writes the rendered image to the test
+    output as <output or name>.png."""
+    rendered = os.path.join(OUT, (output or name) + ".png")
     Image.fromarray(image).save(rendered)
     baseline = os.path.join(BASELINES, name + ".png")
     if not os.path.exists(baseline):
