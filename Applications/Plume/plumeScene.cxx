@@ -717,9 +717,11 @@ void BuildCamera(
 // row 0 at the bottom as VTK's readers give it.
 vtkSmartPointer<vtkImageData> ReadLightImage(const std::string& path, const std::string& where)
 {
-  if (!vtksys::SystemTools::FileExists(path, true))
+  // a FIFO or a device would block the readers forever
+  const std::string notRegular = vtkPlumeInputValidation::CheckRegularFile(path);
+  if (!notRegular.empty())
   {
-    throw SceneError(where + ": texture '" + path + "' not found");
+    throw SceneError(where + ": texture: " + notRegular);
   }
   auto image = vtkSmartPointer<vtkImageData>::New();
   if (vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path)) == ".exr")

@@ -164,6 +164,11 @@ def build(c):
     c.render("DatasetFifo", "error", c.scene("dataset_fifo", {
         "datasets": {"d": {"path": fifo_vtk}}, "representations": [{"type": "outline", "dataset": "d"}]}),
         r"datasets\.d: '.*fifo\.vtk' is a FIFO")
+    c.render("LightTextureFifo", "error", c.scene("light_texture_fifo", {
+        "datasets": {"d": {"path": "classic/carotid.vtk"}}, "representations": [{"type": "outline", "dataset": "d"}],
+        "lights": [{"type": "scene", "position": [0, 0, 100], "focal_point": [0, 0, 0], "positional": True,
+                    "cone_angle": 30, "texture": c.fifo("texture_fifo.png")}]}),
+        r"lights\[0\]: texture: '.*texture_fifo\.png' is a FIFO")
     c.render("DatasetDirectory", "error", c.scene("dataset_dir", {
         "datasets": {"d": {"path": c.path("folder.vtk")}}, "representations": [{"type": "outline", "dataset": "d"}]}),
         r"datasets\.d: '.*folder\.vtk' is a directory")
