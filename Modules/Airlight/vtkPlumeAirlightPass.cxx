@@ -50,6 +50,31 @@ vtkStandardNewMacro(vtkPlumeAirlightPass);
 vtkInformationKeyMacro(vtkPlumeAirlightPass, LIGHT_TEXTURE, ObjectBase);
 vtkInformationKeyMacro(vtkPlumeAirlightPass, LIGHT_TEXTURE_UP, DoubleVector);
 
+namespace
+{
+// The light's information, made if it has none yet.
+vtkInformation* LightInformation(vtkLight* light)
+{
+  if (!light->GetInformation())
+  {
+    vtkNew<vtkInformation> info;
+    light->SetInformation(info);
+  }
+  return light->GetInformation();
+}
+
+// The array holding an image's texels: its scalars, else its first point array.
+vtkDataArray* TexelValues(vtkImageData* image)
+{
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  if (!values && image->GetPointData()->GetNumberOfArrays() > 0)
+  {
+    values = image->GetPointData()->GetArray(0);
+  }
+  return values;
+}
+}
+
 //------------------------------------------------------------------------------
 void vtkPlumeAirlightPass::SetLightTexture(vtkLight* light, vtkImageData* image)
 {
@@ -57,18 +82,13 @@ void vtkPlumeAirlightPass::SetLightTexture(vtkLight* light, vtkImageData* image)
   {
     return;
   }
-  if (!light->GetInformation())
-  {
-    vtkNew<vtkInformation> info;
-    light->SetInformation(info);
-  }
   if (image)
   {
-    light->GetInformation()->Set(LIGHT_TEXTURE(), image);
+    LightInformation(light)->Set(LIGHT_TEXTURE(), image);
   }
   else
   {
-    light->GetInformation()->Remove(LIGHT_TEXTURE());
+    LightInformation(light)->Remove(LIGHT_TEXTURE());
   }
   light->Modified();
 }
@@ -85,13 +105,8 @@ void vtkPlumeAirlightPass::SetLightTextureUp(vtkLight* light, double x, double y
   {
     return;
   }
-  if (!light->GetInformation())
-  {
-    vtkNew<vtkInformation> info;
-    light->SetInformation(info);
-  }
   const double up[3] = { x, y, z };
-  light->GetInformation()->Set(LIGHT_TEXTURE_UP(), up, 3);
+  LightInformation(light)->Set(LIGHT_TEXTURE_UP(), up, 3);
   light->Modified();
 }
 
@@ -108,11 +123,7 @@ vtkImageData* ProjectedTexture(vtkLight* light)
   }
   int dims[3];
   image->GetDimensions(dims);
-  vtkDataArray* values = image->GetPointData()->GetScalars();
-  if (!values && image->GetPointData()->GetNumberOfArrays() > 0)
-  {
-    values = image->GetPointData()->GetArray(0);
-  }
+  vtkDataArray* values = TexelValues(image);
   if (dims[0] < 1 || dims[1] < 1 || dims[2] != 1 || !values ||
     values->GetNumberOfTuples() != static_cast<vtkIdType>(dims[0]) * dims[1])
   {
@@ -126,11 +137,7 @@ void AppendTexels(vtkImageData* image, std::vector<float>& atlas, int atlasWidth
 {
   int dims[3];
   image->GetDimensions(dims);
-  vtkDataArray* values = image->GetPointData()->GetScalars();
-  if (!values)
-  {
-    values = image->GetPointData()->GetArray(0);
-  }
+  vtkDataArray* values = TexelValues(image);
   const int nc = values->GetNumberOfComponents();
   double scale = 1.0;
   if (values->GetDataType() == VTK_UNSIGNED_CHAR)
