@@ -45,7 +45,13 @@ cd "$build"
 shim="$build/lib/libplumeKeepModulesLoaded.so"
 export LD_PRELOAD="$shim${LD_PRELOAD:+:$LD_PRELOAD}"
 export LSAN_OPTIONS="suppressions=$root/Testing/Sanitize/lsan.supp:print_suppressions=0:${LSAN_OPTIONS:-}"
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0:${ASAN_OPTIONS:-}"
+# intercept_tls_get_addr=0: clang 14's LeakSanitizer misreads glibc 2.36's
+# dynamic-TLS blocks (those of dlopen()ed modules: Mesa) and its tracer then
+# dies with SIGSEGV at exit ("Tracer caught signal 11", "DTLS 13 at 0xfd4"),
+# aborting a test that passed: 1 run in 3 of TestSheetUpload here, and
+# TestVolumePreIntegration in CI. google/sanitizers#1322 gives this workaround;
+# only the dynamic TLS of such modules is no longer scanned for pointers.
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0:intercept_tls_get_addr=0:${ASAN_OPTIONS:-}"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
 status=0
 # soak: its 150 frames x 3 under ASan take minutes and add no code path the
