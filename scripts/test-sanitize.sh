@@ -16,6 +16,8 @@
 # new seeds (fork mode, a time limit) is scripts/fuzz.sh, never CI.
 # Prints the time of each stage. See Documentation/Testing.md.
 #   bash scripts/test-sanitize.sh [extra ctest arguments]
+#   PLUME_SANITIZE_BUILD_ONLY=1: configure and build, run nothing (scripts/test.sh
+#   builds this way in the background while the main suite runs).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${PLUME_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
@@ -36,6 +38,10 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DPython3_EXECUTABLE=/usr/bin/python3 "${launcher[@]}" "${data[@]}"
 cmake --build "$build" --parallel "$(nproc)"
 t1=$SECONDS
+if [ "${PLUME_SANITIZE_BUILD_ONLY:-0}" = 1 ]; then
+  echo "sanitizer build: $((t1 - t0)) s"
+  exit 0
+fi
 cd "$build"
 # LeakSanitizer is on. Mesa's GLX driver and Open MPI's plugins (hypre's
 # pressure solve) are dlopen()ed and unloaded at exit, which left what they
