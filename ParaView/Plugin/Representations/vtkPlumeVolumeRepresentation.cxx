@@ -1,6 +1,7 @@
 #include "vtkPlumeVolumeRepresentation.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkImageData.h"
@@ -10,11 +11,14 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkPlumeImageInput.h"
 #include "vtkPlumeVolumeMapper.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkPlumeVolumeRepresentation);
 
@@ -80,12 +84,14 @@ int vtkPlumeVolumeRepresentation::RequestData(
 
 void vtkPlumeVolumeRepresentation::SetLookupTable(vtkScalarsToColors* lut)
 {
-  this->Property->SetColor(vtkColorTransferFunction::SafeDownCast(lut));
+  this->ColorMap = vtkColorTransferFunction::SafeDownCast(lut);
+  this->Modified();
 }
 
 void vtkPlumeVolumeRepresentation::SetScalarOpacity(vtkPiecewiseFunction* pwf)
 {
-  this->Property->SetScalarOpacity(pwf);
+  this->OpacityFunction = pwf;
+  this->Modified();
 }
 
 void vtkPlumeVolumeRepresentation::SetScalarOpacityUnitDistance(double distance)
@@ -112,12 +118,49 @@ bool vtkPlumeVolumeRepresentation::PrepareRender(vtkDataObject* piece)
   {
     this->Mapper->SetScalarModeToUsePointFieldData();
     this->Mapper->SelectScalarArray(name);
+    this->Property->SetColor(this->ColorMap);
+    this->Property->SetScalarOpacity(this->OpacityFunction);
   }
   else
   {
     this->Mapper->SetScalarModeToDefault();
+    this->ApplyDefaultLook(vtkImageData::SafeDownCast(piece));
   }
   return piece != nullptr;
+}
+
+void vtkPlumeVolumeRepresentation::ApplyDefaultLook(vtkImageData* image)
+{
+  // ParaView picks an array and its colour map only for representations
+  // named "Volume" or "Slice" (vtkSMPVRepresentationProxy::
+  // SetRepresentationType); without this the first Apply of "Plume Volume"
+  // drew VTK's default grey ramp over 0-1024: a near-black box.
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!scalars)
+  {
+    return;
+  }
+  double range[2];
+  scalars->GetRange(range, scalars->GetNumberOfComponents() == 1 ? 0 : -1);
+  if (!(range[1] > range[0]))
+  {
+    range[1] = range[0] + 1.0;
+  }
+  if (range[0] != this->DefaultRange[0] || range[1] != this->DefaultRange[1])
+  {
+    std::copy(range, range + 2, this->DefaultRange);
+    // ParaView's default colour map ("Cool to Warm") and opacity ramp
+    this->DefaultColor->RemoveAllPoints();
+    this->DefaultColor->SetColorSpaceToDiverging();
+    this->DefaultColor->AddRGBPoint(range[0], 0.231373, 0.298039, 0.752941);
+    this->DefaultColor->AddRGBPoint(0.5 * (range[0] + range[1]), 0.865003, 0.865003, 0.865003);
+    this->DefaultColor->AddRGBPoint(range[1], 0.705882, 0.0156863, 0.14902);
+    this->DefaultOpacity->RemoveAllPoints();
+    this->DefaultOpacity->AddPoint(range[0], 0.0);
+    this->DefaultOpacity->AddPoint(range[1], 1.0);
+  }
+  this->Property->SetColor(this->DefaultColor);
+  this->Property->SetScalarOpacity(this->DefaultOpacity);
 }
 
 void vtkPlumeVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
