@@ -5,6 +5,8 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkImageData.h"
+#include "vtkMultiProcessController.h"
+#include "vtkCommunicator.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
@@ -19,6 +21,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
+#include <limits>
 
 vtkStandardNewMacro(vtkPlumeVolumeRepresentation);
 
@@ -79,7 +82,34 @@ int vtkPlumeVolumeRepresentation::RequestData(
     }
     this->Cache = image;
   }
+  this->ReduceScalarRange(vtkImageData::SafeDownCast(this->Cache));
   return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+void vtkPlumeVolumeRepresentation::ReduceScalarRange(vtkImageData* image)
+{
+  // The default look's range, over every rank's piece: each rank's own
+  // range would colour the same value differently on each rank. Every rank
+  // runs RequestData (ParaView updates representations collectively), so
+  // every rank reaches the reduction, with or without data.
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double local[2] = { inf, inf }; // min and -max, both reduced by MIN
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (scalars && scalars->GetNumberOfTuples() > 0)
+  {
+    double range[2];
+    scalars->GetRange(range, scalars->GetNumberOfComponents() == 1 ? 0 : -1);
+    local[0] = range[0];
+    local[1] = -range[1];
+  }
+  double global[2] = { local[0], local[1] };
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    controller->AllReduce(local, global, 2, vtkCommunicator::MIN_OP);
+  }
+  this->ScalarRange[0] = global[0];
+  this->ScalarRange[1] = -global[1];
 }
 
 void vtkPlumeVolumeRepresentation::SetLookupTable(vtkScalarsToColors* lut)
@@ -136,12 +166,12 @@ void vtkPlumeVolumeRepresentation::ApplyDefaultLook(vtkImageData* image)
   // SetRepresentationType); without this the first Apply of "Plume Volume"
   // drew VTK's default grey ramp over 0-1024: a near-black box.
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
-  if (!scalars)
+  if (!scalars || !(this->ScalarRange[0] <= this->ScalarRange[1]))
   {
     return;
   }
-  double range[2];
-  scalars->GetRange(range, scalars->GetNumberOfComponents() == 1 ? 0 : -1);
+  // over all ranks (ReduceScalarRange): the same value, the same colour
+  double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
   if (!(range[1] > range[0]))
   {
     range[1] = range[0] + 1.0;

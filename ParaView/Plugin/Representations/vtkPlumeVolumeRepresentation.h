@@ -10,7 +10,8 @@
  * for the types it names "Volume" or "Slice", so a first Apply of "Plume
  * Volume" comes without), it renders the active point scalars with
  * ParaView's defaults for a volume: "Cool to Warm" and an opacity ramp from
- * 0 to 1 over the scalars' range on this rank. The mapper itself is the proxy's "Mapper" subproxy (its properties
+ * 0 to 1 over the scalars' range over all MPI ranks (the global
+ * controller's ranks, reduced in RequestData). The mapper itself is the proxy's "Mapper" subproxy (its properties
  * are generated from vtkPlumeVolumeMapper's parameter table).
  *
  * Input: vtkImageData, or a composite dataset whose leaves are images (each
@@ -81,6 +82,9 @@ protected:
   vtkNew<vtkColorTransferFunction> DefaultColor;             // the look without an array
   vtkNew<vtkPiecewiseFunction> DefaultOpacity;
   double DefaultRange[2] = { 0, 0 };
+  double ScalarRange[2] = { 1, 0 }; // the active scalars' range over all ranks; empty: min > max
+
+  void ReduceScalarRange(vtkImageData* image);
 
   void ApplyDefaultLook(vtkImageData* image);
 
