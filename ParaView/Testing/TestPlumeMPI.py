@@ -16,6 +16,11 @@ RedistributeDataSet (its transfers are VTK XML files with appended data:
 they parse only with the expat shim that test-paraview.sh preloads, see
 ParaView/Support/plumeExpatNoDeferral.c) and must equal the serial sheet.
 Each rank must really hold part of the data: checked.
+A sixth scene is the volume without a colour array (the first Apply's
+default look): its colour and opacity span the scalars' range over all
+ranks, so it equals the serial image only if the range is reduced over the
+ranks; the ranks' own ranges are checked to differ (else the scene would
+not tell).
 """
 import os
 import sys
@@ -106,6 +111,7 @@ def sheet_redistributed(source, v):
 
 # (name, scene, the serial reference it must equal)
 SCENES = (("PlumeVolume", plume_scenes.volume, "PlumeVolume"),
+          ("PlumeVolumeDefault", plume_scenes.volume_default, "PlumeVolumeDefault"),
           ("PlumeSmokeSheet", plume_scenes.sheet, "PlumeSmokeSheet"),
           ("PlumeVelocityLines", plume_scenes.lines, "PlumeVelocityLines"),
           ("PlumeGaussianSplat", plume_scenes.splat_points, "PlumeGaussianSplat"),
@@ -126,6 +132,20 @@ for name, build, reference in SCENES:
     recv = vtk.vtkIdTypeArray()
     controller.AllGather(send, recv)
     counts = [recv.GetValue(i) for i in range(recv.GetNumberOfTuples())]
+    if name == "PlumeVolumeDefault" and not SERIAL:
+        piece = rep.Input.GetClientSideObject().GetOutputDataObject(0)
+        lo, hi = piece.GetPointData().GetArray("scalars").GetRange()
+        send = vtk.vtkDoubleArray()
+        send.InsertNextValue(lo)
+        send.InsertNextValue(hi)
+        recv = vtk.vtkDoubleArray()
+        controller.AllGather(send, recv)
+        ranges = [(recv.GetValue(2 * i), recv.GetValue(2 * i + 1)) for i in range(recv.GetNumberOfTuples() // 2)]
+        if T.rank() == 0:
+            print("%s: scalar range per rank %s" % (name, ranges))
+            if len(set(ranges)) < 2:
+                print("%s: the ranks' scalar ranges are equal: the scene does not tell" % name)
+                failures.append(name + " ranges")
     image = T.render_image(v)
     if name == "PlumeGaussianSplat" and not splat_field_matches(rep.Input):
         failures.append(name + " field")

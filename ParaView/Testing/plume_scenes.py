@@ -22,6 +22,19 @@ def volume(source, v):
     return rep
 
 
+def volume_default(source, v):
+    """Plume Volume as the first Apply leaves it: no colour array chosen, so
+    the representation's default look over the active scalars' range."""
+    rep = simple.Show(source, v)
+    rep.Representation = "Plume Volume"
+    simple.ColorBy(rep, ("POINTS", None))
+    # Set: its default differs between pvbatch serial (1.84, ParaView's
+    # approximate cell length) and symmetric MPI (1); this scene is about
+    # the colour and opacity range.
+    rep.ScalarOpacityUnitDistance = 2.0
+    return rep
+
+
 def sheet(source, v, redistribute=False):
     contour = simple.Contour(Input=source, ContourBy=["POINTS", "scalars"], Isosurfaces=[190.0])
     src = contour

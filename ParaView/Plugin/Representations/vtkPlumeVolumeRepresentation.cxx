@@ -1,20 +1,27 @@
 #include "vtkPlumeVolumeRepresentation.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkImageData.h"
+#include "vtkMultiProcessController.h"
+#include "vtkCommunicator.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkPlumeImageInput.h"
 #include "vtkPlumeVolumeMapper.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <limits>
 
 vtkStandardNewMacro(vtkPlumeVolumeRepresentation);
 
@@ -75,17 +82,46 @@ int vtkPlumeVolumeRepresentation::RequestData(
     }
     this->Cache = image;
   }
+  this->ReduceScalarRange(vtkImageData::SafeDownCast(this->Cache));
   return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+void vtkPlumeVolumeRepresentation::ReduceScalarRange(vtkImageData* image)
+{
+  // The default look's range, over every rank's piece: each rank's own
+  // range would colour the same value differently on each rank. Every rank
+  // runs RequestData (ParaView updates representations collectively), so
+  // every rank reaches the reduction, with or without data.
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double local[2] = { inf, inf }; // min and -max, both reduced by MIN
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (scalars && scalars->GetNumberOfTuples() > 0)
+  {
+    double range[2];
+    scalars->GetRange(range, scalars->GetNumberOfComponents() == 1 ? 0 : -1);
+    local[0] = range[0];
+    local[1] = -range[1];
+  }
+  double global[2] = { local[0], local[1] };
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    controller->AllReduce(local, global, 2, vtkCommunicator::MIN_OP);
+  }
+  this->ScalarRange[0] = global[0];
+  this->ScalarRange[1] = -global[1];
 }
 
 void vtkPlumeVolumeRepresentation::SetLookupTable(vtkScalarsToColors* lut)
 {
-  this->Property->SetColor(vtkColorTransferFunction::SafeDownCast(lut));
+  this->ColorMap = vtkColorTransferFunction::SafeDownCast(lut);
+  this->Modified();
 }
 
 void vtkPlumeVolumeRepresentation::SetScalarOpacity(vtkPiecewiseFunction* pwf)
 {
-  this->Property->SetScalarOpacity(pwf);
+  this->OpacityFunction = pwf;
+  this->Modified();
 }
 
 void vtkPlumeVolumeRepresentation::SetScalarOpacityUnitDistance(double distance)
@@ -112,12 +148,49 @@ bool vtkPlumeVolumeRepresentation::PrepareRender(vtkDataObject* piece)
   {
     this->Mapper->SetScalarModeToUsePointFieldData();
     this->Mapper->SelectScalarArray(name);
+    this->Property->SetColor(this->ColorMap);
+    this->Property->SetScalarOpacity(this->OpacityFunction);
   }
   else
   {
     this->Mapper->SetScalarModeToDefault();
+    this->ApplyDefaultLook(vtkImageData::SafeDownCast(piece));
   }
   return piece != nullptr;
+}
+
+void vtkPlumeVolumeRepresentation::ApplyDefaultLook(vtkImageData* image)
+{
+  // ParaView picks an array and its colour map only for representations
+  // named "Volume" or "Slice" (vtkSMPVRepresentationProxy::
+  // SetRepresentationType); without this the first Apply of "Plume Volume"
+  // drew VTK's default grey ramp over 0-1024: a near-black box.
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!scalars || !(this->ScalarRange[0] <= this->ScalarRange[1]))
+  {
+    return;
+  }
+  // over all ranks (ReduceScalarRange): the same value, the same colour
+  double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
+  if (!(range[1] > range[0]))
+  {
+    range[1] = range[0] + 1.0;
+  }
+  if (range[0] != this->DefaultRange[0] || range[1] != this->DefaultRange[1])
+  {
+    std::copy(range, range + 2, this->DefaultRange);
+    // ParaView's default colour map ("Cool to Warm") and opacity ramp
+    this->DefaultColor->RemoveAllPoints();
+    this->DefaultColor->SetColorSpaceToDiverging();
+    this->DefaultColor->AddRGBPoint(range[0], 0.231373, 0.298039, 0.752941);
+    this->DefaultColor->AddRGBPoint(0.5 * (range[0] + range[1]), 0.865003, 0.865003, 0.865003);
+    this->DefaultColor->AddRGBPoint(range[1], 0.705882, 0.0156863, 0.14902);
+    this->DefaultOpacity->RemoveAllPoints();
+    this->DefaultOpacity->AddPoint(range[0], 0.0);
+    this->DefaultOpacity->AddPoint(range[1], 1.0);
+  }
+  this->Property->SetColor(this->DefaultColor);
+  this->Property->SetScalarOpacity(this->DefaultOpacity);
 }
 
 void vtkPlumeVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)

@@ -6,7 +6,12 @@
  * (LookupTable, a vtkColorTransferFunction), the opacity editor's function
  * (ScalarOpacityFunction) and ScalarOpacityUnitDistance go into the
  * vtkVolumeProperty the mapper reads, ColorArrayName picks the rendered point
- * array. The mapper itself is the proxy's "Mapper" subproxy (its properties
+ * array. Not coloured by an array (ParaView colours by one on its own only
+ * for the types it names "Volume" or "Slice", so a first Apply of "Plume
+ * Volume" comes without), it renders the active point scalars with
+ * ParaView's defaults for a volume: "Cool to Warm" and an opacity ramp from
+ * 0 to 1 over the scalars' range over all MPI ranks (the global
+ * controller's ranks, reduced in RequestData). The mapper itself is the proxy's "Mapper" subproxy (its properties
  * are generated from vtkPlumeVolumeMapper's parameter table).
  *
  * Input: vtkImageData, or a composite dataset whose leaves are images (each
@@ -25,8 +30,10 @@
 
 #include "PlumeParaViewRepresentationsModule.h" // For export macro
 #include "vtkPlumeRepresentation.h"
+#include "vtkNew.h"          // For vtkNew
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
+class vtkColorTransferFunction;
 class vtkImageData;
 class vtkPiecewiseFunction;
 class vtkPlumeVolumeMapper;
@@ -70,6 +77,16 @@ protected:
   vtkSmartPointer<vtkPlumeVolumeMapper> Mapper;
   vtkSmartPointer<vtkVolume> Volume;
   vtkSmartPointer<vtkVolumeProperty> Property;
+  vtkSmartPointer<vtkColorTransferFunction> ColorMap;        // ParaView's, when coloured by an array
+  vtkSmartPointer<vtkPiecewiseFunction> OpacityFunction;     // ParaView's
+  vtkNew<vtkColorTransferFunction> DefaultColor;             // the look without an array
+  vtkNew<vtkPiecewiseFunction> DefaultOpacity;
+  double DefaultRange[2] = { 0, 0 };
+  double ScalarRange[2] = { 1, 0 }; // the active scalars' range over all ranks; empty: min > max
+
+  void ReduceScalarRange(vtkImageData* image);
+
+  void ApplyDefaultLook(vtkImageData* image);
 
 private:
   vtkPlumeVolumeRepresentation(const vtkPlumeVolumeRepresentation&) = delete;
