@@ -16,6 +16,7 @@
 // haze; and the spot textured with room_gobo's image, against the untextured
 // spot and the march that reads the image at every sample.
 #include "plumeBenchmarks.h"
+#include "plumeAirlightTestUtil.h" // For airtest::Compare, the airlight tests' error measure
 #include "plumeTestSupport.h"
 
 #include "vtkPlumeAirlightPass.h"
@@ -186,7 +187,7 @@ test::FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer, vtk
 // haze plus its airlight, and the airlight alone.
 struct Expected
 {
-  std::vector<float> Frame, Airlight;
+  test::FloatImage Frame, Airlight;
 };
 
 Expected ReferenceFrame(
@@ -207,36 +208,20 @@ Expected ReferenceFrame(
     v = std::min(std::max(v, 0.0f), 1.0f);
   }
   Expected expected;
-  reference->ComputeImage(renderer, plain.Width, plain.Height, surface.data(), plain.Depth.data(), expected.Frame,
-    stride, &expected.Airlight);
+  expected.Frame.Width = expected.Airlight.Width = plain.Width;
+  expected.Frame.Height = expected.Airlight.Height = plain.Height;
+  reference->ComputeImage(renderer, plain.Width, plain.Height, surface.data(), plain.Depth.data(),
+    expected.Frame.RGBA, stride, &expected.Airlight.RGBA);
   return expected;
 }
 
 // RMS and max error of `image` against the reference's pixels, in units of
-// the reference airlight's range: error, error_max, error_pixels.
+// the reference airlight's range (the airlight tests' measure): error,
+// error_max, error_pixels.
 nlohmann::json ErrorAgainst(const test::FloatImage& image, const Expected& expected)
 {
-  double lo = HUGE_VAL, hi = -HUGE_VAL, sum = 0, worst = 0;
-  size_t count = 0;
-  for (size_t p = 0; p < expected.Frame.size() / 4; ++p)
-  {
-    if (std::isnan(expected.Frame[4 * p]))
-    {
-      continue;
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      lo = std::min(lo, double(expected.Airlight[4 * p + c]));
-      hi = std::max(hi, double(expected.Airlight[4 * p + c]));
-      const double d = std::fabs(double(image.RGBA[4 * p + c]) - expected.Frame[4 * p + c]);
-      sum += d * d;
-      worst = std::max(worst, d);
-      ++count;
-    }
-  }
-  const double range = hi > lo ? hi - lo : 1.0;
-  return { { "error", std::sqrt(sum / std::max<size_t>(count, 1)) / range }, { "error_max", worst / range },
-    { "error_pixels", count / 3 } };
+  const airtest::Error e = airtest::Compare(image, expected.Frame, expected.Airlight);
+  return { { "error", e.RMS }, { "error_max", e.Max }, { "error_pixels", e.Pixels } };
 }
 
 // Median time of `frames` renders after `warmups`; the camera turns by half
@@ -349,12 +334,12 @@ nlohmann::json RunSmokeVolume(const Context& context, vtkRenderWindow* window, v
   property->SetDiffuse(1.0);
   const test::FloatImage lit = RenderFloat(window, renderer, nullptr);
   double num = 0, den = 0;
-  for (size_t p = 0; p < expected.Frame.size() / 4; ++p)
+  for (size_t p = 0; p < expected.Frame.RGBA.size() / 4; ++p)
   {
-    for (int c = 0; c < 3 && !std::isnan(expected.Frame[4 * p]); ++c)
+    for (int c = 0; c < 3 && !std::isnan(expected.Frame.RGBA[4 * p]); ++c)
     {
       const double d = double(lit.RGBA[4 * p + c]) - dark.RGBA[4 * p + c];
-      num += d * (double(expected.Frame[4 * p + c]) - dark.RGBA[4 * p + c]);
+      num += d * (double(expected.Frame.RGBA[4 * p + c]) - dark.RGBA[4 * p + c]);
       den += d * d;
     }
   }
@@ -400,7 +385,7 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
     // "gobo", "gobo_march:N": the spot projects room_gobo's venetian-blind
     // slats (Examples/Scenes/room_gobo_slats.png, 64 x 64); then as "ours" / "march:N".
     vtkNew<vtkPNGReader> slats;
-    slats->SetFileName(PLUME_SCENES_DIR "/room_gobo_slats.png");
+    slats->SetFileName(PLUME_SOURCE_DIR "/Examples/Scenes/room_gobo_slats.png");
     slats->Update();
     vtkPlumeAirlightPass::SetLightTexture(
       vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(1)), slats->GetOutput());
