@@ -10,19 +10,32 @@
 // and the shadowed path (a cube map for the point light, a map for the spot)
 // against the march with the same shadow-map tests, and the share of a
 // shadowed frame spent rebuilding a map (the spot light moved every frame).
+// Two more peers: Plume's own smoke volume (vtkPlumeVolumeMapper, smoke mode,
+// on a constant-density grid: what a Plume user could do without the pass)
+// at its defaults and interactive settings, against ours in the same grey
+// haze; and the spot textured with room_gobo's image, against the untextured
+// spot and the march that reads the image at every sample.
 #include "plumeBenchmarks.h"
+#include "plumeAirlightTestUtil.h" // For airtest::Compare, the airlight tests' error measure
 #include "plumeTestSupport.h"
 
 #include "vtkPlumeAirlightPass.h"
 #include "vtkPlumeAirlightReference.h"
+#include "vtkPlumeVolumeMapper.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCubeSource.h"
+#include "vtkFloatArray.h"
 #include "vtkFramebufferPass.h"
+#include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkPNGReader.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPixelBufferObject.h"
+#include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderStepsPass.h"
@@ -30,9 +43,13 @@
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <functional>
 
 namespace plume
 {
@@ -49,6 +66,21 @@ std::vector<int> MarchSteps(bool quick)
 std::vector<int> ShadowMarchSteps(bool quick)
 {
   return quick ? std::vector<int>{ 64 } : std::vector<int>{ 64, 128, 256, 512 };
+}
+
+// The smoke-volume peer's settings "L:S:SS" (see RunSmokeVolume): the
+// mapper's defaults; its interactive ray lattice (InteractiveImageSampleDistance
+// 2); that lattice with 4x longer steps and shadow steps.
+// --quick: the last only (the defaults cost seconds per frame even at 128x128).
+std::vector<std::string> SmokeSettings(bool quick)
+{
+  return quick ? std::vector<std::string>{ "2:2:4" } : std::vector<std::string>{ "1:0.5:1", "2:0.5:1", "2:2:4" };
+}
+
+// The textured spot's brute-force peer (the image read at every sample).
+int GoboMarchSteps(bool quick)
+{
+  return quick ? 64 : 256;
 }
 
 void AddBox(vtkRenderer* renderer, const double b[6], double r, double g, double bl)
@@ -150,6 +182,182 @@ test::FloatImage RenderFloat(vtkRenderWindow* window, vtkRenderer* renderer, vtk
   return image;
 }
 
+// The reference's frame on every `stride`-th pixel (NaN elsewhere): the
+// surfaces of `plain` (the scene without the medium) dimmed by `medium`'s
+// haze plus its airlight, and the airlight alone.
+struct Expected
+{
+  test::FloatImage Frame, Airlight;
+};
+
+Expected ReferenceFrame(
+  vtkRenderer* renderer, vtkPlumeAirlightPass* medium, bool shadowed, const test::FloatImage& plain, int stride)
+{
+  vtkNew<vtkPlumeAirlightReference> reference;
+  reference->SetScattering(medium->GetScattering());
+  reference->SetAbsorption(medium->GetAbsorption());
+  reference->SetIntensityScale(medium->GetIntensityScale());
+  if (shadowed)
+  {
+    reference->SetOccluders(renderer); // exact ray-cast shadows
+  }
+  reference->SetLights(renderer);
+  std::vector<float> surface(plain.RGBA);
+  for (float& v : surface)
+  {
+    v = std::min(std::max(v, 0.0f), 1.0f);
+  }
+  Expected expected;
+  expected.Frame.Width = expected.Airlight.Width = plain.Width;
+  expected.Frame.Height = expected.Airlight.Height = plain.Height;
+  reference->ComputeImage(renderer, plain.Width, plain.Height, surface.data(), plain.Depth.data(),
+    expected.Frame.RGBA, stride, &expected.Airlight.RGBA);
+  return expected;
+}
+
+// RMS and max error of `image` against the reference's pixels, in units of
+// the reference airlight's range (the airlight tests' measure): error,
+// error_max, error_pixels.
+nlohmann::json ErrorAgainst(const test::FloatImage& image, const Expected& expected)
+{
+  const airtest::Error e = airtest::Compare(image, expected.Frame, expected.Airlight);
+  return { { "error", e.RMS }, { "error_max", e.Max }, { "error_pixels", e.Pixels } };
+}
+
+// Median time of `frames` renders after `warmups`; the camera turns by half
+// a degree each frame (a real re-render); `beforeFrame(f)` may change the scene.
+double TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, int frames, int warmups = 2,
+  const std::function<void(int)>& beforeFrame = nullptr)
+{
+  std::vector<double> times;
+  for (int f = 0; f < frames + warmups; ++f)
+  {
+    renderer->GetActiveCamera()->Azimuth(f % 2 ? 0.5 : -0.5);
+    if (beforeFrame)
+    {
+      beforeFrame(f);
+    }
+    const double t0 = Now();
+    window->Render();
+    window->WaitForCompletion();
+    if (f >= warmups)
+    {
+      times.push_back(Now() - t0);
+    }
+  }
+  return Median(times);
+}
+
+// The peer a Plume user has today: vtkPlumeVolumeMapper in smoke mode on a
+// constant-density grid over the room (and the camera: the haze lies between
+// it and the room) in the grey haze of the "grey" job (the mapper's
+// extinction is one scalar, so it cannot do a coloured one), lit by the
+// scene's two lights and self-shadowed by its shadow rays. Its extinction
+// is the haze's kt and its colour the albedo ks/kt, ambient 0; the mapper
+// treats lights as directional (no inverse-square falloff, no cone), so its
+// brightness cannot match the point source's everywhere: its diffuse factor
+// is the single scale that fits the reference best (least squares over the
+// error lattice, from a frame at diffuse 0 and one at 1: the frame is affine
+// in it), the most favourable choice for the peer. `setting`
+// "L:S:SS": ray lattice L (ImageSampleDistance; 2 is the mapper's
+// interactive default), step S and shadow step SS in voxels (defaults 0.5, 1).
+nlohmann::json RunSmokeVolume(const Context& context, vtkRenderWindow* window, vtkRenderer* renderer,
+  const std::string& setting, int frames)
+{
+  const double spacing = 0.2; // world units: 61 x 37 x 56 nodes
+  const double lo[3] = { -6, -0.1, -4.1 }, hi[3] = { 6, 7, 7 };
+  vtkNew<vtkImageData> grid;
+  int dims[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    dims[a] = static_cast<int>(std::ceil((hi[a] - lo[a]) / spacing)) + 1;
+  }
+  grid->SetDimensions(dims);
+  grid->SetOrigin(lo[0], lo[1], lo[2]);
+  grid->SetSpacing(spacing, spacing, spacing);
+  vtkNew<vtkFloatArray> density;
+  density->SetName("density");
+  density->SetNumberOfValues(grid->GetNumberOfPoints());
+  density->Fill(1.0f);
+  grid->GetPointData()->SetScalars(density);
+
+  vtkNew<vtkPlumeAirlightPass> medium; // holds the haze's coefficients for the reference
+  SetMedium(medium, true);
+  const double ks = medium->GetScattering()[0], kt = ks + medium->GetAbsorption()[0];
+  vtkNew<vtkPlumeVolumeMapper> mapper;
+  mapper->SetInputData(grid);
+  mapper->SetRenderMode(vtkPlumeVolumeMapper::RENDER_SMOKE);
+  mapper->SetTransferFunctionRange(0.0, 2.0); // the data's range is a single value
+  mapper->SetOpacityUnitDistance(1.0);        // opacity per world unit: sigma = kt
+  int lattice = 1;
+  double step = 0.5, shadowStep = 1.0;
+  std::sscanf(setting.c_str(), "%d:%lf:%lf", &lattice, &step, &shadowStep);
+  mapper->SetImageSampleDistance(lattice);
+  mapper->SetSampleDistance(step);
+  mapper->SetShadowSampleDistance(shadowStep);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, ks / kt, ks / kt, ks / kt);
+  color->AddRGBPoint(2.0, ks / kt, ks / kt, ks / kt);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 1.0 - std::exp(-kt));
+  opacity->AddPoint(2.0, 1.0 - std::exp(-kt));
+  vtkNew<vtkVolumeProperty> property;
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetInterpolationTypeToLinear();
+  mapper->ApplyDefaultLighting(property);
+  property->SetAmbient(0.0); // single scattering of the lamps only
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+
+  // Drawn into a framebuffer copied to the window, as ours is: in this
+  // window's own framebuffer the mapper cannot copy the opaque depth (Mesa:
+  // "depth attachment format mismatch" in the blit) and its rays would not
+  // stop at the room's surfaces. Timed first: the frame's cost does not
+  // depend on the brightness fitted below.
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkFramebufferPass> framebuffer;
+  framebuffer->SetDelegatePass(steps);
+  renderer->SetPass(framebuffer);
+  const double frameTime = TimeFrames(window, renderer, frames, 1);
+  renderer->SetPass(nullptr);
+  framebuffer->ReleaseGraphicsResources(window);
+  // The brightness scale, then the error at that scale.
+  const int stride = context.Quick ? 4 : 16;
+  volume->VisibilityOff();
+  const Expected expected = ReferenceFrame(renderer, medium, false, RenderFloat(window, renderer, nullptr), stride);
+  volume->VisibilityOn();
+  property->SetDiffuse(0.0);
+  const test::FloatImage dark = RenderFloat(window, renderer, nullptr);
+  property->SetDiffuse(1.0);
+  const test::FloatImage lit = RenderFloat(window, renderer, nullptr);
+  double num = 0, den = 0;
+  for (size_t p = 0; p < expected.Frame.RGBA.size() / 4; ++p)
+  {
+    for (int c = 0; c < 3 && !std::isnan(expected.Frame.RGBA[4 * p]); ++c)
+    {
+      const double d = double(lit.RGBA[4 * p + c]) - dark.RGBA[4 * p + c];
+      num += d * (double(expected.Frame.RGBA[4 * p + c]) - dark.RGBA[4 * p + c]);
+      den += d * d;
+    }
+  }
+  const double scale = den > 0 ? std::max(num / den, 0.0) : 0.0;
+  // the frame at that diffuse factor (with ambient 0 the radiance is linear
+  // in it, and the brightest sample stays below 1, so the rays' termination
+  // does not change: checked once against a render at `scale`, same error)
+  test::FloatImage image = dark;
+  for (size_t k = 0; k < image.RGBA.size(); ++k)
+  {
+    image.RGBA[k] = static_cast<float>(dark.RGBA[k] + scale * (double(lit.RGBA[k]) - dark.RGBA[k]));
+  }
+  nlohmann::json result = { { "frame_s", frameTime }, { "peak_rss_mb", PeakRSSMB() }, { "diffuse", scale },
+    { "grid", { dims[0], dims[1], dims[2] } }, { "lattice", mapper->GetLastImageSampleDistance() } };
+  result.update(ErrorAgainst(image, expected));
+  return result;
+}
+
 nlohmann::json RunJob(const Context& context, const std::string& jobName)
 {
   // "NAME@S": the job at S x S (the fixed vs per-pixel split of the pass's cost).
@@ -167,6 +375,22 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
   renderer->SetBackground(0.1, 0.15, 0.3);
   window->AddRenderer(renderer);
   BuildScene(renderer);
+  if (job.rfind("smoke:", 0) == 0)
+  {
+    // a slow peer (seconds per frame at 512x512): one warm-up, two frames
+    return RunSmokeVolume(context, window, renderer, job.substr(6), context.Quick ? 1 : 2);
+  }
+  if (job.rfind("gobo", 0) == 0)
+  {
+    // "gobo", "gobo_march:N": the spot projects room_gobo's venetian-blind
+    // slats (Examples/Scenes/room_gobo_slats.png, 64 x 64); then as "ours" / "march:N".
+    vtkNew<vtkPNGReader> slats;
+    slats->SetFileName(PLUME_SOURCE_DIR "/Examples/Scenes/room_gobo_slats.png");
+    slats->Update();
+    vtkPlumeAirlightPass::SetLightTexture(
+      vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(1)), slats->GetOutput());
+    job = job == "gobo" ? "ours" : job.substr(5);
+  }
   if (job.rfind("lights:", 0) == 0)
   {
     // "lights:N": the scene's two lights plus N - 2 weak point lights under
@@ -203,6 +427,13 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
   {
     pass->SetMarchSteps(std::stoi(job.substr(13)));
   }
+  if (job.rfind("shadow_steps:", 0) == 0)
+  {
+    // ours shadowed with N march steps instead of 64: with N = 8, what a march
+    // that skipped every run of 8 steps (min-max shadow mipmaps, all runs
+    // decided) would cost at best
+    pass->SetShadowSteps(std::stoi(job.substr(13)));
+  }
   if (job.rfind("down:", 0) == 0)
   {
     // "down:D" or "down:D:TOL": a low-resolution airlight, upsampled with tolerance TOL.
@@ -231,24 +462,14 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
     copy->SetDelegatePass(steps);
     renderer->SetPass(copy);
   }
-  std::vector<double> times;
   vtkLight* spot = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(1));
-  for (int f = 0; f < frames + 2; ++f)
-  {
-    renderer->GetActiveCamera()->Azimuth(f % 2 ? 0.5 : -0.5); // a real re-render
+  const double frameTime = TimeFrames(window, renderer, frames, 2, [&](int f) {
     if (job == "shadow_rebake")
     {
       spot->SetPosition(2.5, 3.5, f % 2 ? -1.5 : -1.500001); // a changed light: its map is rebuilt
     }
-    const double t0 = Now();
-    window->Render();
-    window->WaitForCompletion();
-    if (f >= 2)
-    {
-      times.push_back(Now() - t0);
-    }
-  }
-  nlohmann::json result = { { "frame_s", Median(times) }, { "peak_rss_mb", PeakRSSMB() },
+  });
+  nlohmann::json result = { { "frame_s", frameTime }, { "peak_rss_mb", PeakRSSMB() },
     { "shadowed_lights", pass->GetNumberOfShadowedLights() }, { "bakes", pass->GetNumberOfShadowMapBakes() },
     { "light_groups", pass->GetNumberOfLightGroups() } };
   if (job == "opaque" || job == "shadow_rebake" || job == "floor" || job == "copy")
@@ -261,44 +482,7 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
   const int stride = (context.Quick ? 4 : 16) * (shadowed ? 2 : 1);
   const test::FloatImage plain = RenderFloat(window, renderer, nullptr);
   const test::FloatImage image = RenderFloat(window, renderer, pass);
-  vtkNew<vtkPlumeAirlightReference> reference;
-  reference->SetScattering(pass->GetScattering());
-  reference->SetAbsorption(pass->GetAbsorption());
-  reference->SetIntensityScale(pass->GetIntensityScale());
-  if (shadowed)
-  {
-    reference->SetOccluders(renderer); // exact ray-cast shadows
-  }
-  reference->SetLights(renderer);
-  std::vector<float> surface(plain.RGBA), expected, airlight;
-  for (float& v : surface)
-  {
-    v = std::min(std::max(v, 0.0f), 1.0f);
-  }
-  reference->ComputeImage(
-    renderer, size, size, surface.data(), plain.Depth.data(), expected, stride, &airlight);
-  double lo = HUGE_VAL, hi = -HUGE_VAL, sum = 0, worst = 0;
-  size_t count = 0;
-  for (size_t p = 0; p < expected.size() / 4; ++p)
-  {
-    if (std::isnan(expected[4 * p]))
-    {
-      continue;
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      lo = std::min(lo, double(airlight[4 * p + c]));
-      hi = std::max(hi, double(airlight[4 * p + c]));
-      const double d = std::fabs(double(image.RGBA[4 * p + c]) - expected[4 * p + c]);
-      sum += d * d;
-      worst = std::max(worst, d);
-      ++count;
-    }
-  }
-  const double range = hi > lo ? hi - lo : 1.0;
-  result["error"] = std::sqrt(sum / std::max<size_t>(count, 1)) / range;
-  result["error_max"] = worst / range;
-  result["error_pixels"] = count / 3;
+  result.update(ErrorAgainst(image, ReferenceFrame(renderer, pass, shadowed, plain, stride)));
   return result;
 }
 
@@ -316,6 +500,13 @@ std::vector<std::string> Jobs(bool quick)
   {
     jobs.push_back("shadow_march:" + std::to_string(n));
   }
+  for (const std::string& setting : SmokeSettings(quick))
+  {
+    jobs.push_back("smoke:" + setting);
+  }
+  jobs.push_back("shadow_steps:8");
+  jobs.push_back("gobo");
+  jobs.push_back("gobo_march:" + std::to_string(GoboMarchSteps(quick)));
   return jobs;
 }
 
@@ -387,6 +578,18 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
         line["equal_error"] = true;
       }
       lines.push_back(line);
+    }
+    const auto eight = results.find("shadow_steps:8");
+    if (eight != results.end())
+    {
+      const double eightTime = eight->second.value("frame_s", 0.0);
+      lines.push_back({ { "bench", "airlight" },
+        { "case", size + " shadowed point+spot, 8 march steps (the bound for skipping runs of 8)" },
+        { "ours_s", shadowTime }, { "peer", "ours with ShadowSteps 8" }, { "peer_s", eightTime },
+        { "ratio", shadowTime > 0 ? eightTime / shadowTime : 0.0 }, { "error", shadowError },
+        { "peer_error", eight->second.value("error", 0.0) }, { "error_max", shadow->second.value("error_max", 0.0) },
+        { "peer_error_max", eight->second.value("error_max", 0.0) },
+        { "peak_rss_mb", shadow->second.value("peak_rss_mb", 0.0) } });
     }
     const auto rebake = results.find("shadow_rebake");
     if (rebake != results.end())
@@ -485,6 +688,62 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
       { "peak_rss_mb", floorJob->second.value("peak_rss_mb", 0.0) } });
   }
   const auto grey = results.find("grey");
+  // Plume's smoke volume (vtkPlumeVolumeMapper) against ours in the same grey haze.
+  for (const std::string& setting : SmokeSettings(quick))
+  {
+    const auto peer = results.find("smoke:" + setting);
+    if (grey == results.end() || peer == results.end())
+    {
+      continue;
+    }
+    const double greyTime = grey->second.value("frame_s", 0.0);
+    const double peerTime = peer->second.value("frame_s", 0.0);
+    const auto dims = peer->second.value("grid", std::vector<int>{ 0, 0, 0 });
+    const std::string grid =
+      std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]);
+    const std::string name = setting == "1:0.5:1" ? "defaults" : "interactive " + setting;
+    lines.push_back({ { "bench", "airlight" }, { "case", size + " grey haze point+spot vs Plume's smoke volume, " + name },
+      { "ours_s", greyTime },
+      { "peer", "vtkPlumeVolumeMapper smoke mode, constant density on " + grid +
+          ", lattice:step:shadow step " + setting + " (brightness fitted)" },
+      { "peer_s", peerTime }, { "ratio", greyTime > 0 ? peerTime / greyTime : 0.0 },
+      { "error", grey->second.value("error", 0.0) }, { "peer_error", peer->second.value("error", 0.0) },
+      { "error_max", grey->second.value("error_max", 0.0) },
+      { "peer_error_max", peer->second.value("error_max", 0.0) },
+      { "peer_diffuse", peer->second.value("diffuse", 0.0) }, { "peer_lattice", peer->second.value("lattice", 0) },
+      { "peak_rss_mb", grey->second.value("peak_rss_mb", 0.0) },
+      { "peer_peak_rss_mb", peer->second.value("peak_rss_mb", 0.0) } });
+  }
+  // The textured spot: against the same spot untextured, and the march that reads the image per sample.
+  const auto gobo = results.find("gobo");
+  if (gobo != results.end())
+  {
+    const double goboTime = gobo->second.value("frame_s", 0.0);
+    nlohmann::json line = { { "bench", "airlight" },
+      { "case", size + " point+spot, the spot textured (room_gobo's slats, 64x64)" }, { "ours_s", goboTime },
+      { "peer", "ours, the same spot untextured" }, { "peer_s", oursTime },
+      { "ratio", goboTime > 0 ? oursTime / goboTime : 0.0 }, { "added_ms", 1e3 * (goboTime - oursTime) },
+      { "error", gobo->second.value("error", 0.0) }, { "peer_error", oursError },
+      { "error_max", gobo->second.value("error_max", 0.0) },
+      { "peer_error_max", ours->second.value("error_max", 0.0) },
+      { "peak_rss_mb", gobo->second.value("peak_rss_mb", 0.0) },
+      { "peer_peak_rss_mb", ours->second.value("peak_rss_mb", 0.0) } };
+    lines.push_back(line);
+    const std::string n = std::to_string(GoboMarchSteps(quick));
+    const auto march = results.find("gobo_march:" + n);
+    if (march != results.end())
+    {
+      const double marchTime = march->second.value("frame_s", 0.0);
+      lines.push_back({ { "bench", "airlight" },
+        { "case", size + " point+spot, the spot textured (room_gobo's slats), march " + n }, { "ours_s", goboTime },
+        { "peer", "shader ray march reading the image per sample, " + n + " steps" }, { "peer_s", marchTime },
+        { "ratio", goboTime > 0 ? marchTime / goboTime : 0.0 }, { "error", gobo->second.value("error", 0.0) },
+        { "peer_error", march->second.value("error", 0.0) }, { "error_max", gobo->second.value("error_max", 0.0) },
+        { "peer_error_max", march->second.value("error_max", 0.0) },
+        { "peak_rss_mb", gobo->second.value("peak_rss_mb", 0.0) },
+        { "peer_peak_rss_mb", march->second.value("peak_rss_mb", 0.0) } });
+    }
+  }
   if (grey != results.end())
   {
     const double greyTime = grey->second.value("frame_s", 0.0);
@@ -511,7 +770,7 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
 void RegisterAirlight(std::map<std::string, Benchmark>& registry)
 {
   Benchmark b;
-  b.Description = "airlight pass (closed form) vs brute-force shader ray marching of the same integral";
+  b.Description = "airlight pass (closed form) vs brute-force shader ray marching of the same integral and Plume's smoke volume";
   b.Jobs = Jobs;
   b.Run = RunJob;
   b.Report = Report;
