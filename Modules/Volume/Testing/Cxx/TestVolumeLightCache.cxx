@@ -1,0 +1,93 @@
+// Smoke mode's cached lighting (LightCache): the transmittance towards each
+// light kept per grid node and interpolated at the samples, instead of a
+// shadow ray per sample.
+//  - accuracy: within TestVolumeAccuracy's smoke bounds against the CPU
+//    reference, and close to the shadow-ray image (which is always current);
+//  - no stale lighting: after a change of the light's direction, the opacity
+//    transfer function, the data or the shadow step the cache is recomputed
+//    once and the image again matches the shadow-ray image; a camera move
+//    under a scene light recomputes nothing.
+#include "plumeVolumeTestUtil.h"
+
+#include "vtkDataArray.h"
+#include "vtkLight.h"
+
+int TestVolumeLightCache(int, char*[])
+{
+  using namespace plumevolumetest;
+  int failures = 0;
+  Scene s = MakeScene(SmokeField(32), 96, 80);
+  s.Mapper->SmokeOn();
+  s.Mapper->SetShadowSampleDistance(0.5);
+  s.Volume->GetProperty()->SetAmbient(0.25);
+  s.Volume->GetProperty()->SetDiffuse(0.9);
+  vtkNew<vtkLight> light; // a side light, so self-shadowing shows
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(1.5, 1.0, 0.2);
+  light->SetFocalPoint(0.5, 0.5, 0.5);
+  light->SetPositional(false);
+  s.Renderer->AddLight(light);
+  s.Renderer->AutomaticLightCreationOff();
+
+  // the cached image against the reference, then against shadow rays
+  plume::test::FloatImage cached;
+  const Result r = CompareWithReference(s, vtkPlumeVolumeReference::SMOKE, 0.25, &cached);
+  failures += Check("smoke, light cache vs reference", r, 0.008, 0.06);
+  const int first = s.Mapper->GetLightVolumeUpdateCount();
+  const bool used = s.Mapper->GetLastLightCache();
+  // cached vs shadow rays, after `what` changed: `updates` recomputations expected
+  const double tolerance = 0.004; // RMS over the image
+  const double maxTolerance = 0.03;
+  int expectedCount = first;
+  const auto compare = [&](const char* what, int updates) {
+    expectedCount += updates;
+    const plume::test::FloatImage withCache = plume::test::ReadBack(s.Window);
+    const int count = s.Mapper->GetLightVolumeUpdateCount();
+    s.Mapper->LightCacheOff();
+    const plume::test::FloatImage rays = plume::test::ReadBack(s.Window);
+    s.Mapper->LightCacheOn();
+    const plume::test::ImageError e = plume::test::Compare(withCache, rays);
+    const bool ok = count == expectedCount && e.RMS <= tolerance && e.Max <= maxTolerance &&
+      plume::test::GLErrors(s.Window).empty();
+    std::printf("%-40s light volume computed %d times (%d); cache vs shadow rays RMS %.5f (<= %.3f) max %.4f (<= %.2f)%s\n",
+      what, count, expectedCount, e.RMS, tolerance, e.Max, maxTolerance, ok ? "" : "  FAIL");
+    failures += ok ? 0 : 1;
+    return withCache;
+  };
+  const bool firstOk = used && first == 1;
+  std::printf("%-40s used %d, computed %d times (1)%s\n", "first render", used ? 1 : 0, first, firstOk ? "" : "  FAIL");
+  failures += firstOk ? 0 : 1;
+  compare("same view", 0);
+  // a scene light stays put relative to the volume: nothing to recompute
+  s.Renderer->GetActiveCamera()->Azimuth(35);
+  s.Renderer->ResetCameraClippingRange();
+  compare("camera moved", 0);
+  light->SetPosition(-0.8, 1.4, 1.1);
+  compare("light moved", 1);
+  vtkPiecewiseFunction* opacity = s.Volume->GetProperty()->GetScalarOpacity();
+  double range[2];
+  s.Image->GetPointData()->GetScalars()->GetRange(range);
+  opacity->AddPoint(range[0] + 0.5 * (range[1] - range[0]), 0.9);
+  compare("opacity changed", 1);
+  vtkDataArray* values = s.Image->GetPointData()->GetScalars();
+  {
+    // mirrored along x: same range, the shadows move
+    int dims[3];
+    s.Image->GetDimensions(dims);
+    for (vtkIdType row = 0; row < vtkIdType(dims[1]) * dims[2]; ++row)
+    {
+      for (int i = 0; i < dims[0] / 2; ++i)
+      {
+        const vtkIdType a = row * dims[0] + i, b = row * dims[0] + dims[0] - 1 - i;
+        const double va = values->GetTuple1(a);
+        values->SetTuple1(a, values->GetTuple1(b));
+        values->SetTuple1(b, va);
+      }
+    }
+  }
+  values->Modified();
+  compare("data changed", 1);
+  s.Mapper->SetShadowSampleDistance(1.0);
+  compare("shadow step changed", 1);
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
