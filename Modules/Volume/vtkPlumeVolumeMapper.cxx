@@ -1485,7 +1485,8 @@ bool vtkPlumeVolumeMapper::Internals::UpdateLightVolume(vtkPlumeVolumeMapper* se
   vtkVolumeProperty* property = frame.Property;
   std::vector<double> key = { double(this->Scalars->GetDataVersion()), double(self->TableCount),
     frame.ScaleBias[0], frame.ScaleBias[1], self->ShadowSampleDistance,
-    double(property->GetInterpolationType()), this->Scalars->GetMasked() ? 1.0 : 0.0 };
+    double(property->GetInterpolationType()), this->Scalars->GetMasked() ? 1.0 : 0.0,
+    frame.SkipTransparent ? 1.0 : 0.0 }; // (then only nodes of non-transparent blocks are marched)
   key.insert(key.end(), frame.LightIndexDirs.begin(), frame.LightIndexDirs.end());
   key.insert(key.end(), frame.LightWorldPerIndex.begin(), frame.LightWorldPerIndex.end());
   vtkShaderProgram* program = frame.LightProgram;

@@ -329,6 +329,25 @@ void main()
   {
     vec3 node = vec3(floor(gl_FragCoord.xy), LightSlice);
     vec4 transmittance = vec4(1.0);
+//PLUME::ENDIF
+//PLUME::IF LIGHT_VOLUME+SKIP_TRANSPARENT
+    // a sample's cell lies in one block, whose nodes (shared faces included)
+    // are all it interpolates; where every block holding this node is
+    // transparent, no sample with extinction reads it: no march
+    bool needed = false;
+    for (int c = 0; c < 8; ++c)
+    {
+      vec3 q = node - vec3(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1));
+      ivec3 cell = clamp(ivec3(floor(q / BlockSize)), ivec3(0), ivec3(BlockDims) - 1);
+      needed = needed || texelFetch(Occupancy, cell, 0).r != 0.0;
+    }
+    if (!needed)
+    {
+      gl_FragData[0] = transmittance;
+      return;
+    }
+//PLUME::ENDIF
+//PLUME::IF LIGHT_VOLUME
     for (int l = 0; l < PLUME_LIGHTS; ++l)
     {
       transmittance[l] = lightTransmittance(node, l);

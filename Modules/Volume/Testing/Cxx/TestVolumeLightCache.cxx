@@ -3,6 +3,8 @@
 // shadow ray per sample.
 //  - accuracy: within TestVolumeAccuracy's smoke bounds against the CPU
 //    reference, and close to the shadow-ray image (which is always current);
+//  - with empty-space skipping the nodes of transparent blocks are not
+//    marched, and the image is the one with every node marched;
 //  - no stale lighting: after a change of the light's direction, the opacity
 //    transfer function, the data or the shadow step the cache is recomputed
 //    once and the image again matches the shadow-ray image; a camera move
@@ -58,6 +60,23 @@ int TestVolumeLightCache(int, char*[])
   std::printf("%-40s used %d, computed %d times (1)%s\n", "first render", used ? 1 : 0, first, firstOk ? "" : "  FAIL");
   failures += firstOk ? 0 : 1;
   compare("same view", 0);
+  {
+    // with empty-space skipping only the nodes of non-transparent blocks are
+    // marched: the same image as with every node marched (skipping off)
+    const double empty = s.Mapper->GetEmptyBlockFraction();
+    const plume::test::FloatImage skipped = plume::test::ReadBack(s.Window);
+    s.Mapper->EmptySpaceSkippingOff();
+    const plume::test::FloatImage all = plume::test::ReadBack(s.Window);
+    s.Mapper->EmptySpaceSkippingOn();
+    const int count = s.Mapper->GetLightVolumeUpdateCount();
+    const plume::test::ImageError e = plume::test::Compare(skipped, all);
+    const bool ok = empty > 0.1 && count == expectedCount + 1 && e.Max <= 0.5 / 255;
+    std::printf("%-40s empty blocks %.0f%% (> 10%%: skipping on), computed %d times (%d); vs every node marched: max %.5f (<= 1/510)%s\n",
+      "transparent blocks' nodes", 100 * empty, count, expectedCount + 1, e.Max, ok ? "" : "  FAIL");
+    failures += ok ? 0 : 1;
+    expectedCount += 1;
+  }
+  compare("skipping on again", 1);
   // a scene light stays put relative to the volume: nothing to recompute
   s.Renderer->GetActiveCamera()->Azimuth(35);
   s.Renderer->ResetCameraClippingRange();
@@ -89,5 +108,27 @@ int TestVolumeLightCache(int, char*[])
   compare("data changed", 1);
   s.Mapper->SetShadowSampleDistance(1.0);
   compare("shadow step changed", 1);
+  {
+    // only the dense cores are visible (opacity from 40 % of the range up):
+    // most blocks are transparent and the occupied ones border them inside
+    // the smoke, where the skipped nodes' neighbours are in shadow
+    Scene t = MakeScene(SmokeField(32), 96, 80);
+    t.Mapper->SmokeOn();
+    t.Mapper->SetShadowSampleDistance(0.5);
+    t.Renderer->AddLight(light);
+    t.Renderer->AutomaticLightCreationOff();
+    double r[2];
+    t.Image->GetPointData()->GetScalars()->GetRange(r);
+    SetTransferFunctions(t.Volume->GetProperty(), r[0] + 0.4 * (r[1] - r[0]), r[1], 1.0, 0.01 * t.Image->GetLength());
+    const plume::test::FloatImage skipped = plume::test::ReadBack(t.Window);
+    const double empty = t.Mapper->GetEmptyBlockFraction();
+    t.Mapper->EmptySpaceSkippingOff();
+    const plume::test::FloatImage all = plume::test::ReadBack(t.Window);
+    const plume::test::ImageError e = plume::test::Compare(skipped, all);
+    const bool ok = empty > 0.5 && e.Max <= 0.5 / 255 && t.Mapper->GetLightVolumeUpdateCount() == 2;
+    std::printf("%-40s empty blocks %.0f%% (> 50%%); vs every node marched: max %.5f (<= 1/510)%s\n",
+      "dense cores only", 100 * empty, e.Max, ok ? "" : "  FAIL");
+    failures += ok ? 0 : 1;
+  }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
