@@ -13,23 +13,14 @@
 
 #include "vtkDataArray.h"
 #include "vtkLight.h"
+#include "vtkLightCollection.h"
 
 int TestVolumeLightCache(int, char*[])
 {
   using namespace plumevolumetest;
   int failures = 0;
-  Scene s = MakeScene(SmokeField(32), 96, 80);
-  s.Mapper->SmokeOn();
-  s.Mapper->SetShadowSampleDistance(0.5);
-  s.Volume->GetProperty()->SetAmbient(0.25);
-  s.Volume->GetProperty()->SetDiffuse(0.9);
-  vtkNew<vtkLight> light; // a side light, so self-shadowing shows
-  light->SetLightTypeToSceneLight();
-  light->SetPosition(1.5, 1.0, 0.2);
-  light->SetFocalPoint(0.5, 0.5, 0.5);
-  light->SetPositional(false);
-  s.Renderer->AddLight(light);
-  s.Renderer->AutomaticLightCreationOff();
+  Scene s = SideLitSmoke();
+  vtkLight* light = vtkLight::SafeDownCast(s.Renderer->GetLights()->GetItemAsObject(0));
 
   // the cached image against the reference, then against shadow rays
   plume::test::FloatImage cached;
@@ -112,11 +103,7 @@ int TestVolumeLightCache(int, char*[])
     // only the dense cores are visible (opacity from 40 % of the range up):
     // most blocks are transparent and the occupied ones border them inside
     // the smoke, where the skipped nodes' neighbours are in shadow
-    Scene t = MakeScene(SmokeField(32), 96, 80);
-    t.Mapper->SmokeOn();
-    t.Mapper->SetShadowSampleDistance(0.5);
-    t.Renderer->AddLight(light);
-    t.Renderer->AutomaticLightCreationOff();
+    Scene t = SideLitSmoke();
     double r[2];
     t.Image->GetPointData()->GetScalars()->GetRange(r);
     SetTransferFunctions(t.Volume->GetProperty(), r[0] + 0.4 * (r[1] - r[0]), r[1], 1.0, 0.01 * t.Image->GetLength());
