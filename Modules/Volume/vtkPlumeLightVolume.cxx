@@ -22,18 +22,32 @@ vtkTextureObject* vtkPlumeLightVolume::GetTextureObject()
   return this->Texture->GetHandle() ? this->Texture.GetPointer() : nullptr;
 }
 
-bool vtkPlumeLightVolume::Update(vtkOpenGLRenderWindow* window, const int dims[3], int lights,
-  const std::vector<double>& key, const std::function<void(int)>& drawSlice)
+std::vector<double> vtkPlumeLightVolume::FullKey(const int dims[3], int lights, const std::vector<double>& key)
 {
   // (three channels are not colour-renderable everywhere: four then)
   const int components = lights == 3 ? 4 : lights;
   std::vector<double> full = { double(dims[0]), double(dims[1]), double(dims[2]), double(components) };
   full.insert(full.end(), key.begin(), key.end());
-  vtkTextureObject* texture = this->Texture;
-  if (texture->GetHandle() && texture->GetContext() == window && full == this->Key)
+  return full;
+}
+
+bool vtkPlumeLightVolume::IsStale(
+  vtkOpenGLRenderWindow* window, const int dims[3], int lights, const std::vector<double>& key) const
+{
+  return !this->Texture->GetHandle() || this->Texture->GetContext() != window ||
+    FullKey(dims, lights, key) != this->Key;
+}
+
+bool vtkPlumeLightVolume::Update(vtkOpenGLRenderWindow* window, const int dims[3], int lights,
+  const std::vector<double>& key, const std::function<void(int)>& drawSlice)
+{
+  if (!this->IsStale(window, dims, lights, key))
   {
     return true;
   }
+  const int components = lights == 3 ? 4 : lights;
+  const std::vector<double> full = FullKey(dims, lights, key);
+  vtkTextureObject* texture = this->Texture;
   this->Key.clear();
   if (!texture->GetHandle() || texture->GetContext() != window ||
     int(texture->GetWidth()) != dims[0] || int(texture->GetHeight()) != dims[1] ||

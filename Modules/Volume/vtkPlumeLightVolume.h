@@ -45,6 +45,9 @@ public:
   bool Update(vtkOpenGLRenderWindow* window, const int dims[3], int lights, const std::vector<double>& key,
     const std::function<void(int)>& drawSlice);
 
+  /** Whether Update() with these arguments would recompute the texture. */
+  bool IsStale(vtkOpenGLRenderWindow* window, const int dims[3], int lights, const std::vector<double>& key) const;
+
   /** The texture (linear filtering, clamp to edge); null before Update. */
   vtkTextureObject* GetTextureObject();
 
@@ -63,6 +66,7 @@ protected:
   vtkNew<vtkTextureObject> Texture;
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   std::vector<double> Key; // what the texture holds (empty: nothing)
+  static std::vector<double> FullKey(const int dims[3], int lights, const std::vector<double>& key);
   int UpdateCount = 0;
 
 private:

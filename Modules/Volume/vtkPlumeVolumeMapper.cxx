@@ -134,6 +134,7 @@ public:
   vtkNew<vtkOpenGLFramebufferObject> LatticeFBO;
   vtkNew<vtkPlumeShaderProgramCache> Programs;
   vtkNew<vtkPlumeLightVolume> LightVolume; // smoke: transmittance towards each light per node
+  std::vector<double> LastLightKey;         // the light volume's inputs at the previous frame
   vtkOpenGLRenderWindow* Window = nullptr;
   double AutomaticBudgetMB = 0; // of Window
   int FrameCount = 0; // frames drawn (animated jitter)
@@ -179,6 +180,7 @@ public:
     std::vector<float> LightIndexDirs;      // smoke: unit directions towards the lights, index space
     std::vector<float> LightWorldPerIndex; // and the world length of one index unit along each
     bool LightCache = false;               // smoke: samples read the light volume
+    std::vector<double> LightKey;          // what the light volume depends on
     vtkPlumeShaderFeatures LightFeatures;  // its slices' program
     vtkShaderProgram* LightProgram = nullptr;
     // ray lattice and programs
@@ -224,6 +226,7 @@ public:
     this->LatticeFBO->ReleaseGraphicsResources(window);
     this->Programs->ReleaseGraphicsResources(window);
     this->LightVolume->ReleaseGraphicsResources(window);
+    this->LastLightKey.clear();
     this->Window = nullptr;
     this->AutomaticBudgetMB = 0;
   }
@@ -1150,6 +1153,20 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
     const double bytes = GetTextureBytes(frame.Dims, this->Scalars->GetMasked(), false) +
       vtkPlumeLightVolume::GetTextureBytes(frame.Dims, frame.NLights);
     frame.LightCache = self->LightCache && bytes <= self->EffectiveTextureMemoryBudgetMB * Megabyte;
+    vtkVolumeProperty* property = frame.Property;
+    std::vector<double>& key = frame.LightKey;
+    key = { double(this->Scalars->GetDataVersion()), double(self->TableCount), frame.ScaleBias[0],
+      frame.ScaleBias[1], self->ShadowSampleDistance, double(property->GetInterpolationType()),
+      this->Scalars->GetMasked() ? 1.0 : 0.0,
+      frame.SkipTransparent ? 1.0 : 0.0 }; // (then only nodes of non-transparent blocks are marched)
+    key.insert(key.end(), frame.LightIndexDirs.begin(), frame.LightIndexDirs.end());
+    key.insert(key.end(), frame.LightWorldPerIndex.begin(), frame.LightWorldPerIndex.end());
+    // inputs that changed since the previous frame (a moving or camera-following
+    // light while the camera moves) would remake the cache every frame, which
+    // costs more than shadow rays at 256^3: shadow rays until they hold still
+    const bool changing = !this->LastLightKey.empty() && key != this->LastLightKey;
+    this->LastLightKey = key;
+    frame.LightCache = frame.LightCache && !(changing && this->LightVolume->IsStale(renWin, frame.Dims, frame.NLights, key));
     features.Enable(frame.LightCache ? "LIGHT_CACHE" : "SHADOW_RAYS");
     self->LastLightCache = frame.LightCache;
     if (frame.LightCache)
@@ -1482,13 +1499,7 @@ bool vtkPlumeVolumeMapper::Internals::UpdateLightVolume(vtkPlumeVolumeMapper* se
   {
     return true;
   }
-  vtkVolumeProperty* property = frame.Property;
-  std::vector<double> key = { double(this->Scalars->GetDataVersion()), double(self->TableCount),
-    frame.ScaleBias[0], frame.ScaleBias[1], self->ShadowSampleDistance,
-    double(property->GetInterpolationType()), this->Scalars->GetMasked() ? 1.0 : 0.0,
-    frame.SkipTransparent ? 1.0 : 0.0 }; // (then only nodes of non-transparent blocks are marched)
-  key.insert(key.end(), frame.LightIndexDirs.begin(), frame.LightIndexDirs.end());
-  key.insert(key.end(), frame.LightWorldPerIndex.begin(), frame.LightWorldPerIndex.end());
+  const std::vector<double>& key = frame.LightKey;
   vtkShaderProgram* program = frame.LightProgram;
   bool bound = false;
   const bool ok = this->LightVolume->Update(frame.Window, frame.Dims, frame.NLights, key, [&](int slice) {
