@@ -1157,8 +1157,10 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
     std::vector<double>& key = frame.LightKey;
     key = { double(this->Scalars->GetDataVersion()), double(self->TableCount), frame.ScaleBias[0],
       frame.ScaleBias[1], self->ShadowSampleDistance, double(property->GetInterpolationType()),
-      this->Scalars->GetMasked() ? 1.0 : 0.0,
-      frame.SkipTransparent ? 1.0 : 0.0 }; // (then only nodes of non-transparent blocks are marched)
+      this->Scalars->GetMasked() ? 1.0 : 0.0 };
+    // (not the skipping: a volume made with it, which leaves the nodes of
+    // transparent blocks unmarched, is exact without it, as only samples with
+    // no extinction read those nodes)
     key.insert(key.end(), frame.LightIndexDirs.begin(), frame.LightIndexDirs.end());
     key.insert(key.end(), frame.LightWorldPerIndex.begin(), frame.LightWorldPerIndex.end());
     // inputs that changed since the previous frame (a moving or camera-following

@@ -363,8 +363,10 @@ public:
    * texture (2 bytes per node and light, 4 channels for 3 lights, within TextureMemoryBudgetMB beside
    * the volume, else shadow rays are used) and interpolated at each sample; it
    * is recomputed only when a light's direction relative to the volume, the
-   * data, the transfer function or ShadowSampleDistance changes. Off: a shadow
-   * ray per sample. Default on.
+   * data, the transfer function or ShadowSampleDistance changes, and only once
+   * they hold still: a frame whose inputs changed since the previous frame (a
+   * light moving with the camera) casts shadow rays instead. Off: a shadow ray
+   * per sample. Default on.
    */
   vtkSetMacro(LightCache, bool);
   vtkGetMacro(LightCache, bool);
