@@ -5,6 +5,7 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeImageFrame.h"
+#include "vtkPlumeLightVolume.h"
 #include "vtkPlumeLookupTexture.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
@@ -132,6 +133,8 @@ public:
   vtkNew<vtkTextureObject> Cells;   // R32F per lattice cell: 0 = interpolate, 1 = cast own rays
   vtkNew<vtkOpenGLFramebufferObject> LatticeFBO;
   vtkNew<vtkPlumeShaderProgramCache> Programs;
+  vtkNew<vtkPlumeLightVolume> LightVolume; // smoke: transmittance towards each light per node
+  std::vector<double> LastLightKey;         // the light volume's inputs at the previous frame
   vtkOpenGLRenderWindow* Window = nullptr;
   double AutomaticBudgetMB = 0; // of Window
   int FrameCount = 0; // frames drawn (animated jitter)
@@ -174,6 +177,12 @@ public:
     std::string Mode; // shader feature: COMPOSITE, MIP, ISO or SMOKE
     bool Lit = false;
     int NLights = 0;
+    std::vector<float> LightIndexDirs;      // smoke: unit directions towards the lights, index space
+    std::vector<float> LightWorldPerIndex; // and the world length of one index unit along each
+    bool LightCache = false;               // smoke: samples read the light volume
+    std::vector<double> LightKey;          // what the light volume depends on
+    vtkPlumeShaderFeatures LightFeatures;  // its slices' program
+    vtkShaderProgram* LightProgram = nullptr;
     // ray lattice and programs
     int Viewport[4] = { 0, 0, 0, 0 }; // width, height, x, y
     int Lattice = 1;
@@ -196,6 +205,7 @@ public:
   bool ComputeFrame(vtkPlumeVolumeMapper* self, Frame& frame);
   void GatherLights(vtkPlumeVolumeMapper* self, Frame& frame);
   bool ReadyPrograms(vtkPlumeVolumeMapper* self, Frame& frame);
+  bool UpdateLightVolume(vtkPlumeVolumeMapper* self, Frame& frame);
   void SetUniforms(vtkPlumeVolumeMapper* self, Frame& frame, vtkShaderProgram* program);
   void Draw(vtkPlumeVolumeMapper* self, Frame& frame);
 
@@ -215,6 +225,8 @@ public:
     this->Cells->ReleaseGraphicsResources(window);
     this->LatticeFBO->ReleaseGraphicsResources(window);
     this->Programs->ReleaseGraphicsResources(window);
+    this->LightVolume->ReleaseGraphicsResources(window);
+    this->LastLightKey.clear();
     this->Window = nullptr;
     this->AutomaticBudgetMB = 0;
   }
@@ -238,6 +250,11 @@ int vtkPlumeVolumeMapper::GetUploadCount()
 int vtkPlumeVolumeMapper::GetHandOverCount()
 {
   return this->Impl->Scalars->GetHandOverCount();
+}
+
+int vtkPlumeVolumeMapper::GetLightVolumeUpdateCount()
+{
+  return this->Impl->LightVolume->GetUpdateCount();
 }
 
 //------------------------------------------------------------------------------
@@ -356,6 +373,11 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Panel("Quality")
       .Doc("Step of the smoke's shadow rays.")
       .Bind(&T::SetShadowSampleDistance, &T::GetShadowSampleDistance);
+    t.Boolean("light_cache", "LightCache", true)
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Smoke: the transmittance towards each light kept per grid node and interpolated, recomputed only when the lights, data or transfer function change (off: a shadow ray per sample).")
+      .Bind(&T::SetLightCache, &T::GetLightCache);
     t.Boolean("opaque_depth", "UseOpaqueDepth", true)
       .Panel("Compositing")
       .Doc("Rays stop at opaque geometry (surfaces, contours, spheres, glyphs).")
@@ -567,6 +589,10 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   impl.GatherLights(this, frame);
   if (!impl.ReadyPrograms(this, frame))
+  {
+    return;
+  }
+  if (!impl.UpdateLightVolume(this, frame))
   {
     return;
   }
@@ -1053,7 +1079,25 @@ void vtkPlumeVolumeMapper::Internals::GatherLights(vtkPlumeVolumeMapper* self, F
     lightColors.push_back({ 1, 1, 1 });
   }
   frame.NLights = lit ? static_cast<int>(lightDirs.size()) : 0;
-
+  if (mode == "SMOKE")
+  {
+    // the smoke's shadow marches run in index space
+    double inv[9];
+    vtkMatrix3x3::Invert(frame.Linear, inv);
+    for (int l = 0; l < frame.NLights; ++l)
+    {
+      double e[3];
+      vtkMatrix3x3::MultiplyPoint(inv, lightDirs[l].data(), e);
+      vtkMath::Normalize(e);
+      double w[3];
+      vtkMatrix3x3::MultiplyPoint(frame.Linear, e, w);
+      for (int c = 0; c < 3; ++c)
+      {
+        frame.LightIndexDirs.push_back(static_cast<float>(e[c]));
+      }
+      frame.LightWorldPerIndex.push_back(static_cast<float>(vtkMath::Norm(w)));
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1100,6 +1144,53 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
   if (frame.Lit)
   {
     features.Define("PLUME_LIGHTS", frame.NLights);
+  }
+  // smoke: the transmittance towards each light cached per node (recomputed
+  // when the lights, data or transfer function change), unless the cache
+  // does not fit the texture budget beside the volume
+  if (mode == "SMOKE")
+  {
+    const double bytes = GetTextureBytes(frame.Dims, this->Scalars->GetMasked(), false) +
+      vtkPlumeLightVolume::GetTextureBytes(frame.Dims, frame.NLights);
+    frame.LightCache = self->LightCache && bytes <= self->EffectiveTextureMemoryBudgetMB * Megabyte;
+    vtkVolumeProperty* property = frame.Property;
+    std::vector<double>& key = frame.LightKey;
+    key = { double(this->Scalars->GetDataVersion()), double(self->TableCount), frame.ScaleBias[0],
+      frame.ScaleBias[1], self->ShadowSampleDistance, double(property->GetInterpolationType()),
+      this->Scalars->GetMasked() ? 1.0 : 0.0 };
+    // (not the skipping: a volume made with it, which leaves the nodes of
+    // transparent blocks unmarched, is exact without it, as only samples with
+    // no extinction read those nodes)
+    key.insert(key.end(), frame.LightIndexDirs.begin(), frame.LightIndexDirs.end());
+    key.insert(key.end(), frame.LightWorldPerIndex.begin(), frame.LightWorldPerIndex.end());
+    // inputs that changed since the previous frame (a moving or camera-following
+    // light while the camera moves) would remake the cache every frame, which
+    // costs more than shadow rays at 256^3: shadow rays until they hold still
+    const bool changing = !this->LastLightKey.empty() && key != this->LastLightKey;
+    this->LastLightKey = key;
+    frame.LightCache = frame.LightCache && !(changing && this->LightVolume->IsStale(renWin, frame.Dims, frame.NLights, key));
+    features.Enable(frame.LightCache ? "LIGHT_CACHE" : "SHADOW_RAYS");
+    self->LastLightCache = frame.LightCache;
+    if (frame.LightCache)
+    {
+      // the slices' program: one fragment per node (the full-viewport
+      // triangle), every light's shadow march (SHADOW_RAYS: the shared code compiles)
+      frame.LightFeatures = features;
+      frame.LightFeatures.Enable("LIGHT_CACHE", false);
+      frame.LightFeatures.Enable("SHADOW_RAYS");
+      frame.LightFeatures.Enable("LIGHT_VOLUME");
+      frame.LightProgram =
+        this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.LightFeatures);
+      if (!frame.LightProgram)
+      {
+        vtkErrorWithObjectMacro(self, << "could not build the volume shader program (light volume)");
+        return false;
+      }
+    }
+  }
+  else
+  {
+    self->LastLightCache = false;
   }
 
   // ---- ray lattice: one ray per lattice x lattice pixels first (into a small
@@ -1359,24 +1450,14 @@ void vtkPlumeVolumeMapper::Internals::SetUniforms(
   if (mode == "SMOKE")
   {
     program->SetUniformf("ShadowStepIndex", static_cast<float>(self->ShadowSampleDistance));
-    std::vector<float> idxDirs, perIndex;
-    double inv[9];
-    vtkMatrix3x3::Invert(linear, inv);
-    for (int l = 0; l < nLights; ++l)
+    program->SetUniform3fv("LightIndexDir", nLights, reinterpret_cast<const float(*)[3]>(frame.LightIndexDirs.data()));
+    program->SetUniform1fv("LightWorldPerIndex", nLights, frame.LightWorldPerIndex.data());
+    if (frame.LightCache && program != frame.LightProgram)
     {
-      double e[3];
-      vtkMatrix3x3::MultiplyPoint(inv, lightDirs[l].data(), e);
-      vtkMath::Normalize(e);
-      double w[3];
-      vtkMatrix3x3::MultiplyPoint(linear, e, w);
-      for (int c = 0; c < 3; ++c)
-      {
-        idxDirs.push_back(static_cast<float>(e[c]));
-      }
-      perIndex.push_back(static_cast<float>(vtkMath::Norm(w)));
+      // (never bound while its slices are the target)
+      this->LightVolume->GetTextureObject()->Activate();
+      program->SetUniformi("LightVolume", this->LightVolume->GetTextureObject()->GetTextureUnit());
     }
-    program->SetUniform3fv("LightIndexDir", nLights, reinterpret_cast<float(*)[3]>(idxDirs.data()));
-    program->SetUniform1fv("LightWorldPerIndex", nLights, perIndex.data());
   }
   // the property's interpolation type (parameters are sent when the texture is bound)
   const int filter = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
@@ -1413,7 +1494,42 @@ void vtkPlumeVolumeMapper::Internals::SetUniforms(
 }
 
 //------------------------------------------------------------------------------
-// Step 8: draw the box's back faces (the lattice rays first, into their
+// Step 8 (smoke): the light volume, recomputed only when what it depends on changed.
+bool vtkPlumeVolumeMapper::Internals::UpdateLightVolume(vtkPlumeVolumeMapper* self, Frame& frame)
+{
+  if (!frame.LightCache)
+  {
+    return true;
+  }
+  const std::vector<double>& key = frame.LightKey;
+  vtkShaderProgram* program = frame.LightProgram;
+  bool bound = false;
+  const bool ok = this->LightVolume->Update(frame.Window, frame.Dims, frame.NLights, key, [&](int slice) {
+    if (!bound)
+    {
+      this->Programs->Ready(frame.Window, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.LightFeatures);
+      this->SetUniforms(self, frame, program);
+      this->EmptyVAO->Bind();
+      bound = true;
+    }
+    program->SetUniformf("LightSlice", static_cast<float>(slice));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  });
+  if (bound)
+  {
+    this->EmptyVAO->Release();
+    this->Scalars->GetTextureObject()->Deactivate();
+    this->Table->GetTextureObject()->Deactivate();
+  }
+  if (!ok)
+  {
+    vtkErrorWithObjectMacro(self, << "could not make the smoke's light volume");
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+// Step 9: draw the box's back faces (the lattice rays first, into their
 // texture), under premultiplied blending, no depth test or write.
 void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& frame)
 {
@@ -1595,6 +1711,10 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
   {
     frame.Depth->GetTextureObject()->Deactivate();
   }
+  if (frame.LightCache)
+  {
+    this->LightVolume->GetTextureObject()->Deactivate();
+  }
   if (frame.SkipTransparent)
   {
     this->Occupancy->Deactivate();
@@ -1633,6 +1753,7 @@ void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ValidMaskArrayName: " << this->ValidMaskArrayName << "\n";
   os << indent << "Smoke: " << this->Smoke << "\n";
   os << indent << "ShadowSampleDistance: " << this->ShadowSampleDistance << "\n";
+  os << indent << "LightCache: " << this->LightCache << "\n";
   os << indent << "UseOpaqueDepth: " << this->UseOpaqueDepth << "\n";
   os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << " (MIP: " << this->MIPSkipping << ")\n";
   os << indent << "TextureMemoryBudgetMB: " << this->TextureMemoryBudgetMB << " (in effect "

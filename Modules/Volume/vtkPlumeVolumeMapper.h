@@ -57,8 +57,9 @@
  *    ambient/diffuse/specular/specular power and the renderer's lights; opaque.
  *  - Smoke (SmokeOn, composite blend only): emission–absorption with single
  *    scattering: radiance c(s)·(ka + kd Σ_l I_l T_l(x)), T_l the transmittance
- *    from x towards light l through the volume (in-shader shadow ray with
- *    ShadowSampleDistance-voxel midpoint steps), i.e. self-shadowing.
+ *    from x towards light l through the volume (shadow ray with
+ *    ShadowSampleDistance-voxel midpoint steps, cached per grid node and
+ *    interpolated unless LightCache is off), i.e. self-shadowing.
  * Lights: the renderer's switched-on lights (up to 4), each treated as
  * directional from its focal point towards its position; colour × intensity.
  *
@@ -357,6 +358,29 @@ public:
 
   ///@{
   /**
+   * Smoke: cache the lighting. The transmittance from every grid node towards
+   * each light (the same shadow march a sample would run) is kept in a 3D
+   * texture (2 bytes per node and light, 4 channels for 3 lights, within TextureMemoryBudgetMB beside
+   * the volume, else shadow rays are used) and interpolated at each sample; it
+   * is recomputed only when a light's direction relative to the volume, the
+   * data, the transfer function or ShadowSampleDistance changes, and only once
+   * they hold still: a frame whose inputs changed since the previous frame (a
+   * light moving with the camera) casts shadow rays instead. Off: a shadow ray
+   * per sample. Default on.
+   */
+  vtkSetMacro(LightCache, bool);
+  vtkGetMacro(LightCache, bool);
+  vtkBooleanMacro(LightCache, bool);
+  ///@}
+
+  /** Whether the last render used the light cache (smoke, within the budget). */
+  vtkGetMacro(LastLightCache, bool);
+
+  /** How often the smoke's light volume has been computed (tests: no stale lighting, no needless work). */
+  int GetLightVolumeUpdateCount();
+
+  ///@{
+  /**
    * Stop rays at the depth of the opaque scene. Default on. Under a
    * vtkPlumeCompositingPass that is the frame's shared depth (opaque actors
    * and glyphs), and the volume is sorted back to front with the other media;
@@ -479,6 +503,8 @@ protected:
   double IsoValue;
   bool Smoke = false;
   double ShadowSampleDistance = 1.0;
+  bool LightCache = true;
+  bool LastLightCache = false;
   bool UseOpaqueDepth = true;
   bool EmptySpaceSkipping = true;
   bool PreIntegration = false;

@@ -35,6 +35,14 @@
 // early), composite at both sizes, MIP and isosurface at 128³. Per-ray floor:
 // see FloorStep. Pre-integration: "ours-preint" (PreIntegration on) at steps
 // 4, 8, 16 (--quick: 8) on the unshaded fields vs ours plain at the same step.
+// Cached lighting (smoke mode, LightCache; no peer has a self-shadowed mode):
+// "smoke+lit", the smoke field in smoke mode under a fixed scene light from
+// the side, its reference with shadow rays (1/4-voxel steps, every 4th pixel
+// along x and y); "ours" (light volume, computed in the warm-up and reused:
+// a still light) vs "ours-shadowrays" (LightCache off: a shadow ray per
+// sample) vs "ours-relight" (the light moves by 1e-3 every frame: a moving
+// or camera-following light, whose frames cast shadow rays), at
+// steps 1 and 4 (--quick: 4); lightcache lines, ratio = shadow-ray s / ours s.
 // --quick: 32³ only
 // (errors on every 2nd pixel), sparsity for the smoke composite and isosurface.
 #include "plumeBenchmarks.h"
@@ -48,6 +56,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkFixedPointVolumeRayCastMapper.h"
 #include "vtkFloatArray.h"
+#include "vtkLight.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -117,6 +126,35 @@ const double FloorStep = 100.0;
 int Stride(bool quick, int n)
 {
   return quick ? 2 : (n >= 256 ? 4 : 1); // quick: the sub-sampled path, on its small grid
+}
+
+// smoke mode under a side light (cached lighting vs shadow rays: see the top)
+bool Lit(const std::string& variant)
+{
+  return variant.find("+lit") != std::string::npos;
+}
+
+const char* const LitKinds[] = { "ours", "ours-shadowrays", "ours-relight" };
+
+std::vector<double> LitSteps(bool quick)
+{
+  return quick ? std::vector<double>{ 4.0 } : std::vector<double>{ 1.0, 4.0 };
+}
+
+// the scene light of the lit variant (fixed relative to the volume)
+const double LitLightPosition[3] = { 1.6, 1.3, 0.1 };
+
+vtkSmartPointer<vtkLight> AddLitLight(vtkRenderer* renderer)
+{
+  renderer->RemoveAllLights(); // (a first render made a headlight)
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(LitLightPosition[0], LitLightPosition[1], LitLightPosition[2]);
+  light->SetFocalPoint(0.5, 0.5, 0.5);
+  light->SetPositional(false);
+  renderer->AddLight(light);
+  renderer->AutomaticLightCreationOff();
+  return light;
 }
 
 int MeasuredFrames(bool quick, int n)
@@ -408,7 +446,8 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   // loaded machine)
   const char* framesText = std::getenv("PLUME_BENCH_VOLUME_FRAMES");
   const int frames = framesText && std::atoi(framesText) > 0 ? std::atoi(framesText) : MeasuredFrames(quick, n);
-  const int stride = Stride(quick, n);
+  // (the lit reference's shadow rays: every 4th pixel along x and y)
+  const int stride = Lit(variant) && !quick ? std::max(4, Stride(quick, n)) : Stride(quick, n);
   auto image = Field(field == "opaque" ? "dense" : field, n);
 
   vtkNew<vtkVolume> volume;
@@ -430,6 +469,11 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
       SetCamera(renderer);
       background = plume::ReadBack(window);
     }
+    else if (Lit(variant))
+    {
+      SetCamera(renderer);
+      AddLitLight(renderer);
+    }
     else
     {
       SetCamera(renderer);
@@ -437,10 +481,19 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
       renderer->UpdateLightsGeometryToFollowCamera();
     }
     vtkNew<vtkPlumeVolumeReference> reference;
+    if (Lit(variant))
+    {
+      reference->SetMode(vtkPlumeVolumeReference::SMOKE);
+      reference->SetStep(0.25);
+      reference->SetShadowStep(0.25);
+    }
     reference->SetInputData(image);
     reference->SetVolume(volume);
     reference->SetRenderer(renderer);
-    reference->SetStep(0.125);
+    if (!Lit(variant))
+    {
+      reference->SetStep(0.125);
+    }
     reference->SetPixelStride(stride);
     reference->SetOpaqueDepth(background.Depth);
     const double t0 = Now();
@@ -464,6 +517,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   window->Render();
   window->WaitForCompletion();
   SetCamera(renderer);
+  vtkSmartPointer<vtkLight> litLight = Lit(variant) ? AddLitLight(renderer) : nullptr;
 
   const double spacing = 1.0 / (n - 1);
   vtkNew<vtkPlumeVolumeMapper> ours;
@@ -480,6 +534,8 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
       ours->SetLatticeTolerance(OurLatticeTolerance(kind));
     }
     ours->SetPreIntegration(kind == PreIntKind);
+    ours->SetSmoke(Lit(variant));
+    ours->SetLightCache(kind != "ours-shadowrays");
     if (kind == "ours-base")
     {
       ours->SetTerminationError(0.005); // the former fixed threshold, 0.995, where R <= 1
@@ -535,6 +591,11 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   const int warmUp = PeerAuto(kind) ? 8 : 2;
   for (int f = 0; f < frames + warmUp; ++f)
   {
+    if (kind == "ours-relight")
+    {
+      // a light that moves every frame (to a new place each time)
+      litLight->SetPosition(LitLightPosition[0] + 1e-3 * f, LitLightPosition[1], LitLightPosition[2]);
+    }
     const double t0 = Now();
     window->Render();
     window->WaitForCompletion();
@@ -546,6 +607,10 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   // one more frame of ours, the same image, counting its rays (the count reads
   // the lattice's cells back: not in the timed frames)
   double rays = 0;
+  if (litLight)
+  {
+    litLight->SetPosition(LitLightPosition[0], LitLightPosition[1], LitLightPosition[2]);
+  }
   if (isOurs)
   {
     ours->CountRaysOn();
@@ -662,6 +727,17 @@ std::vector<std::string> Jobs(bool quick)
         {
           jobs.push_back(JobId(kind, field, n, step));
         }
+      }
+    }
+  }
+  for (int n : Grids(quick))
+  {
+    jobs.push_back(JobId("reference", "smoke+lit", n));
+    for (const char* kind : LitKinds)
+    {
+      for (double step : LitSteps(quick))
+      {
+        jobs.push_back(JobId(kind, "smoke+lit", n, step));
       }
     }
   }
@@ -853,6 +929,47 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
       }
     }
   }
+  // cached lighting (smoke mode): shadow rays and a light moving every frame vs
+  // the light volume (ratio = their time / ours)
+  for (int n : Grids(quick))
+  {
+    std::remove(ReferencePath("smoke+lit", n, quick, getpid()).c_str());
+    for (double step : LitSteps(quick))
+    {
+      const nlohmann::json* cached = find(JobId("ours", "smoke+lit", n, step));
+      if (!cached)
+      {
+        continue;
+      }
+      for (const char* kind : { "ours-shadowrays", "ours-relight" })
+      {
+        const nlohmann::json* other = find(JobId(kind, "smoke+lit", n, step));
+        if (!other)
+        {
+          continue;
+        }
+        const bool relight = std::string(kind) == "ours-relight";
+        const double o = (*cached)["render_s"].get<double>();
+        const double p = (*other)["render_s"].get<double>();
+        nlohmann::json line = { { "bench", "volume" },
+          { "case", "smoke mode, side light " + std::to_string(n) + "^3 -> " + std::to_string(size) + "^2, step " +
+              StepText(step) + " voxel: cached light volume (still light) vs " +
+              (relight ? "a light moving every frame (shadow rays while it moves)" : "a shadow ray per sample") },
+          { "lightcache", true }, { "ours_s", o },
+          { "peer", std::string("vtkPlumeVolumeMapper, ") + (relight ? "light moving every frame" : "LightCache off") },
+          { "peer_s", p }, { "ratio", p / o }, { "grid", n }, { "ours_step", step }, { "peer_step", step },
+          { "peak_rss_mb", (*cached)["peak_rss_mb"] } };
+        if (cached->contains("rms_error"))
+        {
+          line["error"] = (*cached)["rms_error"];
+          line["max_error"] = (*cached)["max_error"];
+          line["error_pixels"] = (*cached)["error_pixels"];
+        }
+        peerFields(line, *other);
+        lines.push_back(line);
+      }
+    }
+  }
   // sparsity: what each of our switches saves (ratio = time with it off / time with everything on)
   for (const auto& c : SparsityCases(quick))
   {
@@ -894,7 +1011,7 @@ void RegisterVolume(std::map<std::string, Benchmark>& registry)
   Benchmark b;
   b.Description = "raycast 128^3 and 256^3 volumes into 512x512 (smoke and dense fields, shaded, smoke with an opaque sphere; several steps and ray lattices) vs "
                   "vtkGPUVolumeRayCastMapper and vtkFixedPointVolumeRayCastMapper, errors vs the CPU reference; "
-                  "sparsity report (skipping / early termination off vs on)";
+                  "sparsity report (skipping / early termination off vs on); smoke mode's cached lighting vs shadow rays";
   b.Jobs = Jobs;
   b.Run = RunJob;
   b.Report = Report;

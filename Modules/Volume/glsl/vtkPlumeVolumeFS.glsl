@@ -43,6 +43,11 @@
 //                    classified 1 (the vertex shader's CELLS)
 //   ISO_DEPTH        ISO without REFINE: the hit writes its window depth
 //                    (gl_FragDepth), as opaque geometry does
+//   SHADOW_RAYS | LIGHT_CACHE   SMOKE: a shadow ray per sample and light | the
+//                    transmittances interpolated from the light volume
+//   LIGHT_VOLUME     the light volume's pass (one z-slice per draw): fragment
+//                    (i, j) writes node (i, j, LightSlice)'s transmittance
+//                    towards each light (channel l), by the same shadow march
 // Values (#define): PLUME_LIGHTS n (lit modes), PLUME_ISO_MARGIN (SKIP_ISO).
 
 //PLUME::Defines
@@ -112,6 +117,12 @@ uniform float Diffuse;
 uniform float ShadowStepIndex;      // shadow-ray step, voxels
 uniform vec3 LightIndexDir[PLUME_LIGHTS];     // unit direction towards the light, index space
 uniform float LightWorldPerIndex[PLUME_LIGHTS]; // world length of one index unit along it
+//PLUME::ENDIF
+//PLUME::IF LIGHT_CACHE
+uniform sampler3D LightVolume;      // per node: transmittance towards light l in channel l
+//PLUME::ENDIF
+//PLUME::IF LIGHT_VOLUME
+uniform float LightSlice;           // the node layer k drawn
 //PLUME::ENDIF
 //PLUME::IF ISO SMOKE SHADE
 uniform vec3 LightDirection[PLUME_LIGHTS]; // unit, world, towards the light
@@ -314,6 +325,37 @@ vec3 opaqueEnd(vec2 local)
 
 void main()
 {
+//PLUME::IF LIGHT_VOLUME
+  {
+    vec3 node = vec3(floor(gl_FragCoord.xy), LightSlice);
+    vec4 transmittance = vec4(1.0);
+//PLUME::ENDIF
+//PLUME::IF LIGHT_VOLUME+SKIP_TRANSPARENT
+    // a sample's cell lies in one block, whose nodes (shared faces included)
+    // are all it interpolates; where every block holding this node is
+    // transparent, no sample with extinction reads it: no march
+    bool needed = false;
+    for (int c = 0; c < 8; ++c)
+    {
+      vec3 q = node - vec3(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1));
+      ivec3 cell = clamp(ivec3(floor(q / BlockSize)), ivec3(0), ivec3(BlockDims) - 1);
+      needed = needed || texelFetch(Occupancy, cell, 0).r != 0.0;
+    }
+    if (!needed)
+    {
+      gl_FragData[0] = transmittance;
+      return;
+    }
+//PLUME::ENDIF
+//PLUME::IF LIGHT_VOLUME
+    for (int l = 0; l < PLUME_LIGHTS; ++l)
+    {
+      transmittance[l] = lightTransmittance(node, l);
+    }
+    gl_FragData[0] = transmittance;
+    return;
+  }
+//PLUME::ENDIF
 //PLUME::IF CLASSIFY
   {
     // cell a: the pixels a L .. a L + L - 1, between lattice rays a and a + 1
@@ -623,9 +665,18 @@ void main()
     {
       float alpha = 1.0 - exp(-sigma * (s1 - s0) * worldPerT);
       vec3 light = vec3(Ambient);
+//PLUME::IF LIGHT_CACHE
+      vec4 cached = textureLod(LightVolume, (p + 0.5) / Dims, 0.0);
+//PLUME::ENDIF
       for (int l = 0; l < PLUME_LIGHTS; ++l)
       {
-        light += Diffuse * LightColor[l] * lightTransmittance(p, l);
+//PLUME::IF LIGHT_CACHE
+        float transmittance = cached[l];
+//PLUME::ENDIF
+//PLUME::IF SHADOW_RAYS
+        float transmittance = lightTransmittance(p, l);
+//PLUME::ENDIF
+        light += Diffuse * LightColor[l] * transmittance;
       }
       dst.rgb += (1.0 - dst.a) * alpha * c.rgb * light;
       dst.a += (1.0 - dst.a) * alpha;

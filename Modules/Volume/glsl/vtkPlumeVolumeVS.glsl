@@ -38,8 +38,9 @@ void main()
   gl_Position = vec4(2.0 * corner / ViewportSize - 1.0, 0.0, 1.0);
   return;
 //PLUME::ENDIF
-//PLUME::IF CLASSIFY
-  // the cell classification covers the whole lattice texture: one triangle
+//PLUME::IF CLASSIFY LIGHT_VOLUME
+  // the cell classification covers the whole lattice texture, a light-volume
+  // slice the whole slice: one triangle
   gl_Position = vec4(float((gl_VertexID & 1) * 4 - 1), float((gl_VertexID >> 1) * 4 - 1), 0.0, 1.0);
   return;
 //PLUME::ENDIF

@@ -4,7 +4,6 @@
 // floor is ~1/510 per channel.
 #include "plumeVolumeTestUtil.h"
 
-#include "vtkLight.h"
 
 int TestVolumeAccuracy(int, char*[])
 {
@@ -69,18 +68,7 @@ int TestVolumeAccuracy(int, char*[])
     failures += Check("isosurface", CompareWithReference(s, vtkPlumeVolumeReference::ISOSURFACE), 0.02, 1.0);
   }
   {
-    Scene s = MakeScene(SmokeField(32), 96, 80);
-    s.Mapper->SmokeOn();
-    s.Mapper->SetShadowSampleDistance(0.5);
-    s.Volume->GetProperty()->SetAmbient(0.25);
-    s.Volume->GetProperty()->SetDiffuse(0.9);
-    vtkNew<vtkLight> light; // a side light, so self-shadowing shows
-    light->SetLightTypeToSceneLight();
-    light->SetPosition(1.5, 1.0, 0.2);
-    light->SetFocalPoint(0.5, 0.5, 0.5);
-    light->SetPositional(false);
-    s.Renderer->AddLight(light);
-    s.Renderer->AutomaticLightCreationOff();
+    Scene s = SideLitSmoke();
     failures += Check("smoke, self-shadowed", CompareWithReference(s, vtkPlumeVolumeReference::SMOKE, 0.25), 0.008, 0.06);
   }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
