@@ -20,6 +20,7 @@
 #include <cmath>
 #include <utility>
 #include <sstream>
+#include <unordered_map>
 #include <vector>
 
 vtkStandardNewMacro(vtkPlumeSheetDensityGrid);
@@ -66,6 +67,16 @@ struct Blob
   double Norm;
   double A[6];
   double S[4];
+};
+
+// the moments of the quadrature points of one merge cell (about its centre)
+struct CellSum
+{
+  unsigned long long Key = 0;
+  glm::dvec3 Centre{ 0.0 };
+  double M = 0.0;
+  glm::dvec3 First{ 0.0 };
+  glm::dmat3 Second{ 0.0 };
 };
 
 struct Source
@@ -154,6 +165,11 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
     }
     tris.push_back(ids);
   };
+  {
+    size_t count = 0; // (reserved: growing the list cost more than reading the mesh)
+    plume::ForEachSheetTriangle(poly, [&count](vtkIdType, vtkIdType, vtkIdType) { ++count; });
+    tris.reserve(count);
+  }
   plume::ForEachSheetTriangle(poly, add);
 
   // ---- spacing from the smallest sigma, grown until the grid fits MaximumNodes
@@ -197,10 +213,22 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
     const double side = std::min(double(std::max({ dims[0], dims[1], dims[2] })), 2.0 * std::sqrt(radius2) * sigma / h + 1.0);
     return 0.5236 * side * side * side;
   };
-  double points = 0.0, work = 0.0, gaussians = 0.0;
+  // (triangles are made into points and merged in fixed blocks of this many)
+  const vtkIdType blockSize = 4096;
+  double points = 0.0, work = 0.0, gaussians = 0.0, cellSums = 0.0;
   {
     double sigmaTop = 0.0;
-    std::vector<unsigned long long> smallCells;
+    // the merge cells of the small triangles: of the current block, then of
+    // all blocks (each block's distinct cells once: one cell sum each)
+    std::vector<unsigned long long> blockCells, smallCells;
+    auto closeBlock = [&]() {
+      std::sort(blockCells.begin(), blockCells.end());
+      const auto end = std::unique(blockCells.begin(), blockCells.end());
+      cellSums += static_cast<double>(end - blockCells.begin());
+      smallCells.insert(smallCells.end(), blockCells.begin(), end);
+      blockCells.clear();
+    };
+    size_t ti = 0;
     long long mdims[3];
     for (int a = 0; a < 3; ++a)
     {
@@ -208,6 +236,11 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
     }
     for (const auto& ids : tris)
     {
+      if (ti > 0 && ti % blockSize == 0)
+      {
+        closeBlock();
+      }
+      ++ti;
       Corner c[3];
       corners(ids.data(), c);
       double sb = 1e300, sMaxT = 0.0;
@@ -235,11 +268,13 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
           {
             k[a] = std::min(mdims[a] - 1, std::max(0LL, static_cast<long long>(std::floor((g[a] - origin[a]) / mergeCell))));
           }
-          smallCells.push_back(static_cast<unsigned long long>((k[2] * mdims[1] + k[1]) * mdims[0] + k[0]));
+          blockCells.push_back(static_cast<unsigned long long>((k[2] * mdims[1] + k[1]) * mdims[0] + k[0]));
         }
         else
         {
-          gaussians += std::min(n, 3.0 * area / (mergeCell * mergeCell) + 2.0 * longest / mergeCell + 1.0);
+          const double cells = std::min(n, 3.0 * area / (mergeCell * mergeCell) + 2.0 * longest / mergeCell + 1.0);
+          gaussians += cells;
+          cellSums += cells;
         }
       }
       else
@@ -249,6 +284,7 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
     }
     if (mergeCell > 0.0)
     {
+      closeBlock();
       std::sort(smallCells.begin(), smallCells.end());
       gaussians += static_cast<double>(std::unique(smallCells.begin(), smallCells.end()) - smallCells.begin());
       gaussians = std::min({ gaussians, points, double(mdims[0]) * mdims[1] * mdims[2] });
@@ -269,8 +305,11 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
     }
     what << " on " << dims[0] << "x" << dims[1] << "x" << dims[2] << " nodes)";
     // the points and their merge keys, and the merged Gaussians
-    const double bytes = mergeCell > 0.0 ? points * (sizeof(Source) + 16.0) + gaussians * sizeof(Blob)
-                                         : points * sizeof(Source);
+    // merged: the blocks' cell sums, their sort keys and the merged Gaussians
+    // (the points themselves are not stored); else the points
+    const double bytes = mergeCell > 0.0
+      ? cellSums * (sizeof(CellSum) + 24.0 + 48.0) + gaussians * (sizeof(Blob) + 8.0)
+      : points * sizeof(Source);
     std::string tooMuch = vtkPlumeInputValidation::CheckMemory(bytes, what.str());
     if (tooMuch.empty())
     {
@@ -304,120 +343,91 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
   // the smallest sigma_b (a sliver is cut along its length only: the number
   // of pieces follows its area over sigma^2, not its length^2), each piece
   // adding its edge midpoints (degree 2).
-  const vtkIdType blockSize = 4096;
   const vtkIdType blocks = (static_cast<vtkIdType>(tris.size()) + blockSize - 1) / blockSize;
-  std::vector<std::vector<Source>> perBlock(blocks);
   const double floorSigma = this->SigmaFloor;
   const double subSize = this->SubTriangleSize;
   const double smallSize = this->SmallTriangleSize;
-  vtkSMPTools::For(0, blocks, [&](vtkIdType b0, vtkIdType b1) {
-    for (vtkIdType blk = b0; blk < b1; ++blk)
+  // the quadrature points of triangle ti, each handed to sink(const Source&)
+  auto quadrature = [&](size_t ti, auto&& sink) {
+    Corner c[3];
+    corners(tris[ti].data(), c);
+    for (Corner& q : c)
     {
-      std::vector<Source>& out = perBlock[blk];
-      const size_t t0 = static_cast<size_t>(blk * blockSize);
-      const size_t t1 = std::min(tris.size(), t0 + static_cast<size_t>(blockSize));
-      for (size_t ti = t0; ti < t1; ++ti)
+      q.SB = std::max(q.SB, floorSigma);
+      q.ST = std::max(q.ST, floorSigma);
+    }
+    const glm::dvec3 e1 = c[1].P - c[0].P, e2 = c[2].P - c[0].P;
+    const glm::dvec3 cr = glm::cross(e1, e2);
+    const double area = 0.5 * glm::length(cr);
+    const glm::vec3 n(cr / (2.0 * area));
+    const double sbMin = std::min({ c[0].SB, c[1].SB, c[2].SB });
+    const double l2[3] = { glm::dot(e1, e1), glm::dot(e2 - e1, e2 - e1), glm::dot(e2, e2) };
+    const double longest = std::sqrt(std::max({ l2[0], l2[1], l2[2] }));
+    if (longest <= smallSize * sbMin)
+    {
+      const double dSum = c[0].D + c[1].D + c[2].D;
+      if (!(dSum > 0.0))
       {
-        Corner c[3];
-        corners(tris[ti].data(), c);
-        for (Corner& q : c)
-        {
-          q.SB = std::max(q.SB, floorSigma);
-          q.ST = std::max(q.ST, floorSigma);
-        }
-        const glm::dvec3 e1 = c[1].P - c[0].P, e2 = c[2].P - c[0].P;
-        const glm::dvec3 cr = glm::cross(e1, e2);
-        const double area = 0.5 * glm::length(cr);
-        const glm::vec3 n(cr / (2.0 * area));
-        const double sbMin = std::min({ c[0].SB, c[1].SB, c[2].SB });
-        const double l2[3] = { glm::dot(e1, e1), glm::dot(e2 - e1, e2 - e1), glm::dot(e2, e2) };
-        const double longest = std::sqrt(std::max({ l2[0], l2[1], l2[2] }));
-        if (longest <= smallSize * sbMin)
-        {
-          const double dSum = c[0].D + c[1].D + c[2].D;
-          if (!(dSum > 0.0))
-          {
-            continue;
-          }
-          Source s;
-          // centroid of a linearly varying density: sum_i p_i (D + d_i) / (4 D)
-          s.P = ((dSum + c[0].D) * c[0].P + (dSum + c[1].D) * c[1].P + (dSum + c[2].D) * c[2].P) /
-            (4.0 * dSum);
-          s.N = n;
-          s.M = area * dSum / 3.0;
-          const double sb = (c[0].SB + c[1].SB + c[2].SB) / 3.0;
-          s.SB = std::sqrt(sb * sb + (l2[0] + l2[1] + l2[2]) / 72.0);
-          s.ST = (c[0].ST + c[1].ST + c[2].ST) / 3.0;
-          out.push_back(s);
-          continue;
-        }
-        const double target = subSize * sbMin;
-        auto emit = [&](const glm::dvec3& l, double w) { // barycentric l, weight w (area)
-          Source s;
-          s.P = l.x * c[0].P + l.y * c[1].P + l.z * c[2].P;
-          s.N = n;
-          s.M = w * (l.x * c[0].D + l.y * c[1].D + l.z * c[2].D);
-          s.SB = l.x * c[0].SB + l.y * c[1].SB + l.z * c[2].SB;
-          s.ST = l.x * c[0].ST + l.y * c[1].ST + l.z * c[2].ST;
-          if (s.M > 0.0)
-          {
-            out.push_back(s);
-          }
-        };
-        struct Piece
-        {
-          glm::dvec3 L[3];
-          int Level;
-        };
-        std::vector<Piece> stack = { { { glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1) }, 0 } };
-        while (!stack.empty())
-        {
-          const Piece piece = stack.back();
-          stack.pop_back();
-          glm::dvec3 q[3];
-          for (int k = 0; k < 3; ++k)
-          {
-            q[k] = piece.L[k].x * c[0].P + piece.L[k].y * c[1].P + piece.L[k].z * c[2].P;
-          }
-          const double len[3] = { glm::length(q[1] - q[0]), glm::length(q[2] - q[1]), glm::length(q[0] - q[2]) };
-          const int e = len[0] >= len[1] && len[0] >= len[2] ? 0 : (len[1] >= len[2] ? 1 : 2);
-          if (len[e] <= target || piece.Level >= 24)
-          {
-            const double w = area / double(1 << piece.Level) / 3.0;
-            emit(0.5 * (piece.L[0] + piece.L[1]), w);
-            emit(0.5 * (piece.L[1] + piece.L[2]), w);
-            emit(0.5 * (piece.L[2] + piece.L[0]), w);
-            continue;
-          }
-          const glm::dvec3& u = piece.L[e];
-          const glm::dvec3& v = piece.L[(e + 1) % 3];
-          const glm::dvec3& o = piece.L[(e + 2) % 3];
-          const glm::dvec3 m = 0.5 * (u + v);
-          stack.push_back({ { u, m, o }, piece.Level + 1 });
-          stack.push_back({ { m, v, o }, piece.Level + 1 });
-        }
+        return;
       }
+      Source s;
+      // centroid of a linearly varying density: sum_i p_i (D + d_i) / (4 D)
+      s.P = ((dSum + c[0].D) * c[0].P + (dSum + c[1].D) * c[1].P + (dSum + c[2].D) * c[2].P) /
+        (4.0 * dSum);
+      s.N = n;
+      s.M = area * dSum / 3.0;
+      const double sb = (c[0].SB + c[1].SB + c[2].SB) / 3.0;
+      s.SB = std::sqrt(sb * sb + (l2[0] + l2[1] + l2[2]) / 72.0);
+      s.ST = (c[0].ST + c[1].ST + c[2].ST) / 3.0;
+      sink(s);
+      return;
     }
-  });
-  std::vector<Source> sources;
-  {
-    size_t total = 0;
-    for (const auto& v : perBlock)
+    const double target = subSize * sbMin;
+    auto emit = [&](const glm::dvec3& l, double w) { // barycentric l, weight w (area)
+      Source s;
+      s.P = l.x * c[0].P + l.y * c[1].P + l.z * c[2].P;
+      s.N = n;
+      s.M = w * (l.x * c[0].D + l.y * c[1].D + l.z * c[2].D);
+      s.SB = l.x * c[0].SB + l.y * c[1].SB + l.z * c[2].SB;
+      s.ST = l.x * c[0].ST + l.y * c[1].ST + l.z * c[2].ST;
+      if (s.M > 0.0)
+      {
+        sink(s);
+      }
+    };
+    struct Piece
     {
-      total += v.size();
-    }
-    sources.reserve(total);
-    for (auto& v : perBlock)
+      glm::dvec3 L[3];
+      int Level;
+    };
+    std::vector<Piece> stack = { { { glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1) }, 0 } };
+    while (!stack.empty())
     {
-      sources.insert(sources.end(), v.begin(), v.end());
-      std::vector<Source>().swap(v); // free as we go
+      const Piece piece = stack.back();
+      stack.pop_back();
+      glm::dvec3 q[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = piece.L[k].x * c[0].P + piece.L[k].y * c[1].P + piece.L[k].z * c[2].P;
+      }
+      const double len[3] = { glm::length(q[1] - q[0]), glm::length(q[2] - q[1]), glm::length(q[0] - q[2]) };
+      const int e = len[0] >= len[1] && len[0] >= len[2] ? 0 : (len[1] >= len[2] ? 1 : 2);
+      if (len[e] <= target || piece.Level >= 24)
+      {
+        const double w = area / double(1 << piece.Level) / 3.0;
+        emit(0.5 * (piece.L[0] + piece.L[1]), w);
+        emit(0.5 * (piece.L[1] + piece.L[2]), w);
+        emit(0.5 * (piece.L[2] + piece.L[0]), w);
+        continue;
+      }
+      const glm::dvec3& u = piece.L[e];
+      const glm::dvec3& v = piece.L[(e + 1) % 3];
+      const glm::dvec3& o = piece.L[(e + 2) % 3];
+      const glm::dvec3 m = 0.5 * (u + v);
+      stack.push_back({ { u, m, o }, piece.Level + 1 });
+      stack.push_back({ { m, v, o }, piece.Level + 1 });
     }
-  }
-  std::vector<std::array<vtkIdType, 3>>().swap(tris);
-  this->PointCount = static_cast<vtkIdType>(sources.size());
-  const auto quadratureDone = std::chrono::steady_clock::now();
-  this->QuadratureSeconds = std::chrono::duration<double>(quadratureDone - start).count();
-
+  };
   // ---- the Gaussians to splat. Without merging, one per quadrature point.
   // With MergeCellSize > 0, the points falling in one cubic merge cell (edge
   // MergeCellSize x the spacing) become one Gaussian with their total mass,
@@ -425,9 +435,11 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
   // covariance plus the spread of the points): a sheet crossing a cell is
   // one anisotropic Gaussian instead of tens, at the price of the mixture's
   // higher moments (the error grows as (cell / sigma)^3; measured in
-  // Documentation/Renderers.md and TestSheetGridMerge). Cells are visited in
-  // index order and points in their own order within a cell, so the sums do
-  // not depend on the thread count.
+  // Documentation/Renderers.md and TestSheetGridMerge). The points are not
+  // stored: each block of triangles sums its points' moments per cell as it
+  // makes them (about the cell's centre: no cancellation far from the
+  // origin), and the blocks' sums of a cell are added in block order, so
+  // the sums do not depend on the thread count.
   const double twoPi15 = std::pow(2.0 * 3.14159265358979323846, 1.5);
   auto covarianceOf = [](const Source& s) { // sb^2 I + (st^2 - sb^2) n n^T
     const glm::dvec3 n(s.N);
@@ -451,63 +463,146 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
     b.S[3] = cov[0][0];
     return b;
   };
-  std::vector<Blob> blobs;
-  if (mergeCell > 0.0 && !sources.empty())
+  std::vector<Source> sources; // (without merging)
+  std::vector<Blob> blobs;     // (merged)
+  vtkIdType pointCount = 0;
+  // (the quadrature's time: the points made, and merged, their sums per cell in each block)
+  auto quadratureDone = std::chrono::steady_clock::now();
+  if (mergeCell > 0.0)
   {
     long long mdims[3];
     for (int a = 0; a < 3; ++a)
     {
       mdims[a] = static_cast<long long>(std::floor((dims[a] - 1) * h / mergeCell)) + 1;
     }
-    auto cellOf = [&](const glm::dvec3& p, int a) {
-      return std::min(mdims[a] - 1,
-        std::max(0LL, static_cast<long long>(std::floor((p[a] - origin[a]) / mergeCell))));
-    };
-    std::vector<std::pair<unsigned long long, unsigned int>> keys(sources.size());
-    vtkSMPTools::For(0, static_cast<vtkIdType>(sources.size()), [&](vtkIdType i0, vtkIdType i1) {
-      for (vtkIdType i = i0; i < i1; ++i)
+    std::vector<std::vector<CellSum>> perBlock(blocks);
+    std::vector<vtkIdType> blockPoints(blocks, 0);
+    vtkSMPTools::For(0, blocks, [&](vtkIdType b0, vtkIdType b1) {
+      std::unordered_map<unsigned long long, size_t> index;
+      for (vtkIdType blk = b0; blk < b1; ++blk)
       {
-        const glm::dvec3& p = sources[i].P;
-        keys[i] = { static_cast<unsigned long long>(
-                      (cellOf(p, 2) * mdims[1] + cellOf(p, 1)) * mdims[0] + cellOf(p, 0)),
-          static_cast<unsigned int>(i) };
+        std::vector<CellSum>& out = perBlock[blk];
+        index.clear();
+        unsigned long long lastKey = ~0ULL;
+        CellSum* last = nullptr;
+        vtkIdType made = 0;
+        auto sink = [&](const Source& s) {
+          long long k[3];
+          for (int a = 0; a < 3; ++a)
+          {
+            k[a] = std::min(mdims[a] - 1,
+              std::max(0LL, static_cast<long long>(std::floor((s.P[a] - origin[a]) / mergeCell))));
+          }
+          const unsigned long long key =
+            static_cast<unsigned long long>((k[2] * mdims[1] + k[1]) * mdims[0] + k[0]);
+          if (key != lastKey) // (a triangle's points mostly share a cell)
+          {
+            auto it = index.emplace(key, out.size());
+            if (it.second)
+            {
+              CellSum fresh;
+              fresh.Key = key;
+              for (int a = 0; a < 3; ++a)
+              {
+                fresh.Centre[a] = origin[a] + (static_cast<double>(k[a]) + 0.5) * mergeCell;
+              }
+              out.push_back(fresh);
+            }
+            last = &out[it.first->second];
+            lastKey = key;
+          }
+          const glm::dvec3 d = s.P - last->Centre;
+          last->M += s.M;
+          last->First += s.M * d;
+          last->Second += s.M * (covarianceOf(s) + glm::outerProduct(d, d));
+          ++made;
+        };
+        const size_t t0 = static_cast<size_t>(blk * blockSize);
+        const size_t t1 = std::min(tris.size(), t0 + static_cast<size_t>(blockSize));
+        for (size_t ti = t0; ti < t1; ++ti)
+        {
+          quadrature(ti, sink);
+        }
+        blockPoints[blk] = made;
       }
     });
-    // (key, index) pairs are unique: any sort gives the same order
-    vtkSMPTools::Sort(keys.begin(), keys.end());
-    std::vector<size_t> runs;
-    for (size_t i = 0; i < keys.size(); ++i)
+    quadratureDone = std::chrono::steady_clock::now();
+    // the cells' sums in (cell, block) order; (key, block, position) is unique
+    std::vector<std::array<unsigned long long, 3>> order;
+    for (vtkIdType blk = 0; blk < blocks; ++blk)
     {
-      if (i == 0 || keys[i].first != keys[i - 1].first)
+      pointCount += blockPoints[blk];
+      for (size_t i = 0; i < perBlock[blk].size(); ++i)
+      {
+        order.push_back({ perBlock[blk][i].Key, static_cast<unsigned long long>(blk), i });
+      }
+    }
+    vtkSMPTools::Sort(order.begin(), order.end());
+    std::vector<size_t> runs;
+    for (size_t i = 0; i < order.size(); ++i)
+    {
+      if (i == 0 || order[i][0] != order[i - 1][0])
       {
         runs.push_back(i);
       }
     }
-    runs.push_back(keys.size());
+    runs.push_back(order.size());
     blobs.resize(runs.size() - 1);
     vtkSMPTools::For(0, static_cast<vtkIdType>(blobs.size()), [&](vtkIdType r0, vtkIdType r1) {
       for (vtkIdType r = r0; r < r1; ++r)
       {
-        // moments about the first point (no cancellation far from the origin)
-        const glm::dvec3 c0 = sources[keys[runs[r]].second].P;
         double mass = 0.0;
         glm::dvec3 first(0.0);
         glm::dmat3 second(0.0);
+        const CellSum* any = nullptr;
         for (size_t k = runs[r]; k < runs[r + 1]; ++k)
         {
-          const Source& s = sources[keys[k].second];
-          const glm::dvec3 d = s.P - c0;
-          mass += s.M;
-          first += s.M * d;
-          second += s.M * (covarianceOf(s) + glm::outerProduct(d, d));
+          const CellSum& c = perBlock[order[k][1]][order[k][2]];
+          mass += c.M;
+          first += c.First;
+          second += c.Second;
+          any = &c;
         }
         const glm::dvec3 mean = first / mass;
         const glm::dmat3 cov = second / mass - glm::outerProduct(mean, mean);
-        blobs[r] = blobOf(c0 + mean, mass, cov);
+        blobs[r] = blobOf(any->Centre + mean, mass, cov);
       }
     });
-    std::vector<Source>().swap(sources);
   }
+  else
+  {
+    // in fixed blocks of triangles (each block keeps its own list, joined in
+    // block order: the result does not depend on the thread count)
+    std::vector<std::vector<Source>> perBlock(blocks);
+    vtkSMPTools::For(0, blocks, [&](vtkIdType b0, vtkIdType b1) {
+      for (vtkIdType blk = b0; blk < b1; ++blk)
+      {
+        std::vector<Source>& out = perBlock[blk];
+        const size_t t0 = static_cast<size_t>(blk * blockSize);
+        const size_t t1 = std::min(tris.size(), t0 + static_cast<size_t>(blockSize));
+        for (size_t ti = t0; ti < t1; ++ti)
+        {
+          quadrature(ti, [&](const Source& s) { out.push_back(s); });
+        }
+      }
+    });
+    size_t total = 0;
+    for (const auto& v : perBlock)
+    {
+      total += v.size();
+    }
+    sources.reserve(total);
+    for (auto& v : perBlock)
+    {
+      sources.insert(sources.end(), v.begin(), v.end());
+      std::vector<Source>().swap(v); // free as we go
+    }
+    pointCount = static_cast<vtkIdType>(sources.size());
+    quadratureDone = std::chrono::steady_clock::now();
+  }
+  std::vector<std::array<vtkIdType, 3>>().swap(tris);
+  this->PointCount = pointCount;
+  this->QuadratureSeconds = std::chrono::duration<double>(quadratureDone - start).count();
   // without merging each point is made a Gaussian where it is splatted (no
   // second copy of the points)
   const bool merged = !blobs.empty() || sources.empty();
@@ -565,13 +660,23 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
         const Blob s = gaussian(i);
         int sLo[3], sHi[3];
         nodeBox(s, sLo, sHi);
-        // exponent r^T A r; q(rx) = A rx^2 + B rx + C along each row: only
-        // the x range inside the Cutoff ellipsoid is visited, and only the y
-        // range of its (y, z) shadow; exp(-q/2) advances by two
-        // multiplications per node
+        // exponent Q = r^T A r; along a row Q(rx) = A rx^2 + B rx + C: only
+        // the x range inside the ellipsoid Q <= limit is visited, and only
+        // the y range of its (y, z) shadow. No exp per row or node: the
+        // value G = Norm exp(-Q/2) at the current node and its factors to
+        // the next node in x and in y (Fx, Fy) are exact at the first node
+        // of each plane and move by multiplications (a step in x multiplies
+        // Fx by exp(-Axx h^2) and Fy by exp(-Axy h^2), a step in y Fy by
+        // exp(-Ayy h^2) and Fx by exp(-Axy h^2)); each row then sums four
+        // interleaved geometric-quadratic sequences (short dependency
+        // chains).
         const double A = s.A[0];
         const double limit = radius2;
-        const double r = std::exp(-A * h * h);
+        const double rxx = std::exp(-A * h * h), rxy = std::exp(-s.A[1] * h * h),
+                     ryy = std::exp(-s.A[3] * h * h);
+        const double irxx = 1.0 / rxx, irxy = 1.0 / rxy;
+        const double rxx2 = rxx * rxx, rxx4 = rxx2 * rxx2, rxx6 = rxx4 * rxx2, rxx16 = rxx4 * rxx4 * rxx4 * rxx4;
+        const double inv2A = 0.5 / A;
         // the (y, z) marginal: [ry rz] S_yz^-1 [ry rz]^T <= Cutoff^2
         const double detYZ = s.S[0] * s.S[2] - s.S[1] * s.S[1];
         for (int z = std::max(z0, sLo[2]); z <= std::min(z1, sHi[2]); ++z)
@@ -591,6 +696,9 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
             y0 = std::max(y0, static_cast<int>(std::ceil((mid - half) / h)));
             y1 = std::min(y1, static_cast<int>(std::floor((mid + half) / h)));
           }
+          bool started = false;
+          int cx = 0, cy = 0;
+          double G = 0.0, Fx = 0.0, Fy = 0.0;
           for (int y = y0; y <= y1; ++y)
           {
             const double ry = origin.y + y * h - s.P.y;
@@ -602,23 +710,70 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
               continue;
             }
             const double root = std::sqrt(disc);
-            const double xa = (-B - root) / (2.0 * A) + s.P.x - origin.x;
-            const double xb = (-B + root) / (2.0 * A) + s.P.x - origin.x;
+            const double xa = (-B - root) * inv2A + s.P.x - origin.x;
+            const double xb = (-B + root) * inv2A + s.P.x - origin.x;
             const int x0 = std::max(sLo[0], static_cast<int>(std::ceil(xa / h)));
             const int x1 = std::min(sHi[0], static_cast<int>(std::floor(xb / h)));
             if (x0 > x1)
             {
               continue;
             }
-            float* row = rho + (static_cast<size_t>(z) * ny + y) * nx;
-            const double rx = origin.x + x0 * h - s.P.x;
-            double g = s.Norm * std::exp(-0.5 * ((A * rx + B) * rx + C));
-            double f = std::exp(-0.5 * (A * (2.0 * rx * h + h * h) + B * h));
-            for (int x = x0; x <= x1; ++x)
+            if (!started)
             {
-              row[x] += static_cast<float>(g);
-              g *= f;
-              f *= r;
+              const double rx = origin.x + x0 * h - s.P.x;
+              G = s.Norm * std::exp(-0.5 * ((A * rx + B) * rx + C));
+              Fx = std::exp(-0.5 * (A * (2.0 * rx * h + h * h) + B * h));
+              Fy = std::exp(-0.5 * (s.A[3] * (2.0 * ry * h + h * h) + 2.0 * h * (s.A[1] * rx + s.A[4] * rz)));
+              cx = x0;
+              cy = y;
+              started = true;
+            }
+            for (; cy < y; ++cy)
+            {
+              G *= Fy;
+              Fy *= ryy;
+              Fx *= rxy;
+            }
+            for (; cx < x0; ++cx)
+            {
+              G *= Fx;
+              Fx *= rxx;
+              Fy *= rxy;
+            }
+            for (; cx > x0; --cx)
+            {
+              Fx *= irxx;
+              G /= Fx;
+              Fy *= irxy;
+            }
+            float* row = rho + (static_cast<size_t>(z) * ny + y) * nx;
+            // nodes x0 + k + 4j: g_k advances by F_k = f_k f_k+1 f_k+2 f_k+3
+            // = f_k^4 rxx^6, and F_k by rxx^16
+            double g[4], F[4];
+            {
+              double f = Fx, v = G;
+              for (int k = 0; k < 4; ++k)
+              {
+                g[k] = v;
+                const double f2 = f * f;
+                F[k] = f2 * f2 * rxx6;
+                v *= f;
+                f *= rxx;
+              }
+            }
+            int x = x0;
+            for (; x + 3 <= x1; x += 4)
+            {
+              for (int k = 0; k < 4; ++k)
+              {
+                row[x + k] += static_cast<float>(g[k]);
+                g[k] *= F[k];
+                F[k] *= rxx16;
+              }
+            }
+            for (int k = 0; x <= x1; ++x, ++k)
+            {
+              row[x] += static_cast<float>(g[k]);
             }
           }
         }

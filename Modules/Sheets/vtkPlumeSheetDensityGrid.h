@@ -19,9 +19,11 @@
  * second moment. The points in each cubic cell of MergeCellSize grid spacings
  * are then merged into one Gaussian (total mass, mass centroid, total second
  * moment: a general anisotropic covariance), so the splat costs one Gaussian
- * per occupied cell however fine the mesh; each Gaussian is evaluated exactly
- * at every node inside its sqrt(2) x Cutoff ellipsoid (exp advances by two
- * multiplications along each row).
+ * per occupied cell however fine the mesh; the points are not stored, each
+ * block of triangles sums their moments per cell as it makes them. Each
+ * Gaussian is evaluated exactly at every node inside its sqrt(2) x Cutoff
+ * ellipsoid without an exp per node or row (the value and its factors to
+ * the next node in x and y advance by multiplications; two exps per plane).
  *
  * Spacing: the smallest sigma of the mesh (sigma_b, and sigma_t unless thin)
  * divided by SamplesPerSigma, isotropic; the grid covers the mesh padded by
@@ -32,12 +34,13 @@
  *
  * Bad values: as the mapper (non-finite or negative densities and sigmas count
  * as zero, triangles with a non-finite corner or zero area are skipped).
- * Threads: vtkSMPTools over fixed blocks of triangles (quadrature points,
- * joined in block order), merge cells (sorted by cell, then point order) and
- * z-slabs (each thread owns its planes): the result does not depend on the
- * thread count. Memory: 80 bytes per quadrature point (64 without merging)
- * and 128 per merged Gaussian, plus the grid (4 bytes per node, written in
- * place).
+ * Threads: vtkSMPTools over fixed blocks of triangles (each block sums its
+ * points per merge cell in point order; the blocks' sums of a cell are added
+ * in block order; unmerged points are joined in block order) and z-slabs
+ * (each thread owns its planes): the result does not depend on the thread
+ * count. Memory: merged, about 210 bytes per (block, occupied cell) pair and
+ * 120 per merged Gaussian (the points are not stored); unmerged, 64 bytes
+ * per quadrature point; plus the grid (4 bytes per node, written in place).
  */
 #ifndef vtkPlumeSheetDensityGrid_h
 #define vtkPlumeSheetDensityGrid_h

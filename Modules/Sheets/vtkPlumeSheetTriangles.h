@@ -33,32 +33,38 @@ void ForEachSheetTriangle(vtkPolyData* poly, AddTriangle&& add)
   auto ghost = [&](vtkIdType id) {
     return ghosts && id < ghosts->GetNumberOfValues() && (ghosts->GetValue(id) & skip) != 0;
   };
-  vtkIdType npts = 0;
-  const vtkIdType* pts = nullptr;
-  vtkCellArray* polys = poly->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(npts, pts);)
-  {
-    if (ghost(cell++))
-    {
-      continue;
-    }
-    for (vtkIdType k = 1; k + 1 < npts; ++k)
-    {
-      add(pts[0], pts[k], pts[k + 1]);
-    }
-  }
-  vtkCellArray* strips = poly->GetStrips();
-  for (strips->InitTraversal(); strips->GetNextCell(npts, pts);)
-  {
-    if (ghost(cell++))
-    {
-      continue;
-    }
-    for (vtkIdType k = 0; k + 2 < npts; ++k)
-    {
-      add(pts[k], pts[k + 1], pts[k + 2]);
-    }
-  }
+  // the cells are read from the arrays' own storage (vtkCellArray::Visit):
+  // the legacy InitTraversal/GetNextCell took seconds on a million triangles
+  auto walk = [&](vtkCellArray* cells, bool strip) {
+    cells->Visit([&](auto& state) {
+      const auto* offsets = state.GetOffsets()->GetPointer(0);
+      const auto* conn = state.GetConnectivity()->GetPointer(0);
+      const vtkIdType n = state.GetNumberOfCells();
+      for (vtkIdType c = 0; c < n; ++c)
+      {
+        if (ghost(cell++))
+        {
+          continue;
+        }
+        const vtkIdType begin = static_cast<vtkIdType>(offsets[c]);
+        const vtkIdType npts = static_cast<vtkIdType>(offsets[c + 1]) - begin;
+        const auto* pts = conn + begin;
+        for (vtkIdType k = 0; k + 2 < npts; ++k)
+        {
+          if (strip)
+          {
+            add(static_cast<vtkIdType>(pts[k]), static_cast<vtkIdType>(pts[k + 1]), static_cast<vtkIdType>(pts[k + 2]));
+          }
+          else
+          {
+            add(static_cast<vtkIdType>(pts[0]), static_cast<vtkIdType>(pts[k + 1]), static_cast<vtkIdType>(pts[k + 2]));
+          }
+        }
+      }
+    });
+  };
+  walk(poly->GetPolys(), false);
+  walk(poly->GetStrips(), true);
 }
 }
 
