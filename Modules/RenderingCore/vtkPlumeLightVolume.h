@@ -1,6 +1,6 @@
 /**
  * @class   vtkPlumeLightVolume
- * @brief   the smoke mode's cached light: per grid node, the transmittance towards each light
+ * @brief   cached per-node lighting: a 3D texture of transmittances towards up to 4 lights, drawn slice by slice
  *
  * A 3D texture of the volume's grid size with one 16-bit normalised channel
  * per light (up to 4): texel (i, j, k) holds the transmittance from node
@@ -15,8 +15,8 @@
 #ifndef vtkPlumeLightVolume_h
 #define vtkPlumeLightVolume_h
 
-#include "PlumeVolumeModule.h" // For export macro
-#include "vtkNew.h"            // For members
+#include "PlumeRenderingCoreModule.h" // For export macro
+#include "vtkNew.h"                    // For members
 #include "vtkObject.h"
 
 #include <functional> // For std::function
@@ -27,7 +27,7 @@ class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 class vtkWindow;
 
-class PLUMEVOLUME_EXPORT vtkPlumeLightVolume : public vtkObject
+class PLUMERENDERINGCORE_EXPORT vtkPlumeLightVolume : public vtkObject
 {
 public:
   static vtkPlumeLightVolume* New();
