@@ -28,13 +28,11 @@
 
 #include "PlumeAirlightModule.h" // For export macro
 #include "vtkObject.h"
-#include "vtkSmartPointer.h" // For members
 
 #include <array>  // For std::array
+#include <memory> // For std::shared_ptr
 #include <vector> // For std::vector
 
-class vtkOBBTree;
-class vtkPolyData;
 class vtkRenderer;
 
 class PLUMEAIRLIGHT_EXPORT vtkPlumeAirlightReference : public vtkObject
@@ -77,7 +75,8 @@ public:
   /**
    * Takes the renderer's visible opaque actors' polygons (in world
    * coordinates, after a render) as occluders: spot and point lights are
-   * then shadowed by exact ray casts (vtkOBBTree) from the light to each
+   * then shadowed by exact ray casts (segment against every triangle, in
+   * double, through a bounding-volume hierarchy) from the light to each
    * point of the view ray (shadow boundaries found by 256 samples per piece
    * and bisection). Call before SetLights. Without it (default) nothing
    * casts shadows.
@@ -167,8 +166,9 @@ protected:
   // 1 if the segment from `light` to `point` crosses no occluder triangle.
   bool Visible(const double light[3], const double point[3]) const;
 
-  vtkSmartPointer<vtkPolyData> Occluders;
-  vtkSmartPointer<vtkOBBTree> Tree;
+  // The occluders' triangles in a bounding-volume hierarchy (null: none).
+  struct OccluderTree;
+  std::shared_ptr<const OccluderTree> Tree;
 
   double Scattering[3] = { 0, 0, 0 };
   double Absorption[3] = { 0, 0, 0 };

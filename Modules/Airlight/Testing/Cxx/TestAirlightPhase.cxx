@@ -13,6 +13,8 @@
 //    light's cube map): the error away from shadow edges meets the same goal.
 #include "plumeAirlightTestUtil.h"
 
+#include <cstdlib> // std::getenv
+
 int TestAirlightPhase(int, char*[])
 {
   int failures = 0;
@@ -49,8 +51,10 @@ int TestAirlightPhase(int, char*[])
       PLUME_CHECK(e.Range > 0.3);
       PLUME_CHECK(e.RMS <= 0.005);
       PLUME_CHECK(e.Max <= 0.02);
-      // Error against the table's resolution (Documentation/Airlight.md).
-      if (std::fabs(g) == 0.9)
+      // Error against the table's resolution (Documentation/Airlight.md): a
+      // measurement that checks nothing, printed with PLUME_AIRLIGHT_TABLE_SWEEP=1
+      // (the 128- and 256-entry tables took a third of the test's CPU time).
+      if (std::fabs(g) == 0.9 && std::getenv("PLUME_AIRLIGHT_TABLE_SWEEP"))
       {
         for (int n : { 32, 128, 256 })
         {

@@ -1,6 +1,6 @@
 // Numeric test (no baseline) of vtkPlumeAirlightPass's shadowed path (spot
 // lights with a shadow map and the jittered march) against the independent
-// vtkPlumeAirlightReference with exact ray-cast shadows (vtkOBBTree):
+// vtkPlumeAirlightReference with exact ray-cast shadows (its own triangle hierarchy):
 // 1. a spot light above a plate over the floor of an asymmetric room: a
 //    shadow shaft below the plate. Goal: RMS <= 0.5 % and max <= 2 % of the
 //    airlight range away from shadow-edge pixels (edge pixels: where the
