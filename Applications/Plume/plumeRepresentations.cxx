@@ -6,6 +6,7 @@
 #include "plumeScene.h"
 #include "plumeSceneError.h"
 
+#include "vtkPlumeDerivedGeometry.h"
 #include "vtkPlumeInputValidation.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeVelocityGlyphMapper.h"
@@ -23,6 +24,7 @@
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataAlgorithm.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -165,14 +167,16 @@ void AddPolyActor(vtkAlgorithmOutput* port, vtkDataSet* sample, const std::strin
   renderer->AddActor(actor);
 }
 
-// The surface's own size against the memory budget, before anything is drawn:
-// the check when a dataset is read bounds it only loosely (up to 6 faces per
-// cell). Counted as the filter's output plus what the mapper uploads (point,
-// normal and colour per point: 28 bytes; three 4-byte indices per triangle).
-void CheckSurfaceBudget(vtkDataSetSurfaceFilter* surface, const std::string& where, const std::string& dataset)
+// A surface's or contour's own size against the memory budget, before
+// anything is drawn: the check when a dataset is read bounds it only loosely
+// (up to 6 faces per cell; a contour up to 5 triangles per cell and value).
+// Counted as the filter's output plus what the mapper uploads (point, normal
+// and colour per point: 28 bytes; three 4-byte indices per triangle).
+void CheckPolyBudget(vtkPolyDataAlgorithm* filter, const std::string& where, const std::string& dataset,
+  const char* noun)
 {
-  surface->Update();
-  vtkPolyData* out = surface->GetOutput();
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
   double triangles = 0;
   for (vtkCellArray* cells : { out->GetPolys(), out->GetStrips() })
   {
@@ -184,7 +188,7 @@ void CheckSurfaceBudget(vtkDataSetSurfaceFilter* surface, const std::string& whe
   const double points = static_cast<double>(out->GetNumberOfPoints());
   const double bytes = 1024.0 * static_cast<double>(out->GetActualMemorySize()) + 28.0 * points + 12.0 * triangles;
   std::ostringstream what;
-  what << "dataset '" << dataset << "': the surface's " << static_cast<long long>(triangles) << " triangles and "
+  what << "dataset '" << dataset << "': the " << noun << "'s " << static_cast<long long>(triangles) << " triangles and "
        << static_cast<long long>(points) << " points";
   const std::string tooBig = vtkPlumeInputValidation::CheckMemory(bytes, what.str());
   if (!tooBig.empty())
@@ -226,7 +230,7 @@ void BuildSurface(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
     }
     vtkNew<vtkDataSetSurfaceFilter> surface;
     surface->SetInputData(cells);
-    CheckSurfaceBudget(surface, p.Where(), dataset);
+    CheckPolyBudget(surface, p.Where(), dataset, "surface");
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputConnection(surface->GetOutputPort());
     const int component = array->GetNumberOfComponents() == 1 ? 0 : -1;
@@ -251,7 +255,7 @@ void BuildSurface(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
     WithPointArrays(RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset), { colorArray });
   vtkNew<vtkDataSetSurfaceFilter> surface;
   surface->SetInputData(data);
-  CheckSurfaceBudget(surface, p.Where(), dataset);
+  CheckPolyBudget(surface, p.Where(), dataset, "surface");
   AddPolyActor(surface->GetOutputPort(), data, colorArray, coloring, opacity, p.Where(), dataset, renderer, wireframe);
 }
 
@@ -273,6 +277,11 @@ void BuildContour(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   vtkSmartPointer<vtkDataSet> data = WithPointArrays(
     RequireDataSet(datasets.Get(dataset, p.Where()), p.Where(), dataset), { arrayName, colorArray });
   vtkDataArray* array = RequirePointArray(data, arrayName, 1, p.Where(), dataset);
+  const std::string tooMuch = vtkPlumeDerivedGeometry::CheckContourWork(data->GetNumberOfCells(), values->size());
+  if (!tooMuch.empty())
+  {
+    throw SceneError(p.Where() + ": dataset '" + dataset + "': " + tooMuch);
+  }
   vtkNew<vtkContourFilter> contour;
   contour->SetInputData(data);
   contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, array->GetName());
@@ -286,6 +295,7 @@ void BuildContour(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
     contour->SetValue(i++, v.get<double>());
   }
   contour->SetComputeScalars(!colorArray.empty());
+  CheckPolyBudget(contour, p.Where(), dataset, "contour");
   AddPolyActor(contour->GetOutputPort(), data, colorArray, coloring, opacity, p.Where(), dataset, renderer);
 }
 

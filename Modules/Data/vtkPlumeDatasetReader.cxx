@@ -357,6 +357,22 @@ private:
   }
 };
 
+// Installs a ReadWarningCatcher for its lifetime.
+class ScopedReadWarningCatcher
+{
+public:
+  ScopedReadWarningCatcher()
+  {
+    this->Catcher->Previous = vtkOutputWindow::GetInstance();
+    vtkOutputWindow::SetInstance(this->Catcher);
+  }
+  ~ScopedReadWarningCatcher() { vtkOutputWindow::SetInstance(this->Catcher->Previous); }
+  const std::string& Caught() const { return this->Catcher->Caught; }
+
+private:
+  vtkNew<ReadWarningCatcher> Catcher;
+};
+
 // The VTK reader for a resolved kind (not "vrml" or "pvd"), configured as Plume reads it.
 vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& kind, const std::string& path, const std::string& qPath)
 {
@@ -567,9 +583,13 @@ std::string ProbeRead(const std::string& kind, const std::string& path, const st
   vtkNew<FirstError> errors;
   reader->AddObserver(vtkCommand::ErrorEvent, errors);
   reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+  // the XML parser's reason ("Error parsing XML in stream at line ...") comes from an
+  // object the reader makes inside itself: it reaches the output window only
+  ScopedReadWarningCatcher inner;
   if (!reader->GetExecutive()->UpdateInformation() || reader->GetErrorCode() != 0)
   {
-    return errors->Message.empty() ? std::string("the reader failed (no details)") : errors->Message;
+    const std::string& why = errors->Message.empty() ? inner.Caught() : errors->Message;
+    return why.empty() ? std::string("the reader failed (no details)") : why;
   }
   if (auto* plot3d = vtkMultiBlockPLOT3DReader::SafeDownCast(reader))
   {
@@ -655,21 +675,6 @@ vtkSmartPointer<vtkDataObject> ImportVRML(const std::string& path, std::string& 
   return blocks;
 }
 
-// Installs a ReadWarningCatcher for its lifetime.
-class ScopedReadWarningCatcher
-{
-public:
-  ScopedReadWarningCatcher()
-  {
-    this->Catcher->Previous = vtkOutputWindow::GetInstance();
-    vtkOutputWindow::SetInstance(this->Catcher);
-  }
-  ~ScopedReadWarningCatcher() { vtkOutputWindow::SetInstance(this->Catcher->Previous); }
-  const std::string& Caught() const { return this->Catcher->Caught; }
-
-private:
-  vtkNew<ReadWarningCatcher> Catcher;
-};
 }
 
 //------------------------------------------------------------------------------
@@ -1254,11 +1259,19 @@ int vtkPlumeDatasetReader::RequestInformation(
     in.Captured.clear();
     in.ProgressOffset = 0;
     in.ProgressScale = 1;
-    const int ok = in.Reader->GetExecutive()->UpdateInformation();
+    int ok = 0;
+    std::string inner; // the XML parser's reason reaches the output window only
+    {
+      ScopedReadWarningCatcher catcher;
+      ok = in.Reader->GetExecutive()->UpdateInformation();
+      inner = catcher.Caught();
+    }
     if (!ok || !in.Captured.empty() || in.Reader->GetErrorCode() != 0)
     {
       this->LastError = "the " + kind + " reader cannot read " + path +
-        (in.Captured.empty() ? std::string(" (no details)") : in.InnerMessage());
+        (!in.Captured.empty() ? in.InnerMessage()
+            : inner.empty() ? std::string(" (no details)")
+                            : ": " + inner);
       in.Reader = nullptr; // start from scratch next time
       in.Key.clear();
       return 0;

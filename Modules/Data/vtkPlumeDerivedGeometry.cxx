@@ -390,6 +390,15 @@ int vtkPlumeDerivedGeometry::RequestDataObject(
   return 1;
 }
 
+std::string vtkPlumeDerivedGeometry::CheckContourWork(vtkIdType cells, size_t values)
+{
+  // Every cell is visited once per value. Memory has no useful bound before
+  // the filter (most cells are not cut), so it is checked after.
+  std::ostringstream what;
+  what << "the contour of " << cells << " cells at " << values << " values";
+  return vtkPlumeInputValidation::CheckWork(static_cast<double>(cells) * static_cast<double>(values), what.str());
+}
+
 double vtkPlumeDerivedGeometry::Median(vtkDataArray* array, vtkDataArray* mask)
 {
   std::vector<double> values;
@@ -619,17 +628,13 @@ bool vtkPlumeDerivedGeometry::Derive(vtkDataSet* input, vtkDataSet* seeds, vtkDa
     }
     if (this->Operation == CONTOUR)
     {
-      // Work: every cell is visited once per value. Memory has no useful bound
-      // before the filter (most cells are not cut), so it is checked after.
-      const double cells = static_cast<double>(data->GetNumberOfCells());
-      const double visits = cells * static_cast<double>(this->UsedValues.size());
-      std::ostringstream what;
-      what << "the contour of " << data->GetNumberOfCells() << " cells at " << this->UsedValues.size() << " values";
-      const std::string tooMuch = vtkPlumeInputValidation::CheckWork(visits, what.str());
+      const std::string tooMuch = CheckContourWork(data->GetNumberOfCells(), this->UsedValues.size());
       if (!tooMuch.empty())
       {
         return fail(tooMuch);
       }
+      const double visits =
+        static_cast<double>(data->GetNumberOfCells()) * static_cast<double>(this->UsedValues.size());
       this->Estimate = "at most " + Num(5 * visits) + " triangles, 5 per cell and value";
       vtkNew<vtkContourFilter> contour;
       contour->SetInputData(data);

@@ -249,6 +249,14 @@ public:
   /** Median of the valid values (finite, not masked; -1 component: magnitude) of `array`. */
   static double Median(vtkDataArray* array, vtkDataArray* mask = nullptr);
 
+  /**
+   * "" if contouring `cells` cells at `values` iso values (each cell visited
+   * once per value) fits the work budget, else "the contour of N cells at M
+   * values needs about ... operations, over the work budget of ...
+   * (PLUME_WORK_BUDGET)". Also used by `plume`'s contour representation.
+   */
+  VTK_WRAPEXCLUDE static std::string CheckContourWork(vtkIdType cells, size_t values);
+
 protected:
   vtkPlumeDerivedGeometry();
   ~vtkPlumeDerivedGeometry() override;

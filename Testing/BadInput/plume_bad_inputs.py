@@ -517,6 +517,12 @@ def build(c):
         for seed in (1, 2, 3):
             c_add("ExposedXmlInline_%s_BitFlip%d" % (mode, seed), "survive",
                   ["info", c.write("exposed/fire_%s_f%d.vtu" % (mode, seed), flip(seed, 16, 0.05)(data), "wb")])
+        if mode == "ascii":
+            # the XML parser's reason, not "the reader failed (no details)" (its parser is made
+            # inside the reader and reports to the output window only)
+            c_add("ExposedXmlInlineParseReason", "error", ["info", c.path("exposed/fire_ascii_t50.vtu")],
+                  r"the xml reader cannot read .*fire_ascii_t50\.vtu: Error parsing XML in stream at line \d+, "
+                  r"column \d+, byte index \d+: no element found$")
         c_add("ExposedXmlInline_%s_CountLie" % mode, "survive", ["info", c.write("exposed/fire_%s_lie.vtu" % mode,
               re.sub(rb'NumberOfPoints="(\d+)"', b'NumberOfPoints="99"', data, count=1), "wb")])
 
@@ -642,6 +648,22 @@ def build(c):
              r"representations\[0\] \(surface\): dataset 'v': the surface's 18252 triangles and 9600 points needs "
              r"about 1\.18 MB, over the memory budget of 1 MB \(PLUME_MEMORY_BUDGET_MB\)", env={"PLUME_MEMORY_BUDGET_MB": "1"})
     c.render("SurfaceBudgetOk", "ok", surface, "", env={"PLUME_MEMORY_BUDGET_MB": "64"})
+    # the contour representation (not the derived contour dataset): the same work check before the
+    # filter (cells x values) and the surface's memory check after it (without them 999 values of a
+    # 40^3 vortex rendered 2818140 triangles with 600 MB RSS, whatever the budgets; 19 values make
+    # 57096 triangles, 4.2 MB)
+    contour_rep = c.scene("contour_rep_budget", {"datasets": {"v": vortex40}, "representations": [
+        {"type": "contour", "dataset": "v", "array": "speed", "values": many_values}]})
+    c.render("ContourRepBudgetWork", "error", contour_rep,
+             r"representations\[0\] \(contour\): dataset 'v': the contour of 59319 cells at 999 values needs about "
+             r"5\.93e\+07 operations, over the work budget of 1e\+06 \(PLUME_WORK_BUDGET\)", env={"PLUME_WORK_BUDGET": "1e6"})
+    c.render("ContourRepBudgetMemory", "error", c.scene("contour_rep_memory", {"datasets": {"v": vortex40},
+             "representations": [{"type": "contour", "dataset": "v", "array": "speed", "values": [i / 20.0 for i in range(1, 20)]}]}),
+             r"representations\[0\] \(contour\): dataset 'v': the contour's 57096 triangles and 29520 points needs "
+             r"about [\d.]+ MB, over the memory budget of 2 MB \(PLUME_MEMORY_BUDGET_MB\)", env={"PLUME_MEMORY_BUDGET_MB": "2"})
+    c.render("ContourRepBudgetOk", "ok", c.scene("contour_rep_ok", {"datasets": {"v": vortex40}, "representations": [
+        {"type": "contour", "dataset": "v", "array": "speed", "values": [0.1, 0.5]}]}), r"wrote",
+        env={"PLUME_MEMORY_BUDGET_MB": "2", "PLUME_WORK_BUDGET": "1e6"})
 
     # ---- scenes: nesting, cycles, budgets, parameter arithmetic
     c.render("NestedRepresentations", "error", c.scene("nested_reps", '{"representations": %s}' % nested(5000)),
