@@ -22,6 +22,10 @@ of a build's bin/ and lib/ taken before the build dir changes; RUNPATH yields).
 plume-bench existed (the jobs ran inside the plume executable) is given as
 --old "OLD/build/bin/plume bench". --skip BENCH:JOB leaves out a job (repeatable),
 e.g. one the old build does not have; --also BENCH:JOB adds one (repeatable).
+--only runs the --also jobs alone (no default list, no default references);
+--reference BENCH:JOB adds a reference job (run once by the new binary, e.g.
+volume:reference:dense:256 or sheets:reference:512 for full-size jobs);
+--new-env NAME=VALUE sets an environment variable for the new binary only.
 """
 import argparse, glob, json, math, os, resource, shlex, statistics, subprocess, time
 
@@ -75,6 +79,9 @@ def measure(a):
     env_new = dict(env_old)
     if a.new_lib:
         env_new["LD_LIBRARY_PATH"] = a.new_lib
+    for assignment in a.new_env:
+        name, _, value = assignment.partition("=")
+        env_new[name] = value
     with open(a.out, "a") as out:
         def record(**kw):
             out.write(json.dumps(kw) + "\n")
@@ -84,7 +91,8 @@ def measure(a):
             for name in glob.glob("/tmp/plume-bench-volume-%d-*" % a.references_from):
                 os.symlink(name, name.replace("-%d-" % a.references_from, "-%d-" % os.getpid(), 1))
         else:
-            for bench, job, quick in REFERENCES:
+            extra = [tuple(j.split(":", 1)) + (False,) for j in a.reference]
+            for bench, job, quick in ([] if a.only else REFERENCES) + extra:
                 record(kind="reference", bench=bench, job=job, **run(a.new, env_new, bench, job, quick))
         for rnd in range(a.first_round, a.first_round + a.rounds):
             if rnd > a.first_round and a.stop_at and time.time() > a.stop_at:
@@ -92,7 +100,7 @@ def measure(a):
             order = [("old", a.old, env_old), ("new", a.new, env_new)]
             if rnd % 2 == 0:
                 order.reverse()
-            for bench, job, quick in JOBS + [tuple(j.split(":", 1)) + (False,) for j in a.also]:
+            for bench, job, quick in ([] if a.only else JOBS) + [tuple(j.split(":", 1)) + (False,) for j in a.also]:
                 if "%s:%s" % (bench, job) in a.skip:
                     continue
                 for who, binary, env in order:
@@ -109,8 +117,10 @@ def report(path):
             return (res["rms_error"], res["max_error"])
         if bench == "splat" and "error_rms" in res:
             return (res["error_rms"], res["error_max"])
-        ref, got = refs.get(("sheets", "reference:128"), {}).get("samples"), res.get("samples")
-        if bench != "sheets" or not job.startswith("ours:128:") or not ref or not got:
+        # an office-sheet job ours:SIZE:... against reference:SIZE
+        size = job.split(":")[1] if job.startswith("ours:") else ""
+        ref, got = refs.get(("sheets", "reference:" + size), {}).get("samples"), res.get("samples")
+        if bench != "sheets" or not size or not ref or not got:
             return None
         span = max(max(ref) - min(ref), 1e-12)
         e = [abs(g - r) for g, r in zip(got, ref)]
@@ -145,6 +155,13 @@ def report(path):
                     if "null" not in samples["old"] | samples["new"] else "–"
             print("| %s | `%s` | %s | %.4g | %.4g | %.2f | %s | %s | %s | %s |" % (
                 bench, job, metric, mo, mn, mn / mo if mo else float("nan"), per, fmt(errs["old"]), fmt(errs["new"]), same))
+    # jobs that time as many frames as fit in a budget (sheets: up to 3 or 15 s):
+    # their cpu_s compare the same work only where the frame counts agree
+    for bench, job in seen:
+        frames = {w: [r["result"].get("frames") for r in sorted(runs, key=lambda r: r["round"])
+                      if r["bench"] == bench and r["job"] == job and r["who"] == w] for w in ("old", "new")}
+        if any(f is not None for f in frames["old"] + frames["new"]):
+            print("frames %s `%s`: old %s, new %s" % (bench, job, frames["old"], frames["new"]))
 
 
 if __name__ == "__main__":
@@ -161,6 +178,11 @@ if __name__ == "__main__":
                    help="leave out this job (repeatable), e.g. one the old build does not have")
     p.add_argument("--also", action="append", default=[], metavar="BENCH:JOB",
                    help="run this job too (repeatable; without --quick), after the list's")
+    p.add_argument("--only", action="store_true", help="run only the --also jobs and --reference references")
+    p.add_argument("--reference", action="append", default=[], metavar="BENCH:JOB",
+                   help="compute this reference too (repeatable; new binary, without --quick)")
+    p.add_argument("--new-env", action="append", default=[], metavar="NAME=VALUE",
+                   help="set this environment variable for the new binary only (repeatable)")
     p.add_argument("--out", default="bench-compare.jsonl")
     p.add_argument("--report", metavar="JSONL")
     a = p.parse_args()
