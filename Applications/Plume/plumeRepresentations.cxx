@@ -48,10 +48,10 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   // the mapper's own parameters (roots, scale, integrator, ...) come from its table
   vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
   p.Apply(vtkPlumeVelocityGlyphMapper::GetParameterTable(), mapper);
-  if (!p.Has("scale") && !p.Has("scale_mode"))
+  if (p.Has("scale") && !p.Has("scale_mode"))
   {
-    // 1 world unit per unit speed is invisible in a room at 0.3 m/s: size glyphs to the data
-    mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_AUTO);
+    // a scene that gives a scale means it (the table's default mode is auto)
+    mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
   }
   const int roots = mapper->GetRootMode();
   const std::string rootsName = mapper->GetParameterTable().Find("roots")->FindOption(roots)->Key;

@@ -18,6 +18,7 @@ int main()
 
   vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
   mapper->SetInputData(vortex->GetOutput());
+  mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
   mapper->SetScale(0.3);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

@@ -7,6 +7,7 @@
 #include "vtkPlumeImageFrame.h"
 #include "vtkPlumeLookupTexture.h"
 #include "vtkPlumeParameterTable.h"
+#include "vtkPlumePercentile.h"
 #include "vtkPlumeShaderFeatures.h"
 #include "vtkPlumeShaderProgramCache.h"
 #include "vtkPlumeShaderVariants.h"
@@ -158,13 +159,17 @@ public:
     std::copy(high, high + 3, this->ComponentHigh);
   }
 
-  // 99th percentile of the valid nodes' speeds (RobustSpeed), one slab at a time.
-  void BuildRobustSpeed(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask)
+  // Speeds of the valid nodes (finite, not masked) whose grid index lies in
+  // `extent` (nullptr: every node), one slab at a time.
+  static void CollectSpeeds(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask,
+    const int* extent, std::vector<float>& speeds)
   {
     const vtkIdType n = image->GetNumberOfPoints();
     const vtkIdType slabPoints = vtkPlumeVectorTexture3D::SlabPoints;
+    int dims[3];
+    image->GetDimensions(dims);
+    const int* own = image->GetExtent();
     std::vector<float> slab(4 * static_cast<size_t>(std::min(n, slabPoints)));
-    std::vector<float> speeds;
     for (vtkIdType begin = 0; begin < n; begin += slabPoints)
     {
       const vtkIdType end = std::min(n, begin + slabPoints);
@@ -172,20 +177,37 @@ public:
       for (vtkIdType i = 0; i < end - begin; ++i)
       {
         const float* v = &slab[4 * static_cast<size_t>(i)];
-        if (v[3] > 0.f) // valid: finite and not masked
+        if (!(v[3] > 0.f)) // invalid: non-finite or masked
         {
-          speeds.push_back(
-            static_cast<float>(std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2])));
+          continue;
         }
+        if (extent)
+        {
+          const vtkIdType id = begin + i;
+          const int node[3] = { own[0] + int(id % dims[0]), own[2] + int((id / dims[0]) % dims[1]),
+            own[4] + int(id / (vtkIdType(dims[0]) * dims[1])) };
+          if (node[0] < extent[0] || node[0] > extent[1] || node[1] < extent[2] ||
+            node[1] > extent[3] || node[2] < extent[4] || node[2] > extent[5])
+          {
+            continue;
+          }
+        }
+        speeds.push_back(
+          static_cast<float>(std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2])));
       }
     }
+  }
+
+  // The robust maximum (RobustSpeed) and the moving nodes of the whole input.
+  void BuildRobustSpeed(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask)
+  {
+    std::vector<float> speeds;
+    CollectSpeeds(image, vectors, mask, nullptr, speeds);
     this->RobustSpeed = 0.0;
     this->MovingNodes = 0;
     if (!speeds.empty())
     {
-      const size_t k = static_cast<size_t>(std::floor(0.99 * double(speeds.size() - 1)));
-      std::nth_element(speeds.begin(), speeds.begin() + k, speeds.end());
-      this->RobustSpeed = speeds[k];
+      this->RobustSpeed = vtkPlumePercentile::Select(speeds, RobustPercentile);
       const double still = StillFraction * this->RobustSpeed;
       this->MovingNodes = std::count_if(speeds.begin(), speeds.end(), [still](float s) { return s > still; });
     }
@@ -215,6 +237,8 @@ public:
   Signature StatsSignature; // SpeedRange content
   Signature RobustSignature; // RobustSpeed content
   double RobustSpeed = 0.0;
+  // the quantile of the valid speeds that is the robust maximum
+  static constexpr double RobustPercentile = 0.99;
   // Valid nodes faster than StillFraction x RobustSpeed: the ones the
   // screen-adaptive stride spreads its glyph budget over. Below 5 % a glyph
   // is under a tenth of a cell long at the automatic scale; in carotid.vtk
@@ -297,12 +321,12 @@ const vtkPlumeParameterTable& vtkPlumeVelocityGlyphMapper::GetParameterTable()
       .Units("world units per unit speed")
       .Doc("Glyph length per unit of velocity (scale_mode `fixed`).")
       .Bind(&T::SetScale, &T::GetScale);
-    t.Choice("scale_mode", "ScaleMode", "fixed")
+    t.Choice("scale_mode", "ScaleMode", "auto")
       .Choice("fixed", SCALE_FIXED, "glyphs are `scale` x speed long.")
       .Choice("auto", SCALE_AUTO,
         "the scale that makes a glyph at the robust maximum speed (99th percentile of the valid nodes) "
         "about two root spacings long (2 grid cells x `stride` for lattice roots, else 2 grid cells).")
-      .Doc("How the glyph scale is chosen (the command line uses `auto` when a scene gives no `scale`).")
+      .Doc("How the glyph scale is chosen (a scene that gives `scale` alone means `fixed`).")
       .Bind(&T::SetScaleMode, &T::GetScaleMode);
     t.Choice("integrator", "Integrator", "straight")
       .Choice("straight", STRAIGHT, "one straight segment p to p + scale v(p) (seed 002).")
@@ -545,13 +569,33 @@ double vtkPlumeVelocityGlyphMapper::GetRobustMaximumSpeed()
 }
 
 //------------------------------------------------------------------------------
+double vtkPlumeVelocityGlyphMapper::ComputeRobustMaximumSpeed(
+  vtkImageData* image, const int extent[6], const vtkPlumePercentile::Sum& sum)
+{
+  std::vector<float> speeds;
+  vtkDataArray* vectors = nullptr;
+  vtkDataArray* mask = nullptr;
+  std::string error;
+  if (image && image->GetNumberOfPoints() > 0 &&
+    ResolveArrays(this, image, this->VectorArrayName, this->ValidMaskArrayName, vectors, mask, error))
+  {
+    Internals::CollectSpeeds(image, vectors, mask, extent, speeds);
+  }
+  // collective: every piece selects, with or without speeds
+  const double speed = vtkPlumePercentile::Select(speeds, Internals::RobustPercentile, sum);
+  return std::isfinite(speed) ? speed : 0.0;
+}
+
+//------------------------------------------------------------------------------
 double vtkPlumeVelocityGlyphMapper::GetEffectiveScale()
 {
   if (this->ScaleMode != SCALE_AUTO)
   {
     return this->Scale;
   }
-  const double speed = this->GetRobustMaximumSpeed();
+  const double speed = std::isfinite(this->AutomaticScaleSpeed) && this->AutomaticScaleSpeed > 0.0
+    ? this->AutomaticScaleSpeed
+    : this->GetRobustMaximumSpeed();
   vtkImageData* image = this->GetInput();
   if (!image || !(speed > 0.0) || !std::isfinite(speed))
   {
@@ -1098,6 +1142,7 @@ void vtkPlumeVelocityGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EffectiveStride: " << this->EffectiveStride << "\n";
   os << indent << "Scale: " << this->Scale << "\n";
   os << indent << "ScaleMode: " << this->ScaleMode << "\n";
+  os << indent << "AutomaticScaleSpeed: " << this->AutomaticScaleSpeed << "\n";
   os << indent << "Integrator: " << this->Integrator << "\n";
   os << indent << "StreamletSegments: " << this->StreamletSegments << "\n";
   os << indent << "MinimumSpeed: " << this->MinimumSpeed << "\n";

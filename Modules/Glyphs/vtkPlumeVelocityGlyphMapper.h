@@ -98,7 +98,9 @@
 
 #include "PlumeGlyphsModule.h" // For export macro
 #include "vtkMapper.h"
+#include "vtkPlumePercentile.h" // For vtkPlumePercentile::Sum
 
+#include <limits> // For std::numeric_limits
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
 
@@ -194,23 +196,35 @@ public:
   vtkGetMacro(EffectiveStride, int);
 
   ///@{
-  /** Glyph length per unit of velocity, in world units (SCALE_FIXED). Default 1. */
+  /** Glyph length per unit of velocity, in world units (SCALE_FIXED only). Default 1. */
   vtkSetMacro(Scale, double);
   vtkGetMacro(Scale, double);
   ///@}
 
   ///@{
   /**
-   * SCALE_FIXED (default): glyphs are Scale·|v| long. SCALE_AUTO: the scale
-   * is chosen so that a glyph at the robust maximum speed (the 99th
-   * percentile of the valid nodes' speeds, so one outlier does not shrink
-   * every glyph) spans about two root spacings: 2 × the largest grid spacing
-   * × LatticeStride for ROOTS_LATTICE, 2 × the largest grid spacing
+   * SCALE_AUTO (default): the scale is chosen so that a glyph at the robust
+   * maximum speed (the 99th percentile of the valid nodes' speeds, so one
+   * outlier does not shrink every glyph; or AutomaticScaleSpeed if set)
+   * spans about two root spacings: 2 × the largest grid spacing ×
+   * LatticeStride for ROOTS_LATTICE, 2 × the largest grid spacing
    * otherwise. A velocity field with no valid non-zero node falls back to
-   * Scale.
+   * Scale. SCALE_FIXED: glyphs are Scale·|v| long (set it with Scale).
    */
   vtkSetClampMacro(ScaleMode, int, SCALE_FIXED, SCALE_AUTO);
   vtkGetMacro(ScaleMode, int);
+  ///@}
+
+  ///@{
+  /**
+   * The speed SCALE_AUTO draws two root spacings long. NaN (default) or <= 0:
+   * GetRobustMaximumSpeed() of the input. Set it when the input is one piece
+   * of larger data (ParaView's representation sets the percentile over all
+   * MPI ranks' pieces, ComputeRobustMaximumSpeed, so every rank draws the
+   * same lengths) or to keep one scale over the time steps of a series.
+   */
+  vtkSetMacro(AutomaticScaleSpeed, double);
+  vtkGetMacro(AutomaticScaleSpeed, double);
   ///@}
 
   /**
@@ -224,6 +238,20 @@ public:
    * not masked), the robust maximum SCALE_AUTO uses; 0 without input.
    */
   double GetRobustMaximumSpeed();
+
+#ifndef __VTK_WRAP__
+  /**
+   * GetRobustMaximumSpeed of data split into pieces (MPI ranks): the 99th
+   * percentile of the valid speeds (this mapper's VectorArrayName and
+   * ValidMaskArrayName) of every piece's nodes whose grid index lies within
+   * `extent` (nullptr: all of `image`), the counts summed over the pieces by
+   * `sum` (empty: this piece alone). Exact (vtkPlumePercentile): equals
+   * GetRobustMaximumSpeed of the whole data when the pieces' extents tile it
+   * without overlap. Collective: every piece calls it, a piece without data
+   * with image nullptr. 0 when no piece has a valid node.
+   */
+  double ComputeRobustMaximumSpeed(vtkImageData* image, const int extent[6], const vtkPlumePercentile::Sum& sum);
+#endif
 
   ///@{
   /** STRAIGHT (default), RK2 or RK4; other values are treated as STRAIGHT. */
@@ -356,7 +384,8 @@ protected:
   double ScreenSpacing = 12.0;
   int EffectiveStride = 1;
   double Scale = 1.0;
-  int ScaleMode = SCALE_FIXED;
+  int ScaleMode = SCALE_AUTO;
+  double AutomaticScaleSpeed = std::numeric_limits<double>::quiet_NaN();
   int Integrator = STRAIGHT;
   int StreamletSegments = 8;
   double MinimumSpeed = 0.0;

@@ -111,7 +111,7 @@ def style(rep, association):
     pwf = simple.GetOpacityTransferFunction(NAME)
     pwf.Points = [0.0, 0.0, 0.5, 0.0, 0.05, 0.0, 0.5, 0.0, 1.0, 0.9, 0.5, 0.0]
     pwf.RescaleTransferFunction(0.0, 1.0)
-    rep.ScalarOpacityUnitDistance = 0.3
+    rep.PlumeVolumeOpacityUnitDistance = 0.3
 
 
 def render():

@@ -135,6 +135,31 @@ def check_baseline(image, name, levels=2, fraction=0.995, output=None):
     return ok
 
 
+def robust_speed(image, array="vectors"):
+    """The 99th percentile of the finite speeds of an image's point vectors,
+    computed here (numpy), not by Plume: the element of rank
+    floor(0.99 (n - 1)), each speed rounded to float as the glyph mapper
+    stores it. Without nodes: None."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    vectors = image.GetPointData().GetArray(array) if image else None
+    if vectors is None or vectors.GetNumberOfTuples() == 0:
+        return None
+    v = vtk_to_numpy(vectors).astype(np.float32).astype(np.float64)
+    v = v[np.isfinite(v).all(axis=1)]
+    speeds = np.sqrt(v[:, 0] * v[:, 0] + v[:, 1] * v[:, 1] + v[:, 2] * v[:, 2]).astype(np.float32)
+    k = int(np.floor(0.99 * (speeds.size - 1)))
+    return float(np.partition(speeds, k)[k])
+
+
+def automatic_scale(image, stride=1):
+    """The glyph scale SCALE_AUTO should choose (as the plume command line
+    does): two grid cells (the largest spacing) times the lattice stride at
+    the robust maximum speed."""
+    cell = max(abs(s) for s, d in zip(image.GetSpacing(), image.GetDimensions()) if d > 1)
+    return 2.0 * cell * stride / robust_speed(image)
+
+
 def not_blank(image, background, minimum=0.02):
     """Share of pixels that differ from the background (the representation drew something)."""
     bg = np.array([round(255 * c) for c in background])

@@ -18,7 +18,7 @@ def volume(source, v):
     pwf = simple.GetOpacityTransferFunction("scalars")
     pwf.Points = [0.0, 0.0, 0.5, 0.0, 100.0, 0.0, 0.5, 0.0, 580.0, 0.6, 0.5, 0.0]
     pwf.RescaleTransferFunction(0.0, 580.0)
-    rep.ScalarOpacityUnitDistance = 2.0
+    rep.PlumeVolumeOpacityUnitDistance = 2.0
     return rep
 
 
@@ -28,10 +28,6 @@ def volume_default(source, v):
     rep = simple.Show(source, v)
     rep.Representation = "Plume Volume"
     simple.ColorBy(rep, ("POINTS", None))
-    # Set: its default differs between pvbatch serial (1.84, ParaView's
-    # approximate cell length) and symmetric MPI (1); this scene is about
-    # the colour and opacity range.
-    rep.ScalarOpacityUnitDistance = 2.0
     return rep
 
 
@@ -52,6 +48,15 @@ def sheet(source, v, redistribute=False):
 
 
 def lines(source, v):
+    rep = lines_auto(source, v)
+    rep.PlumeLinesScaleMode = "fixed"
+    rep.PlumeLinesScale = 0.3
+    return rep
+
+
+def lines_auto(source, v):
+    """The lines with the glyph scale left at its default (automatic: two
+    grid cells at the 99th percentile of the speeds, over all ranks)."""
     rep = simple.Show(source, v)
     rep.Representation = "Plume Velocity Lines"
     simple.ColorBy(rep, ("POINTS", "vectors", "Magnitude"))
@@ -61,7 +66,6 @@ def lines(source, v):
     # Every node of the lattice: the same roots however the grid is split.
     rep.PlumeLinesRootMode = "lattice"
     rep.PlumeLinesLatticeStride = 1
-    rep.PlumeLinesScale = 0.3
     # Opaque lines: ranks are composited by depth, which cannot blend a
     # translucent root over another rank's lines behind it.
     rep.PlumeLinesRootAlpha = 1.0
@@ -111,5 +115,5 @@ def splat_points(source, v):
     pwf = simple.GetOpacityTransferFunction("density")
     pwf.Points = [0.0, 0.0, 0.5, 0.0, 0.5, 0.4, 0.5, 0.0]
     pwf.RescaleTransferFunction(0.0, 0.5)
-    rep.ScalarOpacityUnitDistance = 2.0
+    rep.PlumeVolumeOpacityUnitDistance = 2.0
     return rep

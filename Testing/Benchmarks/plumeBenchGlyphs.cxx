@@ -84,6 +84,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     {
       ours->SetMaximumGlyphsPerDraw(16384); // least driver memory, at some time
     }
+    ours->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
     ours->SetScale(GlyphScale);
     ours->SetRootAlpha(1.0); // opaque lines, as the peers draw them
     ours->SetLookupTable(Table(speedRange[1]));

@@ -168,6 +168,7 @@ nlohmann::json RunHandOverJob(const Context& context, bool on, int npts, int gri
   mapper->SetInputConnection(ours->GetOutputPort());
   mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
   mapper->SetLatticeStride(8);
+  mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED); // as before auto was the default
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   renderer->AddActor(actor);

@@ -148,6 +148,7 @@ Scene Make(const std::array<int, 4>& order, bool withPass, bool peeling, double 
   vtkNew<vtkPlumeVelocityGlyphMapper> glyphMapper;
   glyphMapper->SetInputData(vortex->GetOutput());
   glyphMapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
+  glyphMapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
   glyphMapper->SetScale(0.5);
   glyphMapper->SetRootAlpha(0.1); // faded roots blend with what is behind them
   glyphMapper->SetLookupTable(lut);

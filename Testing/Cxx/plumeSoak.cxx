@@ -173,6 +173,7 @@ int main(int argc, char* argv[])
       glyphs->SetVectorArrayName("velocity");
       glyphs->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
       glyphs->SetLatticeStride(3);
+      glyphs->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
       glyphs->SetScale(0.05);
       glyphs->SetLookupTable(lut);
       r->AddActor(glyphActor);

@@ -13,6 +13,15 @@
  * map's own range, so every rank colours alike. Without a colour map the
  * mapper's default (the data's speed range) is used.
  *
+ * The automatic glyph scale (ScaleMode auto, the default) comes from the
+ * robust maximum speed of all ranks' pieces together: RequestData computes
+ * it with the global controller (vtkPlumeVelocityGlyphMapper::
+ * ComputeRobustMaximumSpeed, exact; the seam nodes that pieces of one image
+ * share count once) and sets the mapper's AutomaticScaleSpeed, so every
+ * rank draws the same speed at the same length, as the serial run does.
+ * Pieces resampled from other datasets, or several leaves merged on a rank,
+ * count their own lattice nodes (approximate where pieces overlap).
+ *
  * In parallel each rank draws the glyphs rooted in its piece; the lines are
  * opaque, so the ranks' images are composited by depth.
  */
@@ -57,6 +66,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   bool PrepareRender(vtkDataObject* piece) override;
+  /** Sets the mapper's AutomaticScaleSpeed over all ranks' pieces (nodes of `owned` only, if given). */
+  void ReduceAutomaticScaleSpeed(const int* owned);
 
   vtkSmartPointer<vtkPlumeVelocityGlyphMapper> Mapper;
   vtkSmartPointer<vtkActor> Actor;

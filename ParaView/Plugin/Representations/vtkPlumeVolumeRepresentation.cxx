@@ -124,11 +124,6 @@ void vtkPlumeVolumeRepresentation::SetScalarOpacity(vtkPiecewiseFunction* pwf)
   this->Modified();
 }
 
-void vtkPlumeVolumeRepresentation::SetScalarOpacityUnitDistance(double distance)
-{
-  this->Property->SetScalarOpacityUnitDistance(distance);
-}
-
 void vtkPlumeVolumeRepresentation::SetInputArrayToProcess(
   int idx, int port, int connection, int fieldAssociation, const char* name)
 {

@@ -3,10 +3,12 @@
  * @brief   ParaView representation "Plume Volume": vtkPlumeVolumeMapper on image data
  *
  * Behaves like ParaView's own "Volume" representation: the colour map
- * (LookupTable, a vtkColorTransferFunction), the opacity editor's function
- * (ScalarOpacityFunction) and ScalarOpacityUnitDistance go into the
- * vtkVolumeProperty the mapper reads, ColorArrayName picks the rendered point
- * array. Not coloured by an array (ParaView colours by one on its own only
+ * (LookupTable, a vtkColorTransferFunction) and the opacity editor's
+ * function (ScalarOpacityFunction) go into the vtkVolumeProperty the mapper
+ * reads, ColorArrayName picks the rendered point array. The opacity unit
+ * distance is the mapper's own OpacityUnitDistance (default: one voxel, the
+ * same in serial and over MPI ranks), not ParaView's ScalarOpacityUnitDistance,
+ * whose default ParaView derives from the data in serial runs only. Not coloured by an array (ParaView colours by one on its own only
  * for the types it names "Volume" or "Slice", so a first Apply of "Plume
  * Volume" comes without), it renders the active point scalars with
  * ParaView's defaults for a volume: "Cool to Warm" and an opacity ramp from
@@ -57,8 +59,6 @@ public:
   void SetLookupTable(vtkScalarsToColors* lut);
   /** ParaView's opacity function. */
   void SetScalarOpacity(vtkPiecewiseFunction* pwf);
-  /** World length over which the opacity function's opacity is reached. Default 1. */
-  void SetScalarOpacityUnitDistance(double distance);
   /** ColorArrayName: the point array rendered (other associations are ignored). */
   void SetInputArrayToProcess(int idx, int port, int connection, int fieldAssociation, const char* name) override;
   using Superclass::SetInputArrayToProcess;

@@ -36,6 +36,7 @@ int TestVelocityGlyphAccuracy(int, char*[])
   vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
   mapper->SetInputData(image);
   mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
+  mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
   mapper->SetScale(0.45);
   mapper->SetRootAlpha(1.0);
   mapper->SetLookupTable(lut);
@@ -141,6 +142,7 @@ int TestVelocityGlyphAccuracy(int, char*[])
     vtkNew<vtkPlumeVelocityGlyphMapper> denseMapper;
     denseMapper->SetInputData(dense->GetOutput());
     denseMapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
+    denseMapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
     denseMapper->SetScale(0.3);
     actor->SetMapper(denseMapper);
     ren->ResetCamera();

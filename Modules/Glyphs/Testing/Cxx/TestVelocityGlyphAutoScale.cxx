@@ -1,9 +1,11 @@
 // ScaleMode SCALE_AUTO: the scale makes a glyph at the robust maximum speed
 // (99th percentile of the valid speeds) span two root spacings. Checked
 // against a double-precision reference (a full sort, no code shared with the
-// mapper's nth_element) on a field with an outlier, a masked node and a NaN;
-// the bounds and the drawn image must use that scale: the auto render equals
-// a fixed render at the reference scale and differs from the default Scale 1.
+// mapper's vtkPlumePercentile) on a field with an outlier, a masked node and
+// a NaN; the bounds and the drawn image must use that scale: the auto render
+// equals a fixed render at the reference scale and differs from Scale 1.
+// SCALE_AUTO is the default; AutomaticScaleSpeed replaces the robust speed;
+// ComputeRobustMaximumSpeed over a sub-extent equals the reference over it.
 #include "plumeTestSupport.h"
 #include "vtkPlumeVelocityGlyphMapper.h"
 
@@ -64,7 +66,8 @@ vtkSmartPointer<vtkImageData> MakeField()
   return image;
 }
 
-double ReferenceRobustSpeed(vtkImageData* image)
+// over the nodes with x index < xEnd
+double ReferenceRobustSpeed(vtkImageData* image, int xEnd = NX)
 {
   vtkDataArray* v = image->GetPointData()->GetArray("v");
   vtkDataArray* mask = image->GetPointData()->GetArray("vtkValidPointMask");
@@ -73,7 +76,7 @@ double ReferenceRobustSpeed(vtkImageData* image)
   {
     const double* t = v->GetTuple3(i);
     const double s = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-    if (mask->GetComponent(i, 0) != 0 && std::isfinite(s))
+    if (mask->GetComponent(i, 0) != 0 && std::isfinite(s) && i % NX < xEnd)
     {
       speeds.push_back(s);
     }
@@ -118,10 +121,15 @@ int TestVelocityGlyphAutoScale(int, char*[])
   mapper->SetInputData(image);
   mapper->SetVectorArrayName("v");
   mapper->SetScale(0.7);
-  if (mapper->GetScaleMode() != vtkPlumeVelocityGlyphMapper::SCALE_FIXED ||
-    mapper->GetEffectiveScale() != 0.7)
+  if (mapper->GetScaleMode() != vtkPlumeVelocityGlyphMapper::SCALE_AUTO)
   {
-    std::printf("FAIL: default mode is not fixed at Scale (%g)\n", mapper->GetEffectiveScale());
+    std::printf("FAIL: the default mode is not auto\n");
+    ++failures;
+  }
+  mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
+  if (mapper->GetEffectiveScale() != 0.7)
+  {
+    std::printf("FAIL: fixed mode does not draw at Scale (%g)\n", mapper->GetEffectiveScale());
     ++failures;
   }
   mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_AUTO);
@@ -148,6 +156,27 @@ int TestVelocityGlyphAutoScale(int, char*[])
   }
   std::printf("robust speed %.6g (reference %.6g), auto scale %.6g (stride 3: %.6g)\n", speed, robust,
     screenScale, latticeScale);
+
+  // a speed given from outside (e.g. the percentile over MPI ranks) replaces the robust one
+  mapper->SetAutomaticScaleSpeed(2.0 * robust);
+  if (std::fabs(mapper->GetEffectiveScale() - 0.5 * latticeScale) > 1e-6 * latticeScale)
+  {
+    std::printf("FAIL: auto scale at AutomaticScaleSpeed 2 x robust %.9g, expected %.9g\n",
+      mapper->GetEffectiveScale(), 0.5 * latticeScale);
+    ++failures;
+  }
+  mapper->SetAutomaticScaleSpeed(std::numeric_limits<double>::quiet_NaN());
+  // the piece-wise computation: whole image, then the nodes with x < 5 only
+  const int half[6] = { 0, 4, 0, NY - 1, 0, NZ - 1 };
+  const double whole = mapper->ComputeRobustMaximumSpeed(image, nullptr, {});
+  const double piece = mapper->ComputeRobustMaximumSpeed(image, half, {});
+  const double pieceReference = ReferenceRobustSpeed(image, 5);
+  if (whole != speed || std::fabs(piece - pieceReference) > 1e-6 * pieceReference)
+  {
+    std::printf("FAIL: ComputeRobustMaximumSpeed whole %.9g (expected %.9g), x < 5 %.9g (reference %.9g)\n",
+      whole, speed, piece, pieceReference);
+    ++failures;
+  }
 
   // the bounds are padded by the scale times the vector range: with the
   // outlier (10 along x) the padding along +x is auto scale x 10

@@ -37,6 +37,7 @@ int TestVelocityGlyphCarotid(int argc, char* argv[])
     mapper->SetInputConnection(reader->GetOutputPort());
     mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
     mapper->SetLatticeStride(3);
+    mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
     mapper->SetScale(0.6);
     mapper->SetMinimumSpeed(0.5);
     mapper->SetColorByMagnitude(side == 1);

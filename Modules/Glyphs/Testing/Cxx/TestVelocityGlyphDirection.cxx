@@ -38,6 +38,7 @@ FloatImage Draw(vtkImageData* image, vtkMatrix4x4* actorMatrix, int integrator)
   vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
   mapper->SetInputData(image);
   mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
+  mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
   mapper->SetScale(0.3);
   mapper->SetIntegrator(integrator);
   mapper->SetRootAlpha(1.0);

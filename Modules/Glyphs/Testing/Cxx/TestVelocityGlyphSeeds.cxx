@@ -36,11 +36,13 @@ int TestVelocityGlyphSeeds(int argc, char* argv[])
     mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_SEEDS);
     if (side == 0)
     {
+      mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
       mapper->SetScale(0.3);
       mapper->SetLineWidth(3.0);
     }
     else
     {
+      mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
       mapper->SetScale(0.9);
       mapper->SetIntegrator(vtkPlumeVelocityGlyphMapper::RK4);
       mapper->SetStreamletSegments(16);

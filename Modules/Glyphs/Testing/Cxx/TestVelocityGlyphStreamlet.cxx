@@ -80,6 +80,7 @@ int TestVelocityGlyphStreamlet(int, char*[])
   mapper->SetLatticeStride(4);
   mapper->SetIntegrator(vtkPlumeVelocityGlyphMapper::RK4);
   mapper->SetStreamletSegments(segments);
+  mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
   mapper->SetScale(scale);
   mapper->SetRootAlpha(1.0);
   mapper->SetLineWidth(2.0);

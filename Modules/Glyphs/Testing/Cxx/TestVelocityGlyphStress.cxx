@@ -243,6 +243,7 @@ int TestVelocityGlyphStress(int, char*[])
     const float v[3] = { 2e-3f, 50.0f, 0.3f };
     auto image = MakeImage(6, 6, 6, zero, spacing, v);
     Scene scene(image);
+    scene.Mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
     scene.Mapper->SetScale(0.5);
     scene.Renderer->ResetCamera();
     const size_t fg = scene.Check("anisotropic", failures);
@@ -261,6 +262,7 @@ int TestVelocityGlyphStress(int, char*[])
       vortex->SetCenter(shift + 0.2, shift - 0.1, shift);
       vortex->Update();
       Scene scene(vortex->GetOutput(), 200);
+      scene.Mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
       scene.Mapper->SetScale(0.3);
       scene.Mapper->SetLatticeStride(2);
       scene.Mapper->SetColorByMagnitude(true);
@@ -287,6 +289,7 @@ int TestVelocityGlyphStress(int, char*[])
     for (int mode = 0; mode < 3; ++mode)
     {
       Scene scene(vortex->GetOutput(), 200);
+      scene.Mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
       scene.Mapper->SetScale(0.2);
       scene.Mapper->SetLineWidth(mode == 0 ? 1.0 : 3.0);
       scene.Mapper->SetIntegrator(mode == 2 ? vtkPlumeVelocityGlyphMapper::RK4 : vtkPlumeVelocityGlyphMapper::STRAIGHT);
@@ -374,6 +377,7 @@ int TestVelocityGlyphStress(int, char*[])
     const float v[3] = { 1, 0, 0 };
     auto image = MakeImage(1, 1, 1, zero, unit, v);
     Scene scene(image);
+    scene.Mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
     scene.Mapper->SetScale(0.15);
     scene.Renderer->ResetCamera();
     auto brightest = [&](const std::string& name) {

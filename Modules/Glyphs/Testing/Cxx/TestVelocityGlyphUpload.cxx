@@ -46,6 +46,7 @@ int TestVelocityGlyphUpload(int, char*[])
   window->Render();
   PLUME_CHECK(mapper->GetUploadCount() == 1);
   ren->GetActiveCamera()->Azimuth(20);
+  mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
   mapper->SetScale(0.7);
   mapper->SetIntegrator(vtkPlumeVelocityGlyphMapper::RK2);
   mapper->SetLineWidth(2.5);

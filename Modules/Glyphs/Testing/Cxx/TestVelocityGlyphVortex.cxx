@@ -27,6 +27,7 @@ int TestVelocityGlyphVortex(int argc, char* argv[])
     mapper->SetInputConnection(vortex->GetOutputPort());
     mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
     mapper->SetLatticeStride(side == 0 ? 2 : 3);
+    mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
     mapper->SetScale(side == 0 ? 0.35 : 0.8);
     mapper->SetIntegrator(side == 0 ? vtkPlumeVelocityGlyphMapper::STRAIGHT
                                     : vtkPlumeVelocityGlyphMapper::RK4);

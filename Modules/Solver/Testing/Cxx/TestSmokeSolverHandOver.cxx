@@ -62,6 +62,7 @@ struct View
     this->Renderer->AddVolume(this->Volume);
     this->GlyphMapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
     this->GlyphMapper->SetLatticeStride(3);
+    this->GlyphMapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
     this->GlyphMapper->SetScale(0.4);
     this->GlyphMapper->SetRootAlpha(1.0);
     this->Glyphs->SetMapper(this->GlyphMapper);

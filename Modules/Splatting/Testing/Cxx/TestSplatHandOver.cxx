@@ -53,6 +53,7 @@ struct View
     this->Actor->SetMapper(this->Mapper);
     this->Mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
     this->Mapper->SetLatticeStride(2);
+    this->Mapper->SetScaleMode(vtkPlumeVelocityGlyphMapper::SCALE_FIXED);
     this->Mapper->SetScale(0.06);
     this->Mapper->SetRootAlpha(1.0);
     this->Renderer->GetActiveCamera()->SetPosition(0.3, -2.5, 2.0);
