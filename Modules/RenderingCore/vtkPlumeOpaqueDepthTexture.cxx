@@ -98,6 +98,16 @@ bool vtkPlumeOpaqueDepthTexture::Capture(vtkRenderer* renderer)
   if (this->Texture->GetContext() != window || !this->Texture->GetHandle() ||
     this->Size[0] != width || this->Size[1] != height || this->Format != format)
   {
+    if (this->Texture->GetHandle() && this->Format != format)
+    {
+      // A fresh texture object: vtkTextureObject::AllocateDepth keeps the
+      // internal format of an earlier allocation, and a blit between depth
+      // formats that differ is illegal ("depth attachment format mismatch").
+      // The same mapper meets several formats, e.g. a vtkFramebufferPass's
+      // float depth, then a window's DEPTH_COMPONENT32.
+      this->Texture->ReleaseGraphicsResources(window);
+      this->Texture = vtkSmartPointer<vtkTextureObject>::New();
+    }
     this->Texture->SetContext(window);
     this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
     this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
@@ -179,6 +189,9 @@ bool vtkPlumeOpaqueDepthTexture::ResolveNearest(
     this->Format != this->MultisampledFormat)
   {
     ms->ReleaseGraphicsResources(window);
+    // a fresh object: AllocateDepth would keep an earlier internal format (see Capture)
+    this->Multisampled = vtkSmartPointer<vtkTextureObject>::New();
+    ms = this->Multisampled;
     ms->SetContext(window);
     ms->SetSamples(samples);
     if (!ms->AllocateDepth(width, height, this->Format))

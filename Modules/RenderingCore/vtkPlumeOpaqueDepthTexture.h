@@ -8,7 +8,8 @@
  * the framebuffer VTK is drawing into (its offscreen render framebuffer or
  * the default one) into a 2D depth texture of the viewport's
  * size (nearest filtering). The texture is reallocated only when the
- * viewport size changes.
+ * viewport size or the source's depth format changes (a fresh texture then:
+ * a blit between unequal depth formats is illegal).
  *
  * In GLSL, read it with the fragment's position relative to the viewport:
  * @code

@@ -312,18 +312,9 @@ nlohmann::json RunSmokeVolume(const Context& context, vtkRenderWindow* window, v
   volume->SetProperty(property);
   renderer->AddVolume(volume);
 
-  // Drawn into a framebuffer copied to the window, as ours is: in this
-  // window's own framebuffer the mapper cannot copy the opaque depth (Mesa:
-  // "depth attachment format mismatch" in the blit) and its rays would not
-  // stop at the room's surfaces. Timed first: the frame's cost does not
-  // depend on the brightness fitted below.
-  vtkNew<vtkRenderStepsPass> steps;
-  vtkNew<vtkFramebufferPass> framebuffer;
-  framebuffer->SetDelegatePass(steps);
-  renderer->SetPass(framebuffer);
+  // Drawn straight into the window (a plain vtkRenderer). Timed first: the
+  // frame's cost does not depend on the brightness fitted below.
   const double frameTime = TimeFrames(window, renderer, frames, 1);
-  renderer->SetPass(nullptr);
-  framebuffer->ReleaseGraphicsResources(window);
   // The brightness scale, then the error at that scale.
   const int stride = context.Quick ? 4 : 16;
   volume->VisibilityOff();
