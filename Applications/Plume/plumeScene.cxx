@@ -209,8 +209,35 @@ bool HasSolutionArrays(vtkDataSetAttributes* attributes)
 }
 
 /**
+ * Whether every point array has a cell array of the same name: the points
+ * hold a reader's interpolation of the cells (OpenFOAM's cell-to-point, which
+ * gives boundary points their patch's value: a 600 K floor patch under a room
+ * at 300 K becomes a 600 K layer of points).
+ */
+bool PointsInterpolateCells(vtkDataSet* ds)
+{
+  vtkPointData* points = ds->GetPointData();
+  if (!HasSolutionArrays(points) || !HasSolutionArrays(ds->GetCellData()))
+  {
+    return false;
+  }
+  for (int i = 0; i < points->GetNumberOfArrays(); ++i)
+  {
+    const char* n = points->GetArrayName(i);
+    if (n && std::string(n) != "vtkValidPointMask" && std::string(n) != "vtkGhostType" &&
+      !ds->GetCellData()->GetArray(n))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/**
  * A dataset's "association": "cell" (or "auto" on an image with cell arrays
- * and no point arrays): its cell values on the lattice of cell centres
+ * and no point arrays, or on a mesh whose point arrays interpolate its cell
+ * arrays when its cells are a 3D lattice of equal boxes, as a blockMesh
+ * case): its cell values on the lattice of cell centres
  * (vtkPlumeCellCenteredImage), what every representation then samples as
  * point data, so volumes, glyphs and contours show the cells' own values.
  */
@@ -220,7 +247,8 @@ vtkSmartPointer<vtkDataObject> CellCentered(
   auto* ds = vtkDataSet::SafeDownCast(data);
   const bool cellOnlyImage = vtkImageData::SafeDownCast(data) && !HasSolutionArrays(ds->GetPointData()) &&
     HasSolutionArrays(ds->GetCellData());
-  if (association == "point" || (association == "auto" && !cellOnlyImage))
+  const bool interpolatedPoints = ds && !vtkImageData::SafeDownCast(data) && PointsInterpolateCells(ds);
+  if (association == "point" || (association == "auto" && !cellOnlyImage && !interpolatedPoints))
   {
     return data;
   }
@@ -232,19 +260,32 @@ vtkSmartPointer<vtkDataObject> CellCentered(
   }
   vtkNew<vtkPlumeCellCenteredImage> centres;
   centres->SetInputData(ds);
-  centres->SetMaximumDimension(maximumDimension);
+  // auto on interpolated points keeps only an exact lattice (below): a probe would be thrown away
+  const bool autoCells = association == "auto" && interpolatedPoints;
+  centres->SetMaximumDimension(autoCells ? 2 : maximumDimension);
   centres->GlobalWarningDisplayOff(); // its error is reported here, once
   centres->Update();
+  vtkImageData* image = centres->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  if (autoCells &&
+    !(centres->GetLastError().empty() && centres->GetExact() && dims[0] > 1 && dims[1] > 1 && dims[2] > 1))
+  {
+    // Only an exact 3D lattice: elsewhere cells would be sampled, not kept, and a
+    // one-cell-thick (2D) case gives a plane of centres no volume can show.
+    return data;
+  }
   if (!centres->GetLastError().empty())
   {
     throw SceneError("datasets." + name + ": " + centres->GetLastError());
   }
-  vtkImageData* image = centres->GetOutput();
-  int dims[3];
-  image->GetDimensions(dims);
   std::ostringstream note;
   note << "datasets." << name << ": cell values at the " << dims[0] << "x" << dims[1] << "x" << dims[2]
-       << " cell centres" << (association == "auto" ? " (an image with cell arrays only)" : "")
+       << " cell centres"
+       << (association != "auto" ? ""
+             : cellOnlyImage ? " (an image with cell arrays only)"
+                             : " (its point arrays interpolate its cell arrays, with boundary values at "
+                               "boundary points; \"association\": \"point\" keeps them)")
        << (centres->GetExact() ? ", every cell exactly"
                                : ", each sample the value of the cell containing it (cells are not one box lattice)");
   Note(note.str());

@@ -5,11 +5,14 @@
 #include "plumeScene.h"
 #include "plumeSceneError.h"
 
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPlumeSheetMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
@@ -225,7 +228,7 @@ void PressKey(vtkRenderWindowInteractor* iren, char key)
 }
 
 /** The smallest render time VTK allocated to a volume in the last frame (what the volume mapper reads). */
-std::string VolumeTimes(vtkRenderer* renderer)
+std::string VolumeAllocated(vtkRenderer* renderer)
 {
   vtkVolumeCollection* volumes = renderer->GetVolumes();
   volumes->InitTraversal();
@@ -241,6 +244,28 @@ std::string VolumeTimes(vtkRenderer* renderer)
   std::ostringstream out;
   out << "volume allocated " << least << " s (" << (least < 1.0 ? "interactive" : "still") << " settings)";
   return out.str();
+}
+
+/**
+ * VolumeAllocated, and how each grid-mode sheet drew the last frame (its
+ * interactive or still raycast settings).
+ */
+std::string VolumeTimes(vtkRenderer* renderer)
+{
+  std::ostringstream sheets;
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* actor = actors->GetNextActor())
+  {
+    auto* sheet = vtkPlumeSheetMapper::SafeDownCast(actor->GetMapper());
+    if (sheet && sheet->GetRenderMode() == vtkPlumeSheetMapper::RENDER_GRID && actor->GetVisibility())
+    {
+      sheets << ", sheet grid " << (sheet->GetLastInteractive() ? "interactive" : "still") << " (step "
+             << sheet->GetLastGridSampleDistance() << " spacings, 1 ray per " << sheet->GetLastImageSampleDistance()
+             << " px)";
+    }
+  }
+  return VolumeAllocated(renderer) + sheets.str();
 }
 }
 
