@@ -126,6 +126,11 @@ public:
   static const vtkPlumeParameterTable& GetParameterTable();
 
   void Render(const vtkRenderState* s) override;
+  /**
+   * Frees the pass's GL objects. The renderer calls it when its window goes;
+   * as with VTK's own passes, call it before taking the pass out of a
+   * renderer whose window stays, or the objects are never freed.
+   */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
   ///@{

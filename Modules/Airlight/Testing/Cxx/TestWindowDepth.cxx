@@ -116,6 +116,12 @@ Frames Render(bool offscreen, int samples, bool reference, int& failures)
     }
     s.Renderer->SetPass(pass);
     airtest::FloatImage image = plume::test::ReadBack(s.Window);
+    if (pass)
+    {
+      // A pass taken out of its renderer is no longer released with it (VTK's
+      // convention): free its GL objects first, or they leak (LeakSanitizer).
+      pass->ReleaseGraphicsResources(s.Window);
+    }
     s.Renderer->SetPass(nullptr);
     return image;
   };
