@@ -17,6 +17,8 @@
 
 #include "vtkCamera.h"
 #include "vtkImageData.h"
+#include "vtkGenericCell.h"
+#include "vtkCellTypes.h"
 #include "vtkPolyData.h"
 #include "vtkCellData.h"
 #include "vtkPointData.h"
@@ -113,10 +115,28 @@ std::string FramePath(const std::string& output, int step)
 
 /**
  * Quick look (`plume render FILE`): a scene chosen from what the dataset holds.
- * Vectors -> glyph lines coloured by speed; an image with a scalar array and no
- * vectors -> a composite volume; polygons only -> the surface (coloured by its
+ * Vectors -> glyph lines coloured by speed; an image, or a mesh of 3D cells (a
+ * CFD case), with a scalar array and no vectors -> a composite volume (meshes
+ * resampled onto an image); polygons only -> the surface (coloured by its
  * first scalar array); anything else -> the outer surface. Always the outline.
  */
+// Whether the dataset has cells of dimension 3 (hexahedra, tetrahedra, ...).
+static bool HasVolumeCells(vtkDataSet* data)
+{
+  vtkNew<vtkCellTypes> types;
+  data->GetCellTypes(types);
+  vtkNew<vtkGenericCell> cell;
+  for (vtkIdType i = 0; i < types->GetNumberOfTypes(); ++i)
+  {
+    cell->SetCellType(types->GetCellType(i));
+    if (cell->GetCellDimension() == 3)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 nlohmann::json QuickLookScene(const std::string& file)
 {
   std::string path = file;
@@ -194,7 +214,7 @@ nlohmann::json QuickLookScene(const std::string& file)
     reps.push_back({ { "type", "glyphs" }, { "dataset", "data" }, { "vectors", vectors }, { "roots", "lattice" },
       { "stride", stride } });
   }
-  else if (!scalars.empty() && vtkImageData::SafeDownCast(data))
+  else if (!scalars.empty() && (vtkImageData::SafeDownCast(data) || HasVolumeCells(data)))
   {
     reps.push_back({ { "type", "volume" }, { "dataset", "data" }, { "array", scalars } });
   }
