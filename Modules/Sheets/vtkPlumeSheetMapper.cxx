@@ -27,6 +27,8 @@
 #include "vtkVolumeProperty.h"
 
 #include "vtkActor.h"
+#include "vtkActor2D.h"
+#include "vtkPropCollection.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
@@ -378,6 +380,13 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
       .Doc("Grid mode: one ray per this many pixels while the camera moves (interpolated where the "
            "rays agree).")
       .Bind(&T::SetInteractiveImageSampleDistance, &T::GetInteractiveImageSampleDistance);
+    t.Real("interactive_lattice_tolerance", "InteractiveLatticeTolerance", 0.004)
+      .Between(0.0, 1.0)
+      .Panel("Quality")
+      .Advanced()
+      .Doc("Grid mode, while the camera moves: lattice rays that differ by more than this (transmittance) "
+           "make the pixels between them cast their own rays.")
+      .Bind(&T::SetInteractiveLatticeTolerance, &T::GetInteractiveLatticeTolerance);
     t.Real("grid_maximum_nodes", "GridMaximumNodes", 33554432.0)
       .Between(8.0, 1e12)
       .Panel("Quality")
@@ -1043,6 +1052,25 @@ bool vtkPlumeSheetMapper::Internals::UpdateGrid(vtkPlumeSheetMapper* self, Frame
 }
 
 //------------------------------------------------------------------------------
+// Whether a prop other than `self` may write opaque depth before the sheet
+// (conservative: every visible prop but 2D actors; vtkProp's default says
+// opaque). Without one the depth buffer is the far plane everywhere.
+static bool OtherDepthWriters(vtkRenderer* ren, vtkProp* self)
+{
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop != self && prop->GetVisibility() && !vtkActor2D::SafeDownCast(prop) && prop->HasOpaqueGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 // Grid mode, step 2: the transfer functions and the internal volume mapper's
 // settings, then its raycast.
 void vtkPlumeSheetMapper::Internals::DrawGrid(vtkPlumeSheetMapper* self, const Frame& frame)
@@ -1097,6 +1125,7 @@ void vtkPlumeSheetMapper::Internals::DrawGrid(vtkPlumeSheetMapper* self, const F
   this->GridMapper->SetAutoAdjustSampleDistances(self->AutoAdjustQuality);
   this->GridMapper->SetImageSampleDistance(1);
   this->GridMapper->SetInteractiveImageSampleDistance(self->InteractiveImageSampleDistance);
+  this->GridMapper->SetLatticeTolerance(self->InteractiveLatticeTolerance); // (still frames: one ray per pixel)
   self->LastInteractive = interactive;
   self->LastGridSampleDistance =
     interactive ? self->InteractiveGridSampleDistance : self->GridSampleDistance;
@@ -1110,7 +1139,10 @@ void vtkPlumeSheetMapper::Internals::DrawGrid(vtkPlumeSheetMapper* self, const F
     ++self->AbortedStillFrames;
     return;
   }
-  this->GridMapper->SetUseOpaqueDepth(self->BoundedByDepth);
+  // no other depth writer: the far plane everywhere, nothing to read (the
+  // copy and the lattice's per-pixel depth checks cost more than its rays)
+  self->LastOpaqueDepth = self->BoundedByDepth && OtherDepthWriters(frame.Renderer, actor);
+  this->GridMapper->SetUseOpaqueDepth(self->LastOpaqueDepth);
   this->GridMapper->SetTerminationError(0.001); // unlit: rays stop at opacity 0.999
   this->GridMapper->SetEmptySpaceSkipping(true);
   this->GridMapper->SetJitter(true);
@@ -1154,6 +1186,7 @@ void vtkPlumeSheetMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutoAdjustQuality: " << this->AutoAdjustQuality << "\n";
   os << indent << "InteractiveGridSampleDistance: " << this->InteractiveGridSampleDistance << "\n";
   os << indent << "InteractiveImageSampleDistance: " << this->InteractiveImageSampleDistance << "\n";
+  os << indent << "InteractiveLatticeTolerance: " << this->InteractiveLatticeTolerance << "\n";
   os << indent << "UploadCount: " << this->UploadCount << "\n";
   os << indent << "TriangleCount: " << this->TriangleCount << "\n";
 }

@@ -338,6 +338,14 @@ public:
   /** Grid mode, interactive frames: one ray per this many pixels (1: every pixel). Default 2. Clamped to 1..16. */
   vtkSetClampMacro(InteractiveImageSampleDistance, int, 1, 16);
   vtkGetMacro(InteractiveImageSampleDistance, int);
+  /**
+   * Grid mode, interactive frames: the largest difference (transmittance,
+   * 0..1) between the four lattice rays around a pixel for which it
+   * interpolates them instead of casting its own ray
+   * (vtkPlumeVolumeMapper::LatticeTolerance). Default 0.004. Clamped to 0..1.
+   */
+  vtkSetClampMacro(InteractiveLatticeTolerance, double, 0.0, 1.0);
+  vtkGetMacro(InteractiveLatticeTolerance, double);
   ///@}
 
   /** Grid mode: whether the last frame was drawn with the interactive settings. */
@@ -347,6 +355,14 @@ public:
    * check (vtkCommand::AbortCheckEvent, SetAbortRender) reported waiting input.
    */
   vtkGetMacro(AbortedStillFrames, int);
+  /**
+   * Grid mode: whether the last frame read the opaque depth. Only when
+   * BoundedByDepth is on and the renderer holds another visible prop that
+   * may write depth (any but 2D actors): with none, the depth is the far
+   * plane everywhere, and reading it (a copy of the depth buffer, and every
+   * pixel's depth in the ray lattice's classification) would change nothing.
+   */
+  vtkGetMacro(LastOpaqueDepth, bool);
   /** Grid mode: the raycast step (grid spacings) of the last frame. */
   vtkGetMacro(LastGridSampleDistance, double);
   /** Grid mode: the ray lattice (pixels) of the last frame, as the volume mapper used it. */
@@ -423,7 +439,9 @@ protected:
   bool AutoAdjustQuality = true;
   double InteractiveGridSampleDistance = 2.0;
   int InteractiveImageSampleDistance = 2;
+  double InteractiveLatticeTolerance = 0.004;
   bool LastInteractive = false;
+  bool LastOpaqueDepth = false;
   double LastGridSampleDistance = 0.0;
   int LastImageSampleDistance = 0;
   int AbortedStillFrames = 0;

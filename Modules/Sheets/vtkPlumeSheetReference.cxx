@@ -594,15 +594,16 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
   // ---- every pixel: its exact ray, the optical depth, the transmittance
   this->Transmittance.assign(static_cast<size_t>(w) * h * 3, std::numeric_limits<double>::quiet_NaN());
   const int stride = this->PixelStride;
-  const int rows = (h + stride - 1) / stride;
+  const int offset = this->PixelOffset % stride;
+  const int rows = (h - offset + stride - 1) / stride;
   const bool bounded = this->BoundedByDepth;
   const double tol = this->Tolerance;
   std::vector<double>& out = this->Transmittance;
   vtkSMPTools::For(0, rows, [&](vtkIdType rb, vtkIdType re) {
     for (vtkIdType row = rb; row < re; ++row)
     {
-      const int y = static_cast<int>(row) * stride;
-      for (int x = 0; x < w; x += stride)
+      const int y = static_cast<int>(row) * stride + offset;
+      for (int x = offset; x < w; x += stride)
       {
         const double nx = (x + 0.5) / w * 2.0 - 1.0;
         const double ny = (y + 0.5) / h * 2.0 - 1.0;
@@ -653,4 +654,5 @@ void vtkPlumeSheetReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BoundedByDepth: " << this->BoundedByDepth << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "PixelStride: " << this->PixelStride << "\n";
+  os << indent << "PixelOffset: " << this->PixelOffset << "\n";
 }

@@ -90,6 +90,14 @@ public:
   /** Compute only pixels whose x and y are multiples of PixelStride (others are NaN). Default 1. */
   vtkSetClampMacro(PixelStride, int, 1, 1024);
   vtkGetMacro(PixelStride, int);
+  /**
+   * With PixelStride: compute the pixels whose x and y are this plus a
+   * multiple of PixelStride instead (e.g. off the rays of a renderer's ray
+   * lattice, whose rays go through multiples of its spacing). Default 0.
+   * Clamped to 0..1023 (taken modulo PixelStride).
+   */
+  vtkSetClampMacro(PixelOffset, int, 0, 1023);
+  vtkGetMacro(PixelOffset, int);
   ///@}
 
   /**
@@ -124,6 +132,7 @@ protected:
   double Tolerance = 1e-4;
   double ModelMatrix[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   int PixelStride = 1;
+  int PixelOffset = 0;
   int Width = 0;
   int Height = 0;
   std::vector<double> Transmittance;
