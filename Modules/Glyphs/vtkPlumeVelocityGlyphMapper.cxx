@@ -307,17 +307,20 @@ const vtkPlumeParameterTable& vtkPlumeVelocityGlyphMapper::GetParameterTable()
       .Bind(&T::SetRootMode, &T::GetRootMode);
     t.Integer("stride", "LatticeStride", 1)
       .Between(1, 1 << 20)
+      .OnlyWith("roots", { "lattice" })
       .Panel("Roots")
       .Doc("Lattice stride in grid nodes (roots `lattice`).")
       .Bind(&T::SetLatticeStride, &T::GetLatticeStride);
     t.Real("screen_spacing", "ScreenSpacing", 12.0)
       .Between(1.0, 1e6)
+      .OnlyWith("roots", { "screen" })
       .Units("pixels")
       .Panel("Roots")
       .Doc("Target distance between glyphs (roots `screen`).")
       .Bind(&T::SetScreenSpacing, &T::GetScreenSpacing);
     t.Real("scale", "Scale", 1.0)
       .Between(-1e30, 1e30)
+      .OnlyWith("scale_mode", { "fixed" })
       .Units("world units per unit speed")
       .Doc("Glyph length per unit of velocity (scale_mode `fixed`).")
       .Bind(&T::SetScale, &T::GetScale);
@@ -338,6 +341,7 @@ const vtkPlumeParameterTable& vtkPlumeVelocityGlyphMapper::GetParameterTable()
       .Between(1, 32)
       .Doc("Segments per streamlet (rk2, rk4).")
       .Bind(&T::SetStreamletSegments, &T::GetStreamletSegments);
+      .OnlyWith("integrator", { "rk2", "rk4" })
     t.Real("min_speed", "MinimumSpeed", 0.0)
       .Between(0.0, 1e30)
       .Doc("Roots with a speed at or below this draw nothing.")
