@@ -1088,8 +1088,7 @@ void vtkPlumeSheetMapper::Internals::DrawGrid(vtkPlumeSheetMapper* self, const F
   this->GridProperty->SetScalarOpacity(this->GridOpacity);
   this->GridProperty->SetColor(this->GridColor);
   this->GridProperty->SetScalarOpacityUnitDistance(unit);
-  // also on the mapper: its own value wins over the property's, whose exact
-  // 1 (VTK's default) the volume mapper reads as "unset, use one voxel"
+  // also on the mapper, whose own value wins over any property's
   this->GridMapper->SetOpacityUnitDistance(unit);
   this->GridProperty->SetInterpolationTypeToLinear();
   this->GridProperty->ShadeOff();

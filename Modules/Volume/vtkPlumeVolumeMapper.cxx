@@ -366,7 +366,7 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
     t.Real("opacity_unit_distance", "OpacityUnitDistance", 0.0)
       .Between(0.0, 1e30)
       .Units("world units")
-      .Doc("Length over which a sample's opacity applies (opacity is corrected for the actual step); 0: the volume property's if set, else the mean voxel spacing.")
+      .Doc("Length over which a sample's opacity applies (opacity is corrected for the actual step); 0: the volume property's, which the command line and ParaView leave at 0: the mean voxel spacing.")
       .Bind(&T::SetOpacityUnitDistance, &T::GetOpacityUnitDistance);
     t.Real("shadow_sample_distance", "ShadowSampleDistance", 1.0)
       .OnlyWith("mode", { "smoke" })
@@ -677,16 +677,17 @@ bool vtkPlumeVolumeMapper::Internals::UpdateResources(vtkPlumeVolumeMapper* self
   vtkPiecewiseFunction* gray =
     property->GetColorChannels(0) == 1 ? property->GetGrayTransferFunction(0) : nullptr;
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
-  // the opacity unit distance: ours if set, else the property's if set (VTK's
-  // default is 1), else one voxel (the image's mean spacing)
+  // the opacity unit distance: ours if set, else the property's (VTK's
+  // contract, its default 1 included: a user's 1 is a length like any other),
+  // else, for a property at 0 (automatic), one voxel (the image's mean spacing)
   double unit = self->OpacityUnitDistance;
   if (!(unit > 0))
   {
     unit = property->GetScalarOpacityUnitDistance(0);
-    if (unit == 1.0)
-    {
-      unit = vtkPlumeVolumeMapper::GetAutomaticOpacityUnitDistance(image);
-    }
+  }
+  if (!(unit > 0) || !std::isfinite(unit))
+  {
+    unit = vtkPlumeVolumeMapper::GetAutomaticOpacityUnitDistance(image);
   }
   self->EffectiveOpacityUnitDistance = unit;
   if (unit != this->TableUnit)
