@@ -46,6 +46,9 @@ void BuildVolume(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   vtkNew<vtkVolume> volume;
   vtkVolumeProperty* property = volume->GetProperty();
   mapper->ApplyDefaultLighting(property);
+  // the opacity unit distance: the mapper's opacity_unit_distance if set,
+  // else automatic (one voxel), never VTK's default of one world unit
+  property->SetScalarOpacityUnitDistance(0.0);
   property->SetAmbient(p.Number("ambient", property->GetAmbient(), 0.0, 10.0));
   property->SetDiffuse(p.Number("diffuse", property->GetDiffuse(), 0.0, 10.0));
   property->SetSpecular(p.Number("specular", property->GetSpecular(), 0.0, 10.0));

@@ -114,7 +114,11 @@ void BuildGlyphs(Parameters& p, SceneDatasets& datasets, vtkRenderer* renderer)
   if (mapper->GetScaleMode() == vtkPlumeVelocityGlyphMapper::SCALE_AUTO)
   {
     std::ostringstream line;
-    line << p.Where() << ": scale " << mapper->GetEffectiveScale()
+    // screen roots: the stride, and so the scale, is the frame's (known at render)
+    const bool screen = mapper->GetRootMode() == vtkPlumeVelocityGlyphMapper::ROOTS_SCREEN_ADAPTIVE;
+    line << p.Where() << ": scale "
+         << (screen ? mapper->GetAutomaticScale(1) : mapper->GetEffectiveScale())
+         << (screen ? " x the screen-adaptive root stride" : "")
          << " (auto: a glyph at the robust maximum speed " << mapper->GetRobustMaximumSpeed()
          << " spans about two root spacings; set 'scale' to choose)";
     Note(line.str());

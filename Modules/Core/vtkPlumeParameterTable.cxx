@@ -233,6 +233,14 @@ vtkPlumeParameterTable::Parameter& vtkPlumeParameterTable::Parameter::Choice(
   return *this;
 }
 
+vtkPlumeParameterTable::Parameter& vtkPlumeParameterTable::Parameter::OnlyWith(
+  const std::string& choiceKey, const std::vector<std::string>& options)
+{
+  this->OnlyWithKey = choiceKey;
+  this->OnlyWithOptions = options;
+  return *this;
+}
+
 const vtkPlumeParameterTable::Option* vtkPlumeParameterTable::Parameter::FindOption(const std::string& key) const
 {
   for (const Option& o : this->Options)

@@ -103,6 +103,8 @@ public:
     bool IsAdvanced = false;     ///< behind ParaView's gear button
     bool IsAutomatic = false;    ///< reals: the default is NaN, "automatic" (see Automatic())
     std::string AutomaticMeaning; ///< what "automatic" chooses, e.g. "the middle of the colour map's range"
+    std::string OnlyWithKey;              ///< the choice this parameter depends on ("" = none, see OnlyWith())
+    std::vector<std::string> OnlyWithOptions; ///< the options of that choice under which it applies
     std::function<void(vtkObject*, const Value&)> Setter;
     std::function<Value(vtkObject*)> Getter;
 
@@ -120,6 +122,12 @@ public:
     Parameter& Automatic(const std::string& meaning);
     /** Adds a named value to a choice. */
     Parameter& Choice(const std::string& key, int number, const std::string& doc);
+    /**
+     * The parameter matters only while the choice `choiceKey` (a scene key
+     * of the same table) is one of `options`, e.g. a fixed scale only with
+     * scale_mode "fixed": ParaView's panel hides it otherwise.
+     */
+    Parameter& OnlyWith(const std::string& choiceKey, const std::vector<std::string>& options);
     ///@}
 
     /** Binds the class's Set/Get methods (see the class documentation for the supported signatures). */

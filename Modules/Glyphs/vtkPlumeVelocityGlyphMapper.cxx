@@ -108,6 +108,7 @@ public:
     // roots
     bool SeedMode = false;
     int Stride = 1;
+    int LatticeOffset[3] = { 0, 0, 0 }; // first root's node (whole-grid lattice)
     int StridedDims[3] = { 0, 0, 0 };
     vtkIdType RootCount = 0;
     // colour
@@ -197,6 +198,10 @@ public:
       }
     }
   }
+
+  // The valid speeds of a piece's nodes within `extent` (nullptr: all), with
+  // the mapper's arrays; none without usable arrays (defined below).
+  static std::vector<float> PieceSpeeds(vtkPlumeVelocityGlyphMapper* self, vtkImageData* image, const int* extent);
 
   // The robust maximum (RobustSpeed) and the moving nodes of the whole input.
   void BuildRobustSpeed(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask)
@@ -306,17 +311,20 @@ const vtkPlumeParameterTable& vtkPlumeVelocityGlyphMapper::GetParameterTable()
       .Doc("Where glyphs start.")
       .Bind(&T::SetRootMode, &T::GetRootMode);
     t.Integer("stride", "LatticeStride", 1)
+      .OnlyWith("roots", { "lattice" })
       .Between(1, 1 << 20)
       .Panel("Roots")
       .Doc("Lattice stride in grid nodes (roots `lattice`).")
       .Bind(&T::SetLatticeStride, &T::GetLatticeStride);
     t.Real("screen_spacing", "ScreenSpacing", 12.0)
+      .OnlyWith("roots", { "screen" })
       .Between(1.0, 1e6)
       .Units("pixels")
       .Panel("Roots")
       .Doc("Target distance between glyphs (roots `screen`).")
       .Bind(&T::SetScreenSpacing, &T::GetScreenSpacing);
     t.Real("scale", "Scale", 1.0)
+      .OnlyWith("scale_mode", { "fixed" })
       .Between(-1e30, 1e30)
       .Units("world units per unit speed")
       .Doc("Glyph length per unit of velocity (scale_mode `fixed`).")
@@ -325,7 +333,9 @@ const vtkPlumeParameterTable& vtkPlumeVelocityGlyphMapper::GetParameterTable()
       .Choice("fixed", SCALE_FIXED, "glyphs are `scale` x speed long.")
       .Choice("auto", SCALE_AUTO,
         "the scale that makes a glyph at the robust maximum speed (99th percentile of the valid nodes) "
-        "about two root spacings long (2 grid cells x `stride` for lattice roots, else 2 grid cells).")
+        "about two root spacings long: 2 grid cells x the effective stride (`stride` for lattice roots; "
+        "for screen roots the stride of each frame, so glyphs keep their length on screen as the camera "
+        "zooms; 1 for seeds).")
       .Doc("How the glyph scale is chosen (a scene that gives `scale` alone means `fixed`).")
       .Bind(&T::SetScaleMode, &T::GetScaleMode);
     t.Choice("integrator", "Integrator", "straight")
@@ -335,6 +345,7 @@ const vtkPlumeParameterTable& vtkPlumeVelocityGlyphMapper::GetParameterTable()
       .Doc("Shape of each glyph.")
       .Bind(&T::SetIntegrator, &T::GetIntegrator);
     t.Integer("segments", "StreamletSegments", 8)
+      .OnlyWith("integrator", { "rk2", "rk4" })
       .Between(1, 32)
       .Doc("Segments per streamlet (rk2, rk4).")
       .Bind(&T::SetStreamletSegments, &T::GetStreamletSegments);
@@ -520,7 +531,13 @@ double* vtkPlumeVelocityGlyphMapper::GetBounds()
     // A glyph's displacement along each axis is Scale times a convex
     // combination of sampled vectors (straight lines, RK2 and RK4 steps alike,
     // with trilinear sampling), so it lies within Scale x that axis's range.
-    const double scale = this->GetEffectiveScale();
+    // Screen-adaptive roots: the scale at stride 1, not the last render's
+    // stride, so that the bounds (and the clipping range VTK derives from
+    // them) do not depend on earlier frames: a render and a still frame of
+    // an interactive view at the same camera are the same image.
+    const double scale = this->ScaleMode == SCALE_AUTO && this->RootMode == ROOTS_SCREEN_ADAPTIVE
+      ? this->GetAutomaticScale(1)
+      : this->GetEffectiveScale();
     const double* ib = image->GetBounds();
     const double diagonal =
       std::sqrt((ib[1] - ib[0]) * (ib[1] - ib[0]) + (ib[3] - ib[2]) * (ib[3] - ib[2]) +
@@ -569,21 +586,44 @@ double vtkPlumeVelocityGlyphMapper::GetRobustMaximumSpeed()
 }
 
 //------------------------------------------------------------------------------
-double vtkPlumeVelocityGlyphMapper::ComputeRobustMaximumSpeed(
-  vtkImageData* image, const int extent[6], const vtkPlumePercentile::Sum& sum)
+std::vector<float> vtkPlumeVelocityGlyphMapper::Internals::PieceSpeeds(
+  vtkPlumeVelocityGlyphMapper* self, vtkImageData* image, const int* extent)
 {
   std::vector<float> speeds;
   vtkDataArray* vectors = nullptr;
   vtkDataArray* mask = nullptr;
   std::string error;
   if (image && image->GetNumberOfPoints() > 0 &&
-    ResolveArrays(this, image, this->VectorArrayName, this->ValidMaskArrayName, vectors, mask, error))
+    ResolveArrays(self, image, self->VectorArrayName, self->ValidMaskArrayName, vectors, mask, error))
   {
-    Internals::CollectSpeeds(image, vectors, mask, extent, speeds);
+    CollectSpeeds(image, vectors, mask, extent, speeds);
   }
+  return speeds;
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeVelocityGlyphMapper::ComputeRobustMaximumSpeed(
+  vtkImageData* image, const int extent[6], const vtkPlumePercentile::Sum& sum)
+{
+  const std::vector<float> speeds = Internals::PieceSpeeds(this, image, extent);
   // collective: every piece selects, with or without speeds
   const double speed = vtkPlumePercentile::Select(speeds, Internals::RobustPercentile, sum);
   return std::isfinite(speed) ? speed : 0.0;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkPlumeVelocityGlyphMapper::ComputeMovingNodes(
+  vtkImageData* image, const int extent[6], double speed, const vtkPlumePercentile::Sum& sum)
+{
+  const std::vector<float> speeds = Internals::PieceSpeeds(this, image, extent);
+  const double still = Internals::StillFraction * speed;
+  std::vector<vtkIdType> count{ static_cast<vtkIdType>(
+    std::count_if(speeds.begin(), speeds.end(), [still](float s) { return s > still; })) };
+  if (sum)
+  {
+    sum(count); // collective: every piece sums, with or without speeds
+  }
+  return count[0];
 }
 
 //------------------------------------------------------------------------------
@@ -593,6 +633,16 @@ double vtkPlumeVelocityGlyphMapper::GetEffectiveScale()
   {
     return this->Scale;
   }
+  // the root spacing in nodes: the last render's for screen-adaptive roots
+  const int stride = this->RootMode == ROOTS_LATTICE ? this->LatticeStride
+    : this->RootMode == ROOTS_SCREEN_ADAPTIVE      ? this->EffectiveStride
+                                                   : 1;
+  return this->GetAutomaticScale(stride);
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeVelocityGlyphMapper::GetAutomaticScale(int stride)
+{
   const double speed = std::isfinite(this->AutomaticScaleSpeed) && this->AutomaticScaleSpeed > 0.0
     ? this->AutomaticScaleSpeed
     : this->GetRobustMaximumSpeed();
@@ -617,8 +667,7 @@ double vtkPlumeVelocityGlyphMapper::GetEffectiveScale()
   {
     return this->Scale;
   }
-  const double roots = this->RootMode == ROOTS_LATTICE ? double(this->LatticeStride) : 1.0;
-  return 2.0 * cell * roots / speed;
+  return 2.0 * cell * std::max(1, stride) / speed;
 }
 
 //------------------------------------------------------------------------------
@@ -783,13 +832,24 @@ bool vtkPlumeVelocityGlyphMapper::Internals::UpdateRoots(vtkPlumeVelocityGlyphMa
   vtkIdType rootCount = 0;
   if (!frame.SeedMode)
   {
+    // the whole grid's first and last nodes in this input's index space (a
+    // piece of the whole with WholeExtent set, else the input itself)
+    const int* we = self->WholeExtent;
+    const bool piece = we[0] <= we[1] && we[2] <= we[3] && we[4] <= we[5];
+    const int* extent = frame.Image->GetExtent();
+    int first[3], last[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      first[a] = piece ? we[2 * a] - extent[2 * a] : 0;
+      last[a] = piece ? we[2 * a + 1] - extent[2 * a] : dims[a] - 1;
+    }
     if (self->RootMode == ROOTS_LATTICE)
     {
       stride = self->LatticeStride;
     }
     else
     {
-      // projected footprint of the volume's 8 corners, clipped to the viewport
+      // projected footprint of the (whole) volume's 8 corners, clipped to the viewport
       double xmin = VTK_DOUBLE_MAX, xmax = -VTK_DOUBLE_MAX;
       double ymin = VTK_DOUBLE_MAX, ymax = -VTK_DOUBLE_MAX;
       bool behind = false;
@@ -797,8 +857,8 @@ bool vtkPlumeVelocityGlyphMapper::Internals::UpdateRoots(vtkPlumeVelocityGlyphMa
       vtkMatrix4x4::Multiply4x4(frame.MCDCRel, frame.IndexToRel, indexToClip);
       for (int corner = 0; corner < 8; ++corner)
       {
-        const double idx[3] = { (corner & 1) ? dims[0] - 1.0 : 0.0,
-          (corner & 2) ? dims[1] - 1.0 : 0.0, (corner & 4) ? dims[2] - 1.0 : 0.0 };
+        const double idx[3] = { double((corner & 1) ? last[0] : first[0]),
+          double((corner & 2) ? last[1] : first[1]), double((corner & 4) ? last[2] : first[2]) };
         double c[4];
         Apply(indexToClip, idx, c);
         if (!(c[3] > 1e-12))
@@ -824,14 +884,21 @@ bool vtkPlumeVelocityGlyphMapper::Internals::UpdateRoots(vtkPlumeVelocityGlyphMa
       // got a handful of glyphs. At least 1 % of the valid nodes reach the
       // robust maximum, so the lattice holds at most about 100 G roots when
       // every node is valid.
-      const double nodes = this->MovingNodes > 0 ? double(this->MovingNodes) : double(dims[0]) * dims[1] * dims[2];
+      // A piece counts the whole data's (MovingNodeCount), so all pieces
+      // pick the same stride.
+      const int wholeDims[3] = { last[0] - first[0] + 1, last[1] - first[1] + 1, last[2] - first[2] + 1 };
+      const vtkIdType moving = self->MovingNodeCount >= 0 ? self->MovingNodeCount : this->MovingNodes;
+      const double nodes = moving > 0 ? double(moving) : double(wholeDims[0]) * wholeDims[1] * wholeDims[2];
       const double target = std::max(1.0, area / (self->ScreenSpacing * self->ScreenSpacing));
       stride = std::max(1, static_cast<int>(std::ceil(std::cbrt(nodes / target) - 1e-9)));
-      stride = std::min(stride, std::max({ dims[0], dims[1], dims[2] }));
+      stride = std::min(stride, std::max({ wholeDims[0], wholeDims[1], wholeDims[2] }));
     }
+    // roots on the whole grid's lattice: the first at or after this input's node 0
     for (int a = 0; a < 3; ++a)
     {
-      frame.StridedDims[a] = (dims[a] + stride - 1) / stride;
+      frame.LatticeOffset[a] = ((first[a] % stride) + stride) % stride;
+      frame.StridedDims[a] =
+        dims[a] > frame.LatticeOffset[a] ? (dims[a] - frame.LatticeOffset[a] + stride - 1) / stride : 0;
     }
     rootCount = vtkIdType(frame.StridedDims[0]) * frame.StridedDims[1] * frame.StridedDims[2];
   }
@@ -1019,6 +1086,10 @@ void vtkPlumeVelocityGlyphMapper::Internals::SetUniforms(
     const int sd[2] = { frame.StridedDims[0], frame.StridedDims[1] };
     program->SetUniform2i("StridedDims", sd);
     program->SetUniformi("Stride", frame.Stride);
+    // (VTK 9.1 has no SetUniform3i; small integers are exact as floats)
+    const float offset[3] = { float(frame.LatticeOffset[0]), float(frame.LatticeOffset[1]),
+      float(frame.LatticeOffset[2]) };
+    program->SetUniform3f("LatticeOffset", offset);
   }
   vtkTextureObject* velocity = this->Velocity->GetTextureObject();
   velocity->Activate();
@@ -1140,6 +1211,10 @@ void vtkPlumeVelocityGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LatticeStride: " << this->LatticeStride << "\n";
   os << indent << "ScreenSpacing: " << this->ScreenSpacing << "\n";
   os << indent << "EffectiveStride: " << this->EffectiveStride << "\n";
+  os << indent << "WholeExtent: " << this->WholeExtent[0] << " " << this->WholeExtent[1] << " "
+     << this->WholeExtent[2] << " " << this->WholeExtent[3] << " " << this->WholeExtent[4] << " "
+     << this->WholeExtent[5] << "\n";
+  os << indent << "MovingNodeCount: " << this->MovingNodeCount << "\n";
   os << indent << "Scale: " << this->Scale << "\n";
   os << indent << "ScaleMode: " << this->ScaleMode << "\n";
   os << indent << "AutomaticScaleSpeed: " << this->AutomaticScaleSpeed << "\n";

@@ -62,6 +62,12 @@
  * part of the grid (blood in carotid.vtk's vessels: 3 % of the nodes; over
  * all nodes its default first render drew a handful of glyphs).
  *
+ * Pieces (data split over MPI ranks): with WholeExtent and MovingNodeCount
+ * set to the whole data's, each piece uses the whole grid's footprint and
+ * moving nodes for the stride, and puts its lattice roots on the whole
+ * grid's lattice (WholeExtent start + k x stride), so the pieces together
+ * draw the glyphs of a render of the whole grid.
+ *
  * Compositing: glyphs are drawn with depth test and depth write on and
  * standard (non-premultiplied) alpha blending, (SRC_ALPHA,
  * ONE_MINUS_SRC_ALPHA) for colour and (ONE, ONE_MINUS_SRC_ALPHA) for alpha;
@@ -196,6 +202,33 @@ public:
   vtkGetMacro(EffectiveStride, int);
 
   ///@{
+  /**
+   * The extent of the whole grid the input is one piece of (data split over
+   * MPI ranks), in the input's index space (same origin, spacing and
+   * direction). Lattice roots, fixed or screen-adaptive, then sit on the
+   * whole grid's lattice (nodes WholeExtent start + k x stride along each
+   * axis), and the screen-adaptive stride comes from the whole grid's
+   * projected footprint: each piece draws what a render of the whole grid
+   * draws there. Default empty (a minimum above its maximum): the input's
+   * own extent.
+   */
+  vtkSetVector6Macro(WholeExtent, int);
+  vtkGetVector6Macro(WholeExtent, int);
+  ///@}
+
+  ///@{
+  /**
+   * The moving nodes (valid, faster than 5 % of the robust maximum speed)
+   * the screen-adaptive stride spreads its glyph budget over. < 0 (default):
+   * the input's own. Set it when the input is one piece of larger data
+   * (ParaView's representation sets ComputeMovingNodes over all MPI ranks'
+   * pieces, so every rank picks the stride of the whole data).
+   */
+  vtkSetMacro(MovingNodeCount, vtkIdType);
+  vtkGetMacro(MovingNodeCount, vtkIdType);
+  ///@}
+
+  ///@{
   /** Glyph length per unit of velocity, in world units (SCALE_FIXED only). Default 1. */
   vtkSetMacro(Scale, double);
   vtkGetMacro(Scale, double);
@@ -206,9 +239,12 @@ public:
    * SCALE_AUTO (default): the scale is chosen so that a glyph at the robust
    * maximum speed (the 99th percentile of the valid nodes' speeds, so one
    * outlier does not shrink every glyph; or AutomaticScaleSpeed if set)
-   * spans about two root spacings: 2 × the largest grid spacing ×
-   * LatticeStride for ROOTS_LATTICE, 2 × the largest grid spacing
-   * otherwise. A velocity field with no valid non-zero node falls back to
+   * spans about two root spacings: 2 × the largest grid spacing × the
+   * effective stride (GetAutomaticScale(GetEffectiveStride())): LatticeStride
+   * for ROOTS_LATTICE, the screen-adaptive stride of each frame for
+   * ROOTS_SCREEN_ADAPTIVE (so the glyphs keep their length on screen as the
+   * camera zooms, and change length where the stride steps), 1 for
+   * ROOTS_SEEDS. A velocity field with no valid non-zero node falls back to
    * Scale. SCALE_FIXED: glyphs are Scale·|v| long (set it with Scale).
    */
   vtkSetClampMacro(ScaleMode, int, SCALE_FIXED, SCALE_AUTO);
@@ -229,9 +265,24 @@ public:
 
   /**
    * The scale glyphs are drawn with: Scale, or the automatic one of
-   * SCALE_AUTO for the current input (updates the input; 0 without one).
+   * SCALE_AUTO for the current input (updates the input) at the effective
+   * stride: LatticeStride for ROOTS_LATTICE, the last render's stride for
+   * ROOTS_SCREEN_ADAPTIVE (1 before the first render), 1 for ROOTS_SEEDS.
+   * GetBounds pads screen-adaptive glyphs with the scale at stride 1 (the
+   * stride needs a camera; bounds that followed the last frame's stride made
+   * a render and an interactive view's still frame differ): tips that reach
+   * further out of the data than two cells' worth may meet the clipping
+   * planes.
    */
   double GetEffectiveScale();
+
+  /**
+   * The SCALE_AUTO scale for roots `stride` grid nodes apart: a glyph at the
+   * robust maximum speed (or AutomaticScaleSpeed if set) spans 2 × stride ×
+   * the largest grid spacing. Scale when the input has no valid moving node
+   * or no spacing.
+   */
+  double GetAutomaticScale(int stride);
 
   /**
    * The 99th percentile of the speeds of the input's valid nodes (finite,
@@ -251,6 +302,16 @@ public:
    * with image nullptr. 0 when no piece has a valid node.
    */
   double ComputeRobustMaximumSpeed(vtkImageData* image, const int extent[6], const vtkPlumePercentile::Sum& sum);
+
+  /**
+   * The moving nodes of data split into pieces, for MovingNodeCount: valid
+   * nodes (as ComputeRobustMaximumSpeed counts them, within `extent`)
+   * faster than 5 % of `speed` (the robust maximum of the whole data),
+   * summed over the pieces by `sum` (empty: this piece alone). Collective,
+   * as ComputeRobustMaximumSpeed.
+   */
+  vtkIdType ComputeMovingNodes(
+    vtkImageData* image, const int extent[6], double speed, const vtkPlumePercentile::Sum& sum);
 #endif
 
   ///@{
@@ -383,6 +444,8 @@ protected:
   int LatticeStride = 1;
   double ScreenSpacing = 12.0;
   int EffectiveStride = 1;
+  int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  vtkIdType MovingNodeCount = -1;
   double Scale = 1.0;
   int ScaleMode = SCALE_AUTO;
   double AutomaticScaleSpeed = std::numeric_limits<double>::quiet_NaN();

@@ -350,22 +350,26 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
       .Doc("How the sheet is rendered.")
       .Bind(&T::SetRenderMode, &T::GetRenderMode);
     t.Real("grid_samples_per_sigma", "GridSamplesPerSigma", 2.0)
+      .OnlyWith("mode", { "grid" })
       .Between(0.25, 16.0)
       .Panel("Quality")
       .Doc("Grid mode: grid nodes per smallest sigma (spacing = sigma / this).")
       .Bind(&T::SetGridSamplesPerSigma, &T::GetGridSamplesPerSigma);
     t.Real("grid_sample_distance", "GridSampleDistance", 1.0)
+      .OnlyWith("mode", { "grid" })
       .Between(0.05, 16.0)
       .Units("grid spacings")
       .Panel("Quality")
       .Doc("Grid mode: raycast step.")
       .Bind(&T::SetGridSampleDistance, &T::GetGridSampleDistance);
     t.Boolean("auto_adjust_quality", "AutoAdjustQuality", true)
+      .OnlyWith("mode", { "grid" })
       .Panel("Quality")
       .Doc("Grid mode: coarse frames while the camera moves (window DesiredUpdateRate above 1 frame/s), "
            "refined when it stops.")
       .Bind(&T::SetAutoAdjustQuality, &T::GetAutoAdjustQuality);
     t.Real("interactive_grid_sample_distance", "InteractiveGridSampleDistance", 2.0)
+      .OnlyWith("mode", { "grid" })
       .Between(0.05, 16.0)
       .Units("grid spacings")
       .Panel("Quality")
@@ -373,6 +377,7 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
       .Doc("Grid mode: raycast step while the camera moves.")
       .Bind(&T::SetInteractiveGridSampleDistance, &T::GetInteractiveGridSampleDistance);
     t.Integer("interactive_image_sample_distance", "InteractiveImageSampleDistance", 2)
+      .OnlyWith("mode", { "grid" })
       .Between(1, 16)
       .Units("pixels")
       .Panel("Quality")
@@ -388,12 +393,14 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
            "make the pixels between them cast their own rays.")
       .Bind(&T::SetInteractiveLatticeTolerance, &T::GetInteractiveLatticeTolerance);
     t.Real("grid_maximum_nodes", "GridMaximumNodes", 33554432.0)
+      .OnlyWith("mode", { "grid" })
       .Between(8.0, 1e12)
       .Panel("Quality")
       .Advanced()
       .Doc("Grid mode: most grid nodes (4 bytes each); the spacing grows to fit.")
       .Bind(&T::SetGridMaximumNodes, &T::GetGridMaximumNodes);
     t.Real("grid_merge_cell_size", "GridMergeCellSize", 2.0)
+      .OnlyWith("mode", { "grid" })
       .Between(0.0, 4.0)
       .Units("grid spacings")
       .Panel("Quality")
@@ -1109,8 +1116,7 @@ void vtkPlumeSheetMapper::Internals::DrawGrid(vtkPlumeSheetMapper* self, const F
   this->GridProperty->SetScalarOpacity(this->GridOpacity);
   this->GridProperty->SetColor(this->GridColor);
   this->GridProperty->SetScalarOpacityUnitDistance(unit);
-  // also on the mapper: its own value wins over the property's, whose exact
-  // 1 (VTK's default) the volume mapper reads as "unset, use one voxel"
+  // also on the mapper, whose own value wins over any property's
   this->GridMapper->SetOpacityUnitDistance(unit);
   this->GridProperty->SetInterpolationTypeToLinear();
   this->GridProperty->ShadeOff();

@@ -131,14 +131,17 @@ const vtkPlumeParameterTable& vtkPlumeGaussianSplatter::GetParameterTable()
       .Doc("Point array with a per-point radius; empty or absent: the constant radius.")
       .Bind(&T::SetRadiusArrayName, &T::GetRadiusArrayName);
     t.Text("vectors", "VectorArrayName", "")
+      .OnlyWith("mode", { "velocity" })
       .Panel("Splat")
       .Doc("Vector array of the points (velocity mode); empty: the active vectors.")
       .Bind(&T::SetVectorArrayName, &T::GetVectorArrayName);
     t.Text("scalars", "ScalarArrayName", "")
+      .OnlyWith("mode", { "density", "distance" })
       .Panel("Splat")
       .Doc("Scalar array of the points (density, distance); empty: the active scalars, else 1.")
       .Bind(&T::SetScalarArrayName, &T::GetScalarArrayName);
     t.Real("scale", "LineScaleFactor", 1.0)
+      .OnlyWith("mode", { "velocity" })
       .Between(-1e30, 1e30)
       .Panel("Splat")
       .Advanced()

@@ -310,6 +310,7 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Doc("How rays combine their samples.")
       .Bind(&T::SetRenderMode, &T::GetRenderMode);
     t.Real("iso_value", "IsoValue", 0.0)
+      .OnlyWith("mode", { "isosurface" })
       .Automatic("the volume property's first iso value if set, else the middle of the colour map's range")
       .Units("data units")
       .Panel("Isosurface")
@@ -365,15 +366,17 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
     t.Real("opacity_unit_distance", "OpacityUnitDistance", 0.0)
       .Between(0.0, 1e30)
       .Units("world units")
-      .Doc("Length over which a sample's opacity applies (opacity is corrected for the actual step); 0: the volume property's if set, else the mean voxel spacing.")
+      .Doc("Length over which a sample's opacity applies (opacity is corrected for the actual step); 0: the volume property's, which the command line and ParaView leave at 0: the mean voxel spacing.")
       .Bind(&T::SetOpacityUnitDistance, &T::GetOpacityUnitDistance);
     t.Real("shadow_sample_distance", "ShadowSampleDistance", 1.0)
+      .OnlyWith("mode", { "smoke" })
       .Between(0.05, 100.0)
       .Units("voxels")
       .Panel("Quality")
       .Doc("Step of the smoke's shadow rays.")
       .Bind(&T::SetShadowSampleDistance, &T::GetShadowSampleDistance);
     t.Boolean("light_cache", "LightCache", true)
+      .OnlyWith("mode", { "smoke" })
       .Panel("Quality")
       .Advanced()
       .Doc("Smoke: the transmittance towards each light kept per grid node and interpolated, recomputed only when the lights, data or transfer function change (off: a shadow ray per sample).")
@@ -388,10 +391,12 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Doc("Jump over 8^3 blocks that cannot change the result (same image).")
       .Bind(&T::SetEmptySpaceSkipping, &T::GetEmptySpaceSkipping);
     t.Boolean("pre_integration", "PreIntegration", false)
+      .OnlyWith("mode", { "composite" })
       .Panel("Quality")
       .Doc("Composite mode: pre-integrated transfer functions (exact segment opacity for a value linear between samples), for sharp transfer functions at long steps.")
       .Bind(&T::SetPreIntegration, &T::GetPreIntegration);
     t.Boolean("mip_skipping", "MIPSkipping", false)
+      .OnlyWith("mode", { "mip" })
       .Panel("Quality")
       .Advanced()
       .Doc("Empty-space skipping in MIP mode too (slower on llvmpipe, measured).")
@@ -672,16 +677,17 @@ bool vtkPlumeVolumeMapper::Internals::UpdateResources(vtkPlumeVolumeMapper* self
   vtkPiecewiseFunction* gray =
     property->GetColorChannels(0) == 1 ? property->GetGrayTransferFunction(0) : nullptr;
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
-  // the opacity unit distance: ours if set, else the property's if set (VTK's
-  // default is 1), else one voxel (the image's mean spacing)
+  // the opacity unit distance: ours if set, else the property's (VTK's
+  // contract, its default 1 included: a user's 1 is a length like any other),
+  // else, for a property at 0 (automatic), one voxel (the image's mean spacing)
   double unit = self->OpacityUnitDistance;
   if (!(unit > 0))
   {
     unit = property->GetScalarOpacityUnitDistance(0);
-    if (unit == 1.0)
-    {
-      unit = vtkPlumeVolumeMapper::GetAutomaticOpacityUnitDistance(image);
-    }
+  }
+  if (!(unit > 0) || !std::isfinite(unit))
+  {
+    unit = vtkPlumeVolumeMapper::GetAutomaticOpacityUnitDistance(image);
   }
   self->EffectiveOpacityUnitDistance = unit;
   if (unit != this->TableUnit)

@@ -34,7 +34,7 @@
  * Transfer functions (vtkVolumeProperty, component 0): colour c(s) from the
  * RGB transfer function, scalar opacity α(s) per unit distance u (world
  * units: OpacityUnitDistance if set, else the property's
- * ScalarOpacityUnitDistance if set, else the mean voxel spacing). They are tabulated with 1024 entries over the data's finite
+ * ScalarOpacityUnitDistance if it is above 0, else the mean voxel spacing). They are tabulated with 1024 entries over the data's finite
  * range, or over TransferFunctionRange when it is set, and re-tabulated only
  * when the property or that range changes. The 3D texture holds the raw
  * values (vtkPlumeScalarTexture3D), mapped to the table by a scale and bias:
@@ -316,10 +316,13 @@ public:
   /**
    * World length over which the transfer function's opacity applies (the
    * opacity of a step of another length is corrected for it). 0 (default):
-   * the vtkVolumeProperty's ScalarOpacityUnitDistance if it was set, i.e. is
-   * not VTK's default 1, else GetAutomaticOpacityUnitDistance (one voxel: the
-   * same look on a fine and a coarse grid of the same data). > 0: this value,
-   * whatever the property says. Scene key opacity_unit_distance.
+   * the vtkVolumeProperty's ScalarOpacityUnitDistance, as VTK's own mappers
+   * read it (VTK's default 1 is one world unit, and a user's 1 too); a
+   * property set to 0 means automatic: GetAutomaticOpacityUnitDistance (one
+   * voxel: the same look on a fine and a coarse grid of the same data),
+   * which the plume command line and the ParaView representation use.
+   * > 0: this value, whatever the property says. Scene key
+   * opacity_unit_distance.
    */
   vtkSetClampMacro(OpacityUnitDistance, double, 0.0, 1e30);
   vtkGetMacro(OpacityUnitDistance, double);

@@ -567,7 +567,12 @@ bool vtkPlumeVolumeReference::Compute(int width, int height)
     std::copy(rgb, rgb + 3, &s.Color[3 * i]);
     s.Opacity[i] = std::min(1.0, std::max(0.0, opacity->GetValue(v)));
   }
-  const double unit = property->GetScalarOpacityUnitDistance(0);
+  // the property's unit distance; at 0 (automatic) one voxel, the mean |spacing|
+  double unit = property->GetScalarOpacityUnitDistance(0);
+  if (!(unit > 0) || !std::isfinite(unit))
+  {
+    unit = (std::fabs(spacing[0]) + std::fabs(spacing[1]) + std::fabs(spacing[2])) / 3.0;
+  }
   s.InvUnit = unit > 0 ? 1.0 / unit : 1.0;
   s.Mode = this->Mode;
   double iso = this->IsoValue;

@@ -27,6 +27,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,57 @@ std::string Documentation(const Table::Parameter& p)
   return Escape(doc);
 }
 
+// A parameter that applies only under some options of a choice
+// (Parameter::OnlyWith) is hidden by ParaView's panel under the others, as
+// ParaView's own XML does: a visibility decorator on the choice's property
+// as the panel names it (`prefix` + property: the representation's exposed
+// name). A key or option that is not in the table stops the build.
+std::string OnlyWithHints(const Table& table, const Table::Parameter& p, const std::string& prefix)
+{
+  if (p.OnlyWithKey.empty())
+  {
+    return "";
+  }
+  const Table::Parameter* choice = table.Find(p.OnlyWithKey);
+  if (!choice || choice->Type != Kind::Choice || p.OnlyWithOptions.empty())
+  {
+    throw std::runtime_error(table.GetClassName() + "." + p.Property + ": OnlyWith names '" + p.OnlyWithKey +
+      "', not a choice of the table with options");
+  }
+  const std::string property = prefix + choice->Property;
+  auto generic = [&property](int value) {
+    return "<PropertyWidgetDecorator type=\"GenericDecorator\" mode=\"visibility\" property=\"" + property +
+      "\" value=\"" + std::to_string(value) + "\"/>";
+  };
+  std::vector<int> values;
+  for (const auto& key : p.OnlyWithOptions)
+  {
+    const Table::Option* option = choice->FindOption(key);
+    if (!option)
+    {
+      throw std::runtime_error(table.GetClassName() + "." + p.Property + ": OnlyWith option '" + key +
+        "' is not an option of '" + p.OnlyWithKey + "'");
+    }
+    values.push_back(option->Number);
+  }
+  std::string hints = "        <Hints>";
+  if (values.size() == 1)
+  {
+    hints += generic(values[0]);
+  }
+  else
+  {
+    // shown when any of the options is chosen
+    hints += "<PropertyWidgetDecorator type=\"CompositeDecorator\"><Expression type=\"or\">";
+    for (int value : values)
+    {
+      hints += generic(value);
+    }
+    hints += "</Expression></PropertyWidgetDecorator>";
+  }
+  return hints + "</Hints>\n";
+}
+
 // Vector3 parameters whose C++ setter and getter take ints (the table's
 // vectors are doubles): written as integer vectors.
 bool IsIntegerVector(const Table& table, const Table::Parameter& p)
@@ -94,14 +146,17 @@ bool IsIntegerVector(const Table& table, const Table::Parameter& p)
   return table.GetClassName() == "vtkPlumeSmokeSolver" && p.Property == "Dimensions";
 }
 
-// One property (and its information twin) of a proxy whose class is the table's.
-void WriteProperty(std::ostream& os, const Table::Parameter& p, bool integerVector = false)
+// One property (and its information twin) of a proxy whose class is the
+// table's; `prefix`: what the panel puts before the table's property names.
+void WriteProperty(std::ostream& os, const Table& table, const Table::Parameter& p, const std::string& prefix,
+  bool integerVector = false)
 {
   const std::string name = p.Property;
   const std::string common = "name=\"" + name + "\" label=\"" + Escape(Label(name)) + "\" command=\"Set" +
     name + "\" information_property=\"" + name + "Info\"" +
     (p.IsAdvanced ? " panel_visibility=\"advanced\"" : "");
-  const std::string doc = "        <Documentation>" + Documentation(p) + "</Documentation>\n";
+  const std::string doc =
+    "        <Documentation>" + Documentation(p) + "</Documentation>\n" + OnlyWithHints(table, p, prefix);
   const bool finiteMin = std::isfinite(p.Minimum);
   const bool finiteMax = std::isfinite(p.Maximum);
   switch (p.Type)
@@ -210,7 +265,7 @@ void WriteProperty(std::ostream& os, const Table::Parameter& p, bool integerVect
   }
 }
 
-void WriteMapperProxy(std::ostream& os, const std::string& proxyName, const Table& table)
+void WriteMapperProxy(std::ostream& os, const std::string& proxyName, const Table& table, const std::string& prefix)
 {
   os << "    <Proxy name=\"" << proxyName << "\" class=\"" << table.GetClassName()
      << "\" processes=\"client|dataserver|renderserver\">\n"
@@ -218,7 +273,7 @@ void WriteMapperProxy(std::ostream& os, const std::string& proxyName, const Tabl
      << "'s parameters (generated from its vtkPlumeParameterTable).</Documentation>\n";
   for (const auto& p : table.GetParameters())
   {
-    WriteProperty(os, p);
+    WriteProperty(os, table, p, prefix);
   }
   os << "    </Proxy>\n";
 }
@@ -338,6 +393,8 @@ std::string InputProperty(const std::string& types)
 }
 } // namespace
 
+int Generate(const char* path);
+
 int main(int argc, char* argv[])
 {
   if (argc != 2)
@@ -345,15 +402,29 @@ int main(int argc, char* argv[])
     std::cerr << "usage: plumeParaViewXML OUTPUT.xml\n";
     return 2;
   }
+  try
+  {
+    return Generate(argv[1]);
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "plumeParaViewXML: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+int Generate(const char* path)
+{
   std::ostringstream os;
   os << "<!-- Generated by plumeParaViewXML from the Plume classes' parameter tables: do not edit. -->\n"
      << "<ServerManagerConfiguration>\n";
 
   // Mappers: one proxy per class, every table property.
   os << "  <ProxyGroup name=\"plume_mappers\">\n";
-  WriteMapperProxy(os, "PlumeVolumeMapper", vtkPlumeVolumeMapper::GetParameterTable());
-  WriteMapperProxy(os, "PlumeSheetMapper", vtkPlumeSheetMapper::GetParameterTable());
-  WriteMapperProxy(os, "PlumeVelocityGlyphMapper", vtkPlumeVelocityGlyphMapper::GetParameterTable());
+  // (the prefixes: the representations' exposed names, below)
+  WriteMapperProxy(os, "PlumeVolumeMapper", vtkPlumeVolumeMapper::GetParameterTable(), "PlumeVolume");
+  WriteMapperProxy(os, "PlumeSheetMapper", vtkPlumeSheetMapper::GetParameterTable(), "PlumeSheet");
+  WriteMapperProxy(os, "PlumeVelocityGlyphMapper", vtkPlumeVelocityGlyphMapper::GetParameterTable(), "PlumeLines");
   os << "  </ProxyGroup>\n";
 
   std::vector<Representation> reps;
@@ -436,7 +507,7 @@ int main(int argc, char* argv[])
 )";
   for (const auto& p : splat.GetParameters())
   {
-    WriteProperty(os, p);
+    WriteProperty(os, splat, p, "");
   }
   for (const auto& [group, params] : Groups(splat, "Splat"))
   {
@@ -493,7 +564,7 @@ int main(int argc, char* argv[])
 )";
   for (const auto& p : smoke.GetParameters())
   {
-    WriteProperty(os, p, IsIntegerVector(smoke, p));
+    WriteProperty(os, smoke, p, "", IsIntegerVector(smoke, p));
   }
   for (const auto& [group, params] : Groups(smoke, "Smoke"))
   {
@@ -510,11 +581,11 @@ int main(int argc, char* argv[])
 </ServerManagerConfiguration>
 )";
 
-  std::ofstream out(argv[1]);
+  std::ofstream out(path);
   out << os.str();
   if (!out)
   {
-    std::cerr << "plumeParaViewXML: cannot write " << argv[1] << "\n";
+    std::cerr << "plumeParaViewXML: cannot write " << path << "\n";
     return 1;
   }
   return 0;

@@ -16,6 +16,19 @@ Splat filter and for the Smoke Solver source, for every property generated from 
     reach the setter: checked by generating Modified as the reals' command).
 Also checks that each representation exposes every property of its mapper
 proxy (nothing of the table is missing from the panel).
+
+The panel hides a property that applies only under some options of a
+choice (the tables' OnlyWith, e.g. PlumeLinesScale only with
+PlumeLinesScaleMode "fixed"), by visibility decorators in its hints as
+ParaView's own XML does. Checked: every decorator names a property of the
+proxy the panel shows (the representation, with its exposed names; the
+filter) and values of that property's enumeration, and, deciding as
+ParaView's GenericDecorator does (visible when the named property holds the
+value; a composite "or" when any of its decorators is), that PlumeLinesScale,
+PlumeLinesLatticeStride, PlumeLinesScreenSpacing, PlumeLinesStreamletSegments,
+PlumeVolumeIsoValue and the splat's VectorArrayName show exactly under their
+options, over every option of their choice. Broken once: without the
+decorators (2026-11-28) PlumeLinesScale showed in "auto".
 """
 import math
 import os
@@ -189,4 +202,80 @@ def set_on_solver(name, value):
 
 
 check("Plume Smoke Solver", solver.SMProxy, set_on_solver)
+
+
+def decorators(proxy, name):
+    """The visibility decorators of a property's hints: [(property named, [values])]."""
+    hints = proxy.GetProperty(name).GetHints()
+    out = []
+    for i in range(hints.GetNumberOfNestedElements() if hints is not None else 0):
+        e = hints.GetNestedElement(i)
+        if e.GetName() != "PropertyWidgetDecorator":
+            continue
+        if e.GetAttribute("type") == "GenericDecorator" and e.GetAttribute("mode") == "visibility":
+            out.append((e.GetAttribute("property"), [e.GetAttribute("value")]))
+        elif e.GetAttribute("type") == "CompositeDecorator":
+            expression = e.GetNestedElement(0)
+            if expression.GetName() != "Expression" or expression.GetAttribute("type") != "or":
+                fail("%s: a composite decorator that is not an 'or' expression" % name)
+                continue
+            parts = [expression.GetNestedElement(j) for j in range(expression.GetNumberOfNestedElements())]
+            names = {p.GetAttribute("property") for p in parts}
+            if len(names) != 1:
+                fail("%s: an 'or' of decorators on several properties %s" % (name, names))
+                continue
+            out.append((names.pop(), [p.GetAttribute("value") for p in parts]))
+    return out
+
+
+def shown(proxy, name):
+    """Whether the panel shows `name`, deciding as ParaView's decorators do."""
+    return all(str(proxy.GetProperty(ctrl).GetElement(0)) in values for ctrl, values in decorators(proxy, name))
+
+
+def check_decorators(label, proxy, prefix, expected):
+    """Plume's properties (names starting with `prefix`; ParaView's own have
+    decorators of other kinds); expected: {property: (choice property,
+    options under which it shows)}."""
+    it = proxy.NewPropertyIterator()
+    it.Begin()
+    count = 0
+    while not it.IsAtEnd():
+        if not it.GetKey().startswith(prefix):
+            it.Next()
+            continue
+        for ctrl, values in decorators(proxy, it.GetKey()):
+            count += 1
+            prop = proxy.GetProperty(ctrl)
+            enum = prop.FindDomain("vtkSMEnumerationDomain") if prop is not None else None
+            entries = [str(enum.GetEntryValue(i)) for i in range(enum.GetNumberOfEntries())] if enum else []
+            if not entries or any(value not in entries for value in values):
+                fail("%s.%s: decorator on %s = %s, not a choice of the panel's proxy" % (label, it.GetKey(), ctrl, values))
+        it.Next()
+    for name, (ctrl, options) in expected.items():
+        enum = proxy.GetProperty(ctrl).FindDomain("vtkSMEnumerationDomain")
+        seen = []
+        for i in range(enum.GetNumberOfEntries()):
+            proxy.GetProperty(ctrl).SetElement(0, enum.GetEntryValue(i))
+            seen.append((enum.GetEntryText(i), shown(proxy, name)))
+            if shown(proxy, name) != (enum.GetEntryText(i) in options):
+                fail("%s.%s: %s with %s %s" % (label, name, "shown" if shown(proxy, name) else "hidden", ctrl,
+                                               enum.GetEntryText(i)))
+        print("%s.%s shown with %s: %s" % (label, name, ctrl, ", ".join(t for t, on in seen if on)))
+    print("%s: %d visibility decorators on Plume's properties, each on a choice of the panel's proxy" %
+          (label, count))
+    if count < len(expected):
+        fail("%s: fewer decorators than properties expected to have one" % label)
+
+
+rep = simple.Show(src, v)
+rep.Representation = "Plume Velocity Lines"
+check_decorators("Plume Velocity Lines", rep.SMProxy, "PlumeLines", {
+    "PlumeLinesScale": ("PlumeLinesScaleMode", {"fixed"}),
+    "PlumeLinesLatticeStride": ("PlumeLinesRootMode", {"lattice"}),
+    "PlumeLinesScreenSpacing": ("PlumeLinesRootMode", {"screen"}),
+    "PlumeLinesStreamletSegments": ("PlumeLinesIntegrator", {"rk2", "rk4"})})
+rep.Representation = "Plume Volume"
+check_decorators("Plume Volume", rep.SMProxy, "PlumeVolume", {"PlumeVolumeIsoValue": ("PlumeVolumeRenderMode", {"isosurface"})})
+check_decorators("Plume Gaussian Splat", splat.SMProxy, "", {"VectorArrayName": ("Mode", {"velocity"})})
 T.finish(not failures)

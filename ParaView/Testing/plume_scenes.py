@@ -73,6 +73,17 @@ def lines_auto(source, v):
     return rep
 
 
+def lines_screen(source, v):
+    """The lines with roots and scale at their defaults (screen-adaptive
+    roots, automatic scale), as a first Apply leaves them but opaque and
+    without the still air's specks: the stride (and with it the automatic
+    length) comes from the whole image's footprint and moving nodes, and the
+    roots from its lattice, whatever part of it a rank holds."""
+    rep = lines_auto(source, v)
+    rep.PlumeLinesRootMode = "screen"
+    return rep
+
+
 def splat(source, v):
     # Seeds at the common carotid's inflow (z = 1, where |v| > 8).
     seeds = simple.PointSource(Center=[113.0, 104.0, 2.0], Radius=3.0, NumberOfPoints=80)

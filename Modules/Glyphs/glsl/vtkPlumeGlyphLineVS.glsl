@@ -41,6 +41,7 @@ uniform vec3 SolidColor;
 //PLUME::ENDIF
 uniform ivec2 StridedDims;  // lattice size after striding (x, y; z follows from the count)
 uniform int Stride;         // lattice stride in grid nodes
+uniform vec3 LatticeOffset; // node of the first root (integers: the whole grid's lattice)
 
 bool AllFinite(vec4 c)
 {
@@ -62,7 +63,7 @@ void main()
   int rest = id / StridedDims.x;
   int j = rest % StridedDims.y;
   int k = rest / StridedDims.y;
-  ivec3 node = ivec3(i, j, k) * Stride;
+  ivec3 node = ivec3(LatticeOffset) + ivec3(i, j, k) * Stride;
   vec3 idx0 = vec3(node);
   // a lattice root is a node, always inside the volume, where the geometry
   // shader's trilinear sample at the texel centre equals the texel itself

@@ -15,6 +15,7 @@ out vec3 rootIndex;
 //PLUME::IF LATTICE
 uniform ivec2 StridedDims; // lattice size after striding (x, y; z follows from the count)
 uniform int Stride;        // lattice stride in grid nodes
+uniform vec3 LatticeOffset; // node of the first root (integers: the whole grid's lattice)
 //PLUME::ENDIF
 //PLUME::IF SEEDS
 in vec3 seedPosition;      // seed point minus the volume centre (model units)
@@ -29,7 +30,7 @@ void main()
   int rest = id / StridedDims.x;
   int j = rest % StridedDims.y;
   int k = rest / StridedDims.y;
-  rootIndex = vec3(ivec3(i, j, k) * Stride);
+  rootIndex = LatticeOffset + vec3(ivec3(i, j, k) * Stride);
 //PLUME::ENDIF
 //PLUME::IF SEEDS
   rootIndex = (RelToIndex * vec4(seedPosition, 1.0)).xyz;

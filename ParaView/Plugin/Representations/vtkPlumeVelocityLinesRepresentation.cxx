@@ -66,6 +66,7 @@ int vtkPlumeVelocityLinesRepresentation::RequestData(
   vtkMath::UninitializeBounds(this->DataBounds);
   this->Cache = nullptr;
   int owned[6];
+  int whole[6] = { 0, -1, 0, -1, 0, -1 }; // unknown: each piece is its own grid
   bool ownedKnown = false;
   if (inputVector[0]->GetNumberOfInformationObjects() == 1)
   {
@@ -77,7 +78,6 @@ int vtkPlumeVelocityLinesRepresentation::RequestData(
     {
       // Pieces of one image share their seam's nodes: each counts once, on
       // the piece below the seam.
-      int whole[6];
       inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
       image->GetExtent(owned);
       for (int a = 0; a < 3; ++a)
@@ -107,6 +107,10 @@ int vtkPlumeVelocityLinesRepresentation::RequestData(
     }
     this->Cache = image;
   }
+  // Screen-adaptive roots (and lattice roots) on the whole image's lattice,
+  // with the stride from its footprint and moving nodes: every rank picks
+  // the roots a serial render picks.
+  this->Mapper->SetWholeExtent(whole);
   this->ReduceAutomaticScaleSpeed(ownedKnown ? owned : nullptr);
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
@@ -127,9 +131,13 @@ void vtkPlumeVelocityLinesRepresentation::ReduceAutomaticScaleSpeed(const int* o
         vtkCommunicator::SUM_OP);
     };
   }
-  const double speed = this->Mapper->ComputeRobustMaximumSpeed(
-    vtkImageData::SafeDownCast(this->Cache), owned, sum);
+  auto* image = vtkImageData::SafeDownCast(this->Cache);
+  const double speed = this->Mapper->ComputeRobustMaximumSpeed(image, owned, sum);
   this->Mapper->SetAutomaticScaleSpeed(speed > 0.0 ? speed : vtkMath::Nan());
+  // The moving nodes over all ranks (seams once), for the screen-adaptive
+  // stride; pieces not of one image (resampled, merged leaves) keep their own.
+  const vtkIdType moving = this->Mapper->ComputeMovingNodes(image, owned, speed, sum);
+  this->Mapper->SetMovingNodeCount(owned ? moving : -1);
 }
 
 bool vtkPlumeVelocityLinesRepresentation::PrepareRender(vtkDataObject* piece)

@@ -22,6 +22,14 @@
  * Pieces resampled from other datasets, or several leaves merged on a rank,
  * count their own lattice nodes (approximate where pieces overlap).
  *
+ * Roots: for image input, RequestData also gives the mapper the whole
+ * image's extent (WholeExtent) and its moving nodes over all ranks
+ * (ComputeMovingNodes, MovingNodeCount), so each rank picks the
+ * screen-adaptive stride of the whole image and puts its roots on the whole
+ * image's lattice: the ranks draw the glyphs of the serial render, at the
+ * same automatic length (which follows the stride). Resampled pieces and
+ * merged leaves choose their own roots.
+ *
  * In parallel each rank draws the glyphs rooted in its piece; the lines are
  * opaque, so the ranks' images are composited by depth.
  */
@@ -66,7 +74,10 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   bool PrepareRender(vtkDataObject* piece) override;
-  /** Sets the mapper's AutomaticScaleSpeed over all ranks' pieces (nodes of `owned` only, if given). */
+  /**
+   * Sets the mapper's AutomaticScaleSpeed over all ranks' pieces (nodes of
+   * `owned` only, if given) and, with `owned`, its MovingNodeCount.
+   */
   void ReduceAutomaticScaleSpeed(const int* owned);
 
   vtkSmartPointer<vtkPlumeVelocityGlyphMapper> Mapper;

@@ -33,6 +33,9 @@ vtkPlumeVolumeRepresentation::vtkPlumeVolumeRepresentation()
   this->Volume->SetProperty(this->Property);
   this->Volume->SetMapper(this->Mapper);
   this->Property->SetInterpolationTypeToLinear();
+  // the mapper's own OpacityUnitDistance (PlumeVolumeOpacityUnitDistance) if
+  // set, else automatic (one voxel), not VTK's default of one world unit
+  this->Property->SetScalarOpacityUnitDistance(0.0);
   this->Prop = this->Volume;
   // ray casting per rank: the ranks' images blend back to front
   this->OrderedCompositing = true;

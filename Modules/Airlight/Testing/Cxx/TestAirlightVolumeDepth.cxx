@@ -99,6 +99,7 @@ int TestAirlightVolumeDepth(int, char*[])
   volume->GetProperty()->SetColor(colour);
   volume->GetProperty()->SetScalarOpacity(opacity);
   volume->GetProperty()->SetInterpolationTypeToLinear(); // VTK's default is nearest
+  volume->GetProperty()->SetScalarOpacityUnitDistance(0.0); // automatic: one voxel
   volume->GetProperty()->SetAmbient(0.0);
   volume->GetProperty()->SetDiffuse(0.0);
   volume->GetProperty()->SetSpecular(0.0);

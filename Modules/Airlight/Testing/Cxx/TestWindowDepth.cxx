@@ -96,6 +96,7 @@ Frames Render(bool offscreen, int samples, bool reference, int& failures)
   volume->GetProperty()->SetColor(colour);
   volume->GetProperty()->SetScalarOpacity(opacity);
   volume->GetProperty()->SetInterpolationTypeToLinear();
+  volume->GetProperty()->SetScalarOpacityUnitDistance(0.0); // automatic: one voxel
   s.Renderer->AddVolume(volume);
 
   vtkNew<vtkPlumeSheetMapper> sheetMapper;

@@ -1,5 +1,8 @@
 // ScaleMode SCALE_AUTO: the scale makes a glyph at the robust maximum speed
-// (99th percentile of the valid speeds) span two root spacings. Checked
+// (99th percentile of the valid speeds) span two root spacings, i.e. two
+// cells times the effective stride (lattice: LatticeStride; screen-adaptive:
+// the frame's stride, here 4, so the glyphs keep their length on screen;
+// with the stride left out, screen roots drew a third of that). Checked
 // against a double-precision reference (a full sort, no code shared with the
 // mapper's vtkPlumePercentile) on a field with an outlier, a masked node and
 // a NaN; the bounds and the drawn image must use that scale: the auto render
@@ -85,13 +88,18 @@ double ReferenceRobustSpeed(vtkImageData* image, int xEnd = NX)
   return speeds[static_cast<size_t>(std::floor(0.99 * double(speeds.size() - 1)))];
 }
 
-plume::test::FloatImage Draw(vtkImageData* image, int scaleMode, double scale)
+// roots: a lattice of every node, or screen-adaptive with a spacing that
+// gives stride 4 in this view (`stride`: the stride drawn)
+plume::test::FloatImage Draw(
+  vtkImageData* image, int scaleMode, double scale, bool screen = false, int* stride = nullptr)
 {
   vtkNew<vtkLookupTable> lut;
   lut->Build();
   vtkNew<vtkPlumeVelocityGlyphMapper> mapper;
   mapper->SetInputData(image);
-  mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
+  mapper->SetRootMode(
+    screen ? vtkPlumeVelocityGlyphMapper::ROOTS_SCREEN_ADAPTIVE : vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
+  mapper->SetScreenSpacing(40.0);
   mapper->SetScaleMode(scaleMode);
   mapper->SetScale(scale);
   mapper->SetLookupTable(lut);
@@ -107,7 +115,12 @@ plume::test::FloatImage Draw(vtkImageData* image, int scaleMode, double scale)
   ren->ResetCameraClippingRange();
   auto window = plume::test::MakeOffscreenWindow(200, 160);
   window->AddRenderer(ren);
-  return plume::test::ReadBack(window);
+  auto frame = plume::test::ReadBack(window);
+  if (stride)
+  {
+    *stride = mapper->GetEffectiveStride();
+  }
+  return frame;
 }
 }
 
@@ -139,11 +152,14 @@ int TestVelocityGlyphAutoScale(int, char*[])
     std::printf("FAIL: robust maximum speed %.9g, reference %.9g\n", speed, robust);
     ++failures;
   }
-  // screen roots: two grid cells (the largest spacing) at the robust speed
+  // two grid cells (the largest spacing) at the robust speed per node of
+  // root stride; screen roots before any render: stride 1
   const double screenScale = 2.0 * Spacing / robust;
-  if (std::fabs(mapper->GetEffectiveScale() - screenScale) > 1e-6 * screenScale)
+  if (std::fabs(mapper->GetEffectiveScale() - screenScale) > 1e-6 * screenScale ||
+    std::fabs(mapper->GetAutomaticScale(4) - 4.0 * screenScale) > 1e-6 * screenScale)
   {
-    std::printf("FAIL: auto scale %.9g, expected %.9g\n", mapper->GetEffectiveScale(), screenScale);
+    std::printf("FAIL: auto scale %.9g (stride 4: %.9g), expected %.9g per node of stride\n",
+      mapper->GetEffectiveScale(), mapper->GetAutomaticScale(4), screenScale);
     ++failures;
   }
   mapper->SetRootMode(vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE);
@@ -204,6 +220,26 @@ int TestVelocityGlyphAutoScale(int, char*[])
   if (other.Max < 0.1)
   {
     std::printf("FAIL: the auto render equals the Scale 1 render (the scale was not applied)\n");
+    ++failures;
+  }
+
+  // screen-adaptive roots: two cells times the frame's stride
+  int stride = 0;
+  const auto screenAuto = Draw(image, vtkPlumeVelocityGlyphMapper::SCALE_AUTO, 1.0, true, &stride);
+  const auto screenFixed = Draw(image, vtkPlumeVelocityGlyphMapper::SCALE_FIXED, stride * screenScale, true);
+  const auto screenUnit = Draw(image, vtkPlumeVelocityGlyphMapper::SCALE_FIXED, screenScale, true);
+  const auto screenSame = plume::test::Compare(screenAuto, screenFixed);
+  const auto screenOther = plume::test::Compare(screenAuto, screenUnit);
+  std::printf("screen roots, stride %d: auto vs fixed at %d x %.6g: max %.4g; vs fixed at one stride: max %.4g\n",
+    stride, stride, screenScale, screenSame.Max, screenOther.Max);
+  if (stride < 2)
+  {
+    std::printf("FAIL: the screen-adaptive stride is %d (the scene no longer tests a stride)\n", stride);
+    ++failures;
+  }
+  if (screenSame.Max > 1e-6 || screenOther.Max < 0.1)
+  {
+    std::printf("FAIL: screen-adaptive auto glyphs are not two cells x the effective stride long\n");
     ++failures;
   }
   return failures == 0 ? 0 : 1;

@@ -1,10 +1,13 @@
 // The volume's defaults live in the library (vtkPlumeVolumeMapper), so C++,
 // Python, ParaView and the plume command line get the same ones:
-//  - opacity unit distance: a property left at VTK's default 1 means one voxel
-//    (the image's mean |spacing|, here (0.02 + 0.01 + 0.03) / 3 = 0.02), and
-//    draws exactly what the property set to that value draws; a property set
-//    to something else is honoured; the mapper's OpacityUnitDistance wins over
-//    both; changing the automatic value re-tabulates (the table holds it);
+//  - opacity unit distance: a property at 0 means automatic, one voxel (the
+//    image's mean |spacing|, here (0.02 + 0.01 + 0.03) / 3 = 0.02), and
+//    draws exactly what the property set to that value draws; a property's
+//    own value is honoured, 1 included (VTK's default and a user's 1 alike:
+//    one world unit, as VTK's mappers read it; the mapper once read an exact
+//    1 as "unset" and drew one voxel); the mapper's OpacityUnitDistance wins
+//    over the property's; changing the automatic value re-tabulates (the
+//    table holds it);
 //  - iso value: unset (the property at VTK's default, one value 0), the
 //    middle of the colour transfer function's range,
 //    drawing exactly what that value set explicitly draws;
@@ -36,7 +39,7 @@ int TestVolumeDefaults(int, char*[])
   vtkVolumeProperty* property = s.Volume->GetProperty();
 
   // ---- opacity unit distance
-  property->SetScalarOpacityUnitDistance(1.0); // VTK's default: "not set"
+  property->SetScalarOpacityUnitDistance(0.0); // automatic
   const plume::test::FloatImage automatic = plume::test::ReadBack(s.Window);
   std::printf("automatic unit distance %.6g (want 0.02)\n", s.Mapper->GetEffectiveOpacityUnitDistance());
   if (std::abs(s.Mapper->GetEffectiveOpacityUnitDistance() - 0.02) > 1e-12 ||
@@ -47,6 +50,15 @@ int TestVolumeDefaults(int, char*[])
   property->SetScalarOpacityUnitDistance(0.02);
   const plume::test::FloatImage explicitProperty = plume::test::ReadBack(s.Window);
   const double sameRMS = plume::test::Compare(automatic, explicitProperty).RMS;
+  property->SetScalarOpacityUnitDistance(1.0); // a user's 1 (or VTK's default): one world unit
+  const plume::test::FloatImage one = plume::test::ReadBack(s.Window);
+  const double oneUnit = s.Mapper->GetEffectiveOpacityUnitDistance();
+  const double oneRMS = plume::test::Compare(automatic, one).RMS;
+  std::printf("property 1: unit %.6g (want 1), RMS %.3g against one voxel\n", oneUnit, oneRMS);
+  if (oneUnit != 1.0 || oneRMS < 1e-3)
+  {
+    fail("a property's unit distance of 1 is not honoured");
+  }
   property->SetScalarOpacityUnitDistance(0.2);
   const plume::test::FloatImage thinner = plume::test::ReadBack(s.Window);
   const double propertyUnit = s.Mapper->GetEffectiveOpacityUnitDistance();
@@ -66,7 +78,7 @@ int TestVolumeDefaults(int, char*[])
   }
   // a new spacing changes the automatic value: the table follows without any data upload
   s.Mapper->SetOpacityUnitDistance(0.0);
-  property->SetScalarOpacityUnitDistance(1.0);
+  property->SetScalarOpacityUnitDistance(0.0);
   s.Window->Render();
   const int tables = s.Mapper->GetTableCount();
   const int uploads = s.Mapper->GetUploadCount();
