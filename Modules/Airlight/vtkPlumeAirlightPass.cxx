@@ -41,6 +41,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -175,6 +176,11 @@ struct vtkPlumeAirlightPass::ShadowMap
   vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
   vtkTextureObject* Depth = nullptr;
   vtkTextureObject* Color = nullptr;
+  // What the shader reads: RG32F with a full mip chain, level 0 the depth
+  // (twice), level L the (min, max) of the texels it covers at level L - 1.
+  vtkTextureObject* MinMax = nullptr;
+  int Top = 0;  // MinMax's highest level (0: no pyramid)
+  int Size = 0; // the map's (a face's) size when baked
   std::vector<double> Key;
   double Near = 0, Far = 1;
   // 1 for a spot light (the whole texture); 6 for a point light: the faces
@@ -184,7 +190,7 @@ struct vtkPlumeAirlightPass::ShadowMap
 
   void Release()
   {
-    for (vtkTextureObject** t : { &this->Depth, &this->Color })
+    for (vtkTextureObject** t : { &this->Depth, &this->Color, &this->MinMax })
     {
       if (*t)
       {
@@ -401,6 +407,11 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Advanced()
       .Doc("Width and height of each spot light's shadow map and of each face of a point light's cube map.")
       .Bind(&T::SetShadowMapSize, &T::GetShadowMapSize);
+    t.Boolean("shadow_min_max", "ShadowMinMax", true)
+      .Panel("Medium")
+      .Advanced()
+      .Doc("Min-max mipmaps of the shadow maps: runs of 8 march steps that are wholly lit or wholly shadowed are evaluated at once (same result, faster).")
+      .Bind(&T::SetShadowMinMax, &T::GetShadowMinMax);
     return t;
   }();
   return table;
@@ -446,6 +457,7 @@ void vtkPlumeAirlightPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Shadows: " << this->Shadows << "\n";
   os << indent << "ShadowSteps: " << this->ShadowSteps << "\n";
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
+  os << indent << "ShadowMinMax: " << this->ShadowMinMax << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -570,6 +582,103 @@ bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w,
     this->UploadedTableAnisotropy = this->ScatteringAnisotropy;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightPass::BuildMinMax(ShadowMap* m, vtkOpenGLRenderWindow* renWin, int w, int h)
+{
+  // The depth map read back once per bake (maps are rebuilt only on change)
+  // and reduced on the CPU: level L's texel j covers texels 2j, 2j + 1 of
+  // level L - 1, and the last one of an odd row also the leftover, so a texel
+  // always covers at least its 2^L x 2^L block of the map (the shader's
+  // footprint test is conservative).
+  std::vector<float> depth(static_cast<size_t>(w) * h);
+  // Raw binds on the current unit, restored after: no texture unit of VTK's
+  // manager is taken, so none is left pointing at these textures.
+  GLint previous = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
+  glBindTexture(GL_TEXTURE_2D, m->Depth->GetHandle());
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
+  std::vector<std::vector<float>> levels(1);
+  levels[0].resize(2 * depth.size());
+  for (size_t i = 0; i < depth.size(); ++i)
+  {
+    levels[0][2 * i] = levels[0][2 * i + 1] = depth[i];
+  }
+  std::vector<std::pair<int, int>> sizes{ { w, h } };
+  while (sizes.back().first > 1 || sizes.back().second > 1)
+  {
+    const int pw = sizes.back().first, ph = sizes.back().second;
+    const int lw = std::max(pw / 2, 1), lh = std::max(ph / 2, 1);
+    const std::vector<float>& prev = levels.back();
+    std::vector<float> next(2 * static_cast<size_t>(lw) * lh);
+    vtkSMPTools::For(0, lh, [&](vtkIdType y0, vtkIdType y1) {
+      for (vtkIdType y = y0; y < y1; ++y)
+      {
+        const int sy0 = std::min(static_cast<int>(2 * y), ph - 1);
+        const int sy1 = (y == lh - 1) ? ph - 1 : std::min(static_cast<int>(2 * y + 1), ph - 1);
+        for (int x = 0; x < lw; ++x)
+        {
+          const int sx0 = std::min(2 * x, pw - 1);
+          const int sx1 = (x == lw - 1) ? pw - 1 : std::min(2 * x + 1, pw - 1);
+          float lo = std::numeric_limits<float>::max(), hi = -lo;
+          for (int sy = sy0; sy <= sy1; ++sy)
+          {
+            for (int sx = sx0; sx <= sx1; ++sx)
+            {
+              const size_t i = 2 * (static_cast<size_t>(sy) * pw + sx);
+              lo = std::min(lo, prev[i]);
+              hi = std::max(hi, prev[i + 1]);
+            }
+          }
+          const size_t o = 2 * (static_cast<size_t>(y) * lw + x);
+          next[o] = lo;
+          next[o + 1] = hi;
+        }
+      }
+    });
+    levels.push_back(std::move(next));
+    sizes.emplace_back(lw, lh);
+  }
+  // One RG32F texture of one level: the map at (0, 0), level L > 0 right of
+  // it at (w, h - (h >> (L - 1))) (the levels' heights h/2, h/4, ... stack
+  // into h when h is a power of two; otherwise no pyramid, Top 0). (A real mip
+  // chain read with texelFetch(..., level) returned stale levels on llvmpipe
+  // after the pass's textures had been released and made again.)
+  int top = 0;
+  if ((h & (h - 1)) == 0)
+  {
+    while ((h >> top) > 1)
+    {
+      ++top;
+    }
+  }
+  const int atlasW = top > 0 ? w + std::max(w >> 1, 1) : w;
+  std::vector<float> atlas(2 * static_cast<size_t>(atlasW) * h, 1.0f);
+  for (int l = 0; l <= top; ++l)
+  {
+    const int x0 = l == 0 ? 0 : w;
+    const int y0 = l == 0 ? 0 : h - (h >> (l - 1));
+    const int lw = sizes[l].first, lh = sizes[l].second;
+    for (int y = 0; y < lh; ++y)
+    {
+      std::copy(levels[l].begin() + 2 * static_cast<size_t>(y) * lw,
+        levels[l].begin() + 2 * (static_cast<size_t>(y) + 1) * lw,
+        atlas.begin() + 2 * ((static_cast<size_t>(y0) + y) * atlasW + x0));
+    }
+  }
+  if (!m->MinMax)
+  {
+    m->MinMax = vtkTextureObject::New();
+    m->MinMax->SetContext(renWin);
+    m->MinMax->SetWrapS(vtkTextureObject::ClampToEdge);
+    m->MinMax->SetWrapT(vtkTextureObject::ClampToEdge);
+    m->MinMax->SetMinificationFilter(vtkTextureObject::Nearest);
+    m->MinMax->SetMagnificationFilter(vtkTextureObject::Nearest);
+  }
+  m->MinMax->Create2DFromRaw(atlasW, h, 2, VTK_FLOAT, atlas.data());
+  m->Top = top;
 }
 
 //------------------------------------------------------------------------------
@@ -700,6 +809,8 @@ bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
   m->FrameBuffer->RemoveColorAttachments(1);
   m->FrameBuffer->RemoveDepthAttachment();
   ostate->PopFramebufferBindings();
+  m->Size = size;
+  this->BuildMinMax(m, renWin, mapW, mapH);
   m->Key = key;
   ++this->NumberOfShadowMapBakes;
   return true;
@@ -1251,6 +1362,8 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
         }
         program->SetUniform1iv("LightShadow", n, local.data());
         program->SetUniformi("ShadowSteps", this->ShadowSteps);
+        program->SetUniformi("ShadowMinMax", this->ShadowMinMax ? 1 : 0);
+        program->SetUniformi("ShadowRunStatistics", this->ShadowRunStatistics ? 1 : 0);
         // Cube faces are world-axis aligned: the shader picks one by the world direction.
         double eyeToWorld[9];
         for (int i = 0; i < 3; ++i)
@@ -1265,8 +1378,8 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
         {
           const int m = group.FirstShadow + k;
           const std::string ks2 = std::to_string(k);
-          this->ShadowMaps[m]->Depth->Activate();
-          program->SetUniformi(("ShadowMap" + ks2).c_str(), this->ShadowMaps[m]->Depth->GetTextureUnit());
+          this->ShadowMaps[m]->MinMax->Activate();
+          program->SetUniformi(("ShadowMap" + ks2).c_str(), this->ShadowMaps[m]->MinMax->GetTextureUnit());
           for (int f = 0; f < 6; ++f)
           {
             plume::SetUniformMatrix4x4(program, ("ShadowMatrix" + ks2 + "[" + std::to_string(f) + "]").c_str(),
@@ -1275,6 +1388,10 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
           program->SetUniform2f(("ShadowRange" + ks2).c_str(), &shadowRanges[2 * m]);
           program->SetUniformi(("ShadowFaces" + ks2).c_str(), shadowFaces[m]);
           program->SetUniform3f(("ShadowLight" + ks2).c_str(), &shadowLights[3 * m]);
+          const ShadowMap* sm = this->ShadowMaps[m];
+          const int mapSize[2] = { sm->Faces == 6 ? 3 * sm->Size : sm->Size, sm->Faces == 6 ? 2 * sm->Size : sm->Size };
+          program->SetUniform2i(("ShadowSize" + ks2).c_str(), mapSize);
+          program->SetUniformi(("ShadowTop" + ks2).c_str(), sm->Top);
         }
       }
     }
@@ -1322,7 +1439,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     }
     for (int k = 0; k < group.Shadows; ++k)
     {
-      this->ShadowMaps[group.FirstShadow + k]->Depth->Deactivate();
+      this->ShadowMaps[group.FirstShadow + k]->MinMax->Deactivate();
     }
   }
   this->ColorTexture->Deactivate();

@@ -247,6 +247,33 @@ public:
   vtkGetMacro(ShadowMapSize, int);
   ///@}
 
+  ///@{
+  /**
+   * Min-max mipmaps of the shadow maps (Chen et al. 2011): the march decides
+   * each run of 8 steps from the nearest and farthest depth of the map under
+   * the run's footprint, and evaluates a fully shadowed run (and a fully lit
+   * run of an unweighted light) as one closed-form difference instead of
+   * eight lit tests and look-ups. The result is the per-step march's (up to
+   * float rounding). The pyramid is built on the CPU when a map is baked and
+   * shares the map's texture; maps whose height is not a power of two get
+   * none. Default true; false: every step is tested.
+   */
+  vtkSetMacro(ShadowMinMax, bool);
+  vtkGetMacro(ShadowMinMax, bool);
+  vtkBooleanMacro(ShadowMinMax, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Diagnostic (for tests and tuning): the frame's colour becomes, per
+   * pixel, (march runs decided by the min-max mipmaps, all march runs, 0),
+   * summed over the pixel's shadowed lights; read it from a float target.
+   * Default false.
+   */
+  vtkSetMacro(ShadowRunStatistics, bool);
+  vtkGetMacro(ShadowRunStatistics, bool);
+  ///@}
+
   /** How many shadow maps have been rendered so far (for tests: maps are rebuilt only on change). */
   vtkGetMacro(NumberOfShadowMapBakes, int);
 
@@ -385,6 +412,8 @@ protected:
   bool Shadows = true;
   int ShadowSteps = 64;
   int ShadowMapSize = 1024;
+  bool ShadowMinMax = true;
+  bool ShadowRunStatistics = false;
   int NumberOfShadowMapBakes = 0;
   int NumberOfShadowedLights = 0;
   int NumberOfUnshadowedLights = 0;
@@ -400,6 +429,8 @@ protected:
 
   struct ShadowMap;
   std::vector<ShadowMap*> ShadowMaps;
+  // Reads a freshly baked map back and uploads its min-max mip chain (m->MinMax).
+  void BuildMinMax(ShadowMap* m, vtkOpenGLRenderWindow* renWin, int w, int h);
   // Bakes the depth map of light `index` if its key changed; returns false on failure.
   bool BakeShadowMap(const vtkRenderState* s, int index, const std::vector<double>& key,
     const double position[3], const double focal[3], double coneAngle, const double bounds[6], bool point);

@@ -66,18 +66,26 @@ uniform vec3 LightTextureUp[NUMBER_OF_LIGHTS];    // the image's v axis / tan(co
 // near and far distances; ShadowMapK: window depth.
 uniform int LightShadow[NUMBER_OF_LIGHTS];
 uniform int ShadowSteps;
+uniform int ShadowMinMax;     // 1: runs of 8 steps decided from the min-max mip chain
+uniform int ShadowRunStatistics; // 1: the output is (runs decided, all runs) of the marches
+float RunsDecided = 0.0;
+float RunsTotal = 0.0;
 uniform mat3 EyeToWorld;
 uniform sampler2D ShadowMap0;
 uniform mat4 ShadowMatrix0[6];
 uniform vec2 ShadowRange0;
 uniform int ShadowFaces0;
 uniform vec3 ShadowLight0;
+uniform ivec2 ShadowSize0;
+uniform int ShadowTop0;
 #if NUMBER_OF_SHADOWS > 1
 uniform sampler2D ShadowMap1;
 uniform mat4 ShadowMatrix1[6];
 uniform vec2 ShadowRange1;
 uniform int ShadowFaces1;
 uniform vec3 ShadowLight1;
+uniform ivec2 ShadowSize1;
+uniform int ShadowTop1;
 #endif
 #if NUMBER_OF_SHADOWS > 2
 uniform sampler2D ShadowMap2;
@@ -85,6 +93,8 @@ uniform mat4 ShadowMatrix2[6];
 uniform vec2 ShadowRange2;
 uniform int ShadowFaces2;
 uniform vec3 ShadowLight2;
+uniform ivec2 ShadowSize2;
+uniform int ShadowTop2;
 #endif
 #if NUMBER_OF_SHADOWS > 3
 uniform sampler2D ShadowMap3;
@@ -92,6 +102,8 @@ uniform mat4 ShadowMatrix3[6];
 uniform vec2 ShadowRange3;
 uniform int ShadowFaces3;
 uniform vec3 ShadowLight3;
+uniform ivec2 ShadowSize3;
+uniform int ShadowTop3;
 #endif
 #if NUMBER_OF_SHADOWS > 4
 uniform sampler2D ShadowMap4;
@@ -99,6 +111,8 @@ uniform mat4 ShadowMatrix4[6];
 uniform vec2 ShadowRange4;
 uniform int ShadowFaces4;
 uniform vec3 ShadowLight4;
+uniform ivec2 ShadowSize4;
+uniform int ShadowTop4;
 #endif
 #if NUMBER_OF_SHADOWS > 5
 uniform sampler2D ShadowMap5;
@@ -106,6 +120,8 @@ uniform mat4 ShadowMatrix5[6];
 uniform vec2 ShadowRange5;
 uniform int ShadowFaces5;
 uniform vec3 ShadowLight5;
+uniform ivec2 ShadowSize5;
+uniform int ShadowTop5;
 #endif
 #if NUMBER_OF_SHADOWS > 6
 uniform sampler2D ShadowMap6;
@@ -113,6 +129,8 @@ uniform mat4 ShadowMatrix6[6];
 uniform vec2 ShadowRange6;
 uniform int ShadowFaces6;
 uniform vec3 ShadowLight6;
+uniform ivec2 ShadowSize6;
+uniform int ShadowTop6;
 #endif
 #if NUMBER_OF_SHADOWS > 7
 uniform sampler2D ShadowMap7;
@@ -120,6 +138,8 @@ uniform mat4 ShadowMatrix7[6];
 uniform vec2 ShadowRange7;
 uniform int ShadowFaces7;
 uniform vec3 ShadowLight7;
+uniform ivec2 ShadowSize7;
+uniform int ShadowTop7;
 #endif
 //PLUME::ENDIF
 
@@ -365,7 +385,7 @@ int cubeFace(vec3 v)
 
 // 1 if the eye-space point p is lit in the shadow map (outside its frustum: lit).
 // faces 6: p's face f is the tile (f % 3, f / 3) of the 3 x 2 atlas.
-float litIn(sampler2D map, mat4 toLight, vec2 range, vec3 p, int face, int faces)
+float litIn(sampler2D map, ivec2 size, mat4 toLight, vec2 range, vec3 p, int face, int faces)
 {
   vec4 clip = toLight * vec4(p, 1.0);
   if (clip.w <= range.x)
@@ -380,10 +400,11 @@ float litIn(sampler2D map, mat4 toLight, vec2 range, vec3 p, int face, int faces
   if (faces == 6)
   {
     // Half a texel inside the tile: no depth from the neighbouring face.
-    vec2 inset = 0.5 / vec2(textureSize(map, 0)) * vec2(3.0, 2.0);
+    vec2 inset = 0.5 / vec2(size) * vec2(3.0, 2.0);
     uv = (vec2(float(face % 3), float(face / 3)) + clamp(uv, inset, 1.0 - inset)) / vec2(3.0, 2.0);
   }
-  float depth = texture(map, uv).r;
+  // Nearest texel, clamped to the map's edge (the atlas's level 0: the depth).
+  float depth = texelFetch(map, clamp(ivec2(floor(uv * vec2(size))), ivec2(0), size - 1), 0).r;
   if (depth >= 1.0)
   {
     return 1.0; // nothing drawn there
@@ -401,53 +422,196 @@ float lit(int s, vec3 p)
   if (s == 1)
   {
     int f = ShadowFaces1 == 6 ? cubeFace(p - ShadowLight1) : 0;
-    return litIn(ShadowMap1, ShadowMatrix1[f], ShadowRange1, p, f, ShadowFaces1);
+    return litIn(ShadowMap1, ShadowSize1, ShadowMatrix1[f], ShadowRange1, p, f, ShadowFaces1);
   }
 #endif
 #if NUMBER_OF_SHADOWS > 2
   if (s == 2)
   {
     int f = ShadowFaces2 == 6 ? cubeFace(p - ShadowLight2) : 0;
-    return litIn(ShadowMap2, ShadowMatrix2[f], ShadowRange2, p, f, ShadowFaces2);
+    return litIn(ShadowMap2, ShadowSize2, ShadowMatrix2[f], ShadowRange2, p, f, ShadowFaces2);
   }
 #endif
 #if NUMBER_OF_SHADOWS > 3
   if (s == 3)
   {
     int f = ShadowFaces3 == 6 ? cubeFace(p - ShadowLight3) : 0;
-    return litIn(ShadowMap3, ShadowMatrix3[f], ShadowRange3, p, f, ShadowFaces3);
+    return litIn(ShadowMap3, ShadowSize3, ShadowMatrix3[f], ShadowRange3, p, f, ShadowFaces3);
   }
 #endif
 #if NUMBER_OF_SHADOWS > 4
   if (s == 4)
   {
     int f = ShadowFaces4 == 6 ? cubeFace(p - ShadowLight4) : 0;
-    return litIn(ShadowMap4, ShadowMatrix4[f], ShadowRange4, p, f, ShadowFaces4);
+    return litIn(ShadowMap4, ShadowSize4, ShadowMatrix4[f], ShadowRange4, p, f, ShadowFaces4);
   }
 #endif
 #if NUMBER_OF_SHADOWS > 5
   if (s == 5)
   {
     int f = ShadowFaces5 == 6 ? cubeFace(p - ShadowLight5) : 0;
-    return litIn(ShadowMap5, ShadowMatrix5[f], ShadowRange5, p, f, ShadowFaces5);
+    return litIn(ShadowMap5, ShadowSize5, ShadowMatrix5[f], ShadowRange5, p, f, ShadowFaces5);
   }
 #endif
 #if NUMBER_OF_SHADOWS > 6
   if (s == 6)
   {
     int f = ShadowFaces6 == 6 ? cubeFace(p - ShadowLight6) : 0;
-    return litIn(ShadowMap6, ShadowMatrix6[f], ShadowRange6, p, f, ShadowFaces6);
+    return litIn(ShadowMap6, ShadowSize6, ShadowMatrix6[f], ShadowRange6, p, f, ShadowFaces6);
   }
 #endif
 #if NUMBER_OF_SHADOWS > 7
   if (s == 7)
   {
     int f = ShadowFaces7 == 6 ? cubeFace(p - ShadowLight7) : 0;
-    return litIn(ShadowMap7, ShadowMatrix7[f], ShadowRange7, p, f, ShadowFaces7);
+    return litIn(ShadowMap7, ShadowSize7, ShadowMatrix7[f], ShadowRange7, p, f, ShadowFaces7);
   }
 #endif
   int f = ShadowFaces0 == 6 ? cubeFace(p - ShadowLight0) : 0;
-  return litIn(ShadowMap0, ShadowMatrix0[f], ShadowRange0, p, f, ShadowFaces0);
+  return litIn(ShadowMap0, ShadowSize0, ShadowMatrix0[f], ShadowRange0, p, f, ShadowFaces0);
+}
+
+// Min-max shadow mipmaps (Chen et al. 2011). Whether every point of the
+// eye-space segment [pa, pb] is shadowed (0) or lit (1) in the map, by
+// litIn's rule, or mixed or undecided (2). The segment projects to a straight
+// segment in the map (both ends in front of the light) and its distance along
+// the light's axis (clip.w) is affine along it, so the texels nearest
+// sampling can read lie in the ends' bounding box (one texel wider for
+// rounding) and the distances between the ends' ones. The box is covered by
+// at most 2 x 2 texels of the first level where it spans at most two; each
+// holds (min, max) of the depth under it.
+int runIn(sampler2D map, ivec2 size, int top, mat4 toLight, vec2 range, vec3 pa, vec3 pb, int face, int faces)
+{
+  vec4 ca = toLight * vec4(pa, 1.0);
+  vec4 cb = toLight * vec4(pb, 1.0);
+  if (min(ca.w, cb.w) <= range.x * 1.0001)
+  {
+    return 2; // near the light: litIn calls it lit
+  }
+  vec2 ua = ca.xy / ca.w * 0.5 + 0.5;
+  vec2 ub = cb.xy / cb.w * 0.5 + 0.5;
+  vec2 lo = min(ua, ub);
+  vec2 hi = max(ua, ub);
+  if (any(lessThan(lo, vec2(0.0))) || any(greaterThan(hi, vec2(1.0))))
+  {
+    return 2; // partly outside the frustum: litIn calls that part lit
+  }
+  if (top == 0)
+  {
+    return 2; // no pyramid for this map
+  }
+  if (faces == 6)
+  {
+    vec2 inset = 0.5 / vec2(size) * vec2(3.0, 2.0);
+    vec2 tile = vec2(float(face % 3), float(face / 3));
+    lo = (tile + clamp(lo, inset, 1.0 - inset)) / vec2(3.0, 2.0);
+    hi = (tile + clamp(hi, inset, 1.0 - inset)) / vec2(3.0, 2.0);
+  }
+  ivec2 i0 = clamp(ivec2(floor(lo * vec2(size))) - 1, ivec2(0), size - 1);
+  ivec2 i1 = clamp(ivec2(floor(hi * vec2(size))) + 1, ivec2(0), size - 1);
+  // The first level with 2^level > the box's span in texels: there i >> level
+  // of the box's ends differ by at most 1.
+  int span = max(i1.x - i0.x, i1.y - i0.y);
+  int level = span > 0 ? int(floor(log2(float(span)))) + 1 : 0;
+  level += ((i1.x >> level) - (i0.x >> level) > 1 || (i1.y >> level) - (i0.y >> level) > 1) ? 1 : 0;
+  level = min(level, top);
+  ivec2 last = max(size >> level, ivec2(1)) - 1;
+  ivec2 a = min(i0 >> level, last);
+  ivec2 b = min(i1 >> level, last);
+  if (b.x - a.x > 1 || b.y - a.y > 1)
+  {
+    return 2; // wider than the top level (a map wider than twice its height)
+  }
+  // Level L > 0 sits right of level 0, at height size.y - (size.y >> (L - 1)).
+  ivec2 origin = level == 0 ? ivec2(0) : ivec2(size.x, size.y - (size.y >> (level - 1)));
+  vec2 t00 = texelFetch(map, origin + a, 0).rg;
+  vec2 t10 = texelFetch(map, origin + ivec2(b.x, a.y), 0).rg;
+  vec2 t01 = texelFetch(map, origin + ivec2(a.x, b.y), 0).rg;
+  vec2 t11 = texelFetch(map, origin + b, 0).rg;
+  float dmin = min(min(t00.x, t10.x), min(t01.x, t11.x));
+  float dmax = max(max(t00.y, t10.y), max(t01.y, t11.y));
+  if (dmin >= 1.0)
+  {
+    return 1; // nothing drawn under the run
+  }
+  float n = range.x;
+  float f = range.y;
+  float zNear = 2.0 * n * f / ((f + n) - (2.0 * dmin - 1.0) * (f - n));
+  // A margin of 1e-5 on the distances: the steps' own points are computed
+  // through other roundings than the ends' interpolation.
+  if (max(ca.w, cb.w) * 1.00001 <= zNear * 1.002)
+  {
+    return 1;
+  }
+  float zFar = 2.0 * n * f / ((f + n) - (2.0 * dmax - 1.0) * (f - n));
+  if (dmax < 1.0 && min(ca.w, cb.w) * 0.99999 > zFar * 1.002)
+  {
+    return 0;
+  }
+  return 2;
+}
+
+int runState(int s, vec3 pa, vec3 pb)
+{
+#if NUMBER_OF_SHADOWS > 1
+  if (s == 1)
+  {
+    int fa = ShadowFaces1 == 6 ? cubeFace(pa - ShadowLight1) : 0;
+    int fb = ShadowFaces1 == 6 ? cubeFace(pb - ShadowLight1) : 0;
+    return fa != fb ? 2 : runIn(ShadowMap1, ShadowSize1, ShadowTop1, ShadowMatrix1[fa], ShadowRange1, pa, pb, fa, ShadowFaces1);
+  }
+#endif
+#if NUMBER_OF_SHADOWS > 2
+  if (s == 2)
+  {
+    int fa = ShadowFaces2 == 6 ? cubeFace(pa - ShadowLight2) : 0;
+    int fb = ShadowFaces2 == 6 ? cubeFace(pb - ShadowLight2) : 0;
+    return fa != fb ? 2 : runIn(ShadowMap2, ShadowSize2, ShadowTop2, ShadowMatrix2[fa], ShadowRange2, pa, pb, fa, ShadowFaces2);
+  }
+#endif
+#if NUMBER_OF_SHADOWS > 3
+  if (s == 3)
+  {
+    int fa = ShadowFaces3 == 6 ? cubeFace(pa - ShadowLight3) : 0;
+    int fb = ShadowFaces3 == 6 ? cubeFace(pb - ShadowLight3) : 0;
+    return fa != fb ? 2 : runIn(ShadowMap3, ShadowSize3, ShadowTop3, ShadowMatrix3[fa], ShadowRange3, pa, pb, fa, ShadowFaces3);
+  }
+#endif
+#if NUMBER_OF_SHADOWS > 4
+  if (s == 4)
+  {
+    int fa = ShadowFaces4 == 6 ? cubeFace(pa - ShadowLight4) : 0;
+    int fb = ShadowFaces4 == 6 ? cubeFace(pb - ShadowLight4) : 0;
+    return fa != fb ? 2 : runIn(ShadowMap4, ShadowSize4, ShadowTop4, ShadowMatrix4[fa], ShadowRange4, pa, pb, fa, ShadowFaces4);
+  }
+#endif
+#if NUMBER_OF_SHADOWS > 5
+  if (s == 5)
+  {
+    int fa = ShadowFaces5 == 6 ? cubeFace(pa - ShadowLight5) : 0;
+    int fb = ShadowFaces5 == 6 ? cubeFace(pb - ShadowLight5) : 0;
+    return fa != fb ? 2 : runIn(ShadowMap5, ShadowSize5, ShadowTop5, ShadowMatrix5[fa], ShadowRange5, pa, pb, fa, ShadowFaces5);
+  }
+#endif
+#if NUMBER_OF_SHADOWS > 6
+  if (s == 6)
+  {
+    int fa = ShadowFaces6 == 6 ? cubeFace(pa - ShadowLight6) : 0;
+    int fb = ShadowFaces6 == 6 ? cubeFace(pb - ShadowLight6) : 0;
+    return fa != fb ? 2 : runIn(ShadowMap6, ShadowSize6, ShadowTop6, ShadowMatrix6[fa], ShadowRange6, pa, pb, fa, ShadowFaces6);
+  }
+#endif
+#if NUMBER_OF_SHADOWS > 7
+  if (s == 7)
+  {
+    int fa = ShadowFaces7 == 6 ? cubeFace(pa - ShadowLight7) : 0;
+    int fb = ShadowFaces7 == 6 ? cubeFace(pb - ShadowLight7) : 0;
+    return fa != fb ? 2 : runIn(ShadowMap7, ShadowSize7, ShadowTop7, ShadowMatrix7[fa], ShadowRange7, pa, pb, fa, ShadowFaces7);
+  }
+#endif
+  int fa = ShadowFaces0 == 6 ? cubeFace(pa - ShadowLight0) : 0;
+  int fb = ShadowFaces0 == 6 ? cubeFace(pb - ShadowLight0) : 0;
+  return fa != fb ? 2 : runIn(ShadowMap0, ShadowSize0, ShadowTop0, ShadowMatrix0[fa], ShadowRange0, pa, pb, fa, ShadowFaces0);
 }
 
 // The march of Wyman & Ramsey over [span.x, span.y] for shadowed light l (a
@@ -480,33 +644,70 @@ vec3 shadowedMarch(vec3 o, vec3 r, vec2 span, float tc, float h, int l, float ex
   vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
   int s = LightShadow[l];
   vec3 unit = vec3(0.0);
-  for (int k = 1; k <= steps; ++k)
+  // Runs of RUN steps. A run that the min-max chain finds wholly shadowed
+  // adds nothing; one wholly lit adds Phi(end) - Phi(start) (the lit steps
+  // telescope) or, for a weighted light, its steps' weighted differences
+  // without their lit tests. Only a mixed run tests every step. Each run's
+  // trip count is 0 or its length: llvmpipe skips a loop that no lane of a
+  // SIMD block enters, but runs both sides of a divergent `if`.
+  const int RUN = 8;
+  float xa = span.x;
+  for (int k0 = 0; k0 < steps; k0 += RUN)
   {
-    float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
-    vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
-    float xj = tc + h * tan(th0 + (float(k) - 1.0 + jitter) * dth);
-    if (lit(s, o + xj * r) > 0.0)
+    int k1 = min(k0 + RUN, steps);
+    float xe = (k1 == steps) ? span.y : tc + h * tan(th0 + float(k1) * dth);
+    int state = 2;
+    if (ShadowMinMax == 1 && !isinf(xe))
     {
-      vec3 w = vec3(1.0);
-      if (weighted)
-      {
-        float thm = th0 + (float(k) - 0.5) * dth;
-        vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
-        w = vec3(exponent == 0.0 ? 1.0 : pow(max(dot(dir, LightAxis[l]), 0.0), exponent));
-//PLUME::IF TEXTURE
-        if (textured(l))
-        {
-          w *= lightTexture(l, dir);
-        }
-//PLUME::ENDIF
-      }
-      // Not clamped per step: the table's interpolation error can make a
-      // short step's difference slightly negative, and clamping each step
-      // would add that error up (with a strongly peaked phase, 2 % of the
-      // range); unclamped, the lit steps telescope. The sum is clamped.
-      unit += w * (phiB - phiA);
+      state = runState(s, o + xa * r, o + xe * r);
     }
-    phiA = phiB;
+    xa = xe;
+    RunsTotal += 1.0;
+    RunsDecided += state == 2 ? 0.0 : 1.0;
+    bool whole = state == 0 || (state == 1 && !weighted);
+    for (int j = whole ? 0 : 1; j < 1; ++j)
+    {
+      // One difference for the run; Phi(end) as the per-step loop computes it.
+      vec3 phiB = runningIntegral(xe, tc, h, footPhi, footTail);
+      if (state == 1)
+      {
+        unit += phiB - phiA;
+      }
+      phiA = phiB;
+    }
+    for (int k = whole ? k1 + 1 : k0 + 1; k <= k1; ++k)
+    {
+      float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
+      vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
+      bool on = state == 1;
+      for (int q = state == 2 ? 0 : 1; q < 1; ++q)
+      {
+        float xj = tc + h * tan(th0 + (float(k) - 1.0 + jitter) * dth);
+        on = lit(s, o + xj * r) > 0.0;
+      }
+      if (on)
+      {
+        vec3 w = vec3(1.0);
+        if (weighted)
+        {
+          float thm = th0 + (float(k) - 0.5) * dth;
+          vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
+          w = vec3(exponent == 0.0 ? 1.0 : pow(max(dot(dir, LightAxis[l]), 0.0), exponent));
+//PLUME::IF TEXTURE
+          if (textured(l))
+          {
+            w *= lightTexture(l, dir);
+          }
+//PLUME::ENDIF
+        }
+        // Not clamped per step: the table's interpolation error can make a
+        // short step's difference slightly negative, and clamping each step
+        // would add that error up (with a strongly peaked phase, 2 % of the
+        // range); unclamped, the lit steps telescope. The sum is clamped.
+        unit += w * (phiB - phiA);
+      }
+      phiA = phiB;
+    }
   }
   return max(unit, vec3(0.0));
 }
@@ -835,4 +1036,10 @@ void main()
   vec3 result = airlight + clamp(layer.rgb, 0.0, 1.0) * mediumTransmittance + tv * far;
   airlight += tv * behind;
   gl_FragData[0] = AirlightOnly == 1 ? vec4(airlight, 0.0) : vec4(result, 1.0);
+//PLUME::IF SHADOW
+  if (ShadowRunStatistics == 1)
+  {
+    gl_FragData[0] = vec4(RunsDecided, RunsTotal, 0.0, 1.0);
+  }
+//PLUME::ENDIF
 }

@@ -31,6 +31,7 @@ int TestAirlightPointShadow(int, char*[])
     PLUME_CHECK(r.Darker + 4 >= r.RefDarker && r.Darker <= r.RefDarker + 4);
     PLUME_CHECK(std::fabs(r.MaxDark - r.MaxRefDark) <= 0.05 * r.MaxRefDark);
     PLUME_CHECK(r.Brighter == 0);
+    failures += airtest::CheckMinMax(s, r, 0.4);
 
     // 2. Rebuilt only on change: not for a new frame, medium or eye; for a moved occluder or light.
     s.RenderAirlight();

@@ -44,6 +44,7 @@ int TestAirlightShadow(int, char*[])
     PLUME_CHECK(r.RefDarker >= 8);
     PLUME_CHECK(r.Darker + 3 >= r.RefDarker && r.Darker <= r.RefDarker + 3);
     PLUME_CHECK(r.Brighter == 0);
+    failures += airtest::CheckMinMax(s, r, 0.4);
 
     // Error against the march steps (published in Documentation/Airlight.md).
     for (int k : { 16, 256 })

@@ -504,6 +504,37 @@ inline int CheckShadowGoal(const ShadowComparison& r)
 }
 
 /**
+ * Min-max shadow mipmaps: the frame with them (r.Image) against the march that
+ * tests every step (the same sums up to float rounding: max <= 1e-4 of the
+ * range), and the share of march runs they decided (from the pass's run
+ * statistics) at least `minDecided`; returns the failures.
+ */
+inline int CheckMinMax(Scene& s, const ShadowComparison& r, double minDecided)
+{
+  int failures = 0;
+  s.Pass->SetShadowMinMax(false);
+  const FloatImage perStep = s.RenderFloat(s.Pass);
+  s.Pass->SetShadowMinMax(true);
+  const Error same = Compare(r.Image, perStep, r.Air);
+  Print("min-max mipmaps vs every step tested", same);
+  PLUME_CHECK(same.Max <= 1e-4);
+  s.Pass->SetShadowRunStatistics(true);
+  const FloatImage stats = s.RenderFloat(s.Pass);
+  s.Pass->SetShadowRunStatistics(false);
+  double decided = 0, total = 0;
+  for (size_t p = 0; p < static_cast<size_t>(stats.Width) * stats.Height; ++p)
+  {
+    decided += stats.RGBA[4 * p];
+    total += stats.RGBA[4 * p + 1];
+  }
+  std::cout << "min-max runs decided: " << decided << " of " << total << " ("
+            << 100.0 * decided / std::max(total, 1.0) << " %)\n";
+  PLUME_CHECK(total > 0);
+  PLUME_CHECK(decided >= minDecided * total);
+  return failures;
+}
+
+/**
  * Lit rays: the scene's shadows on against off (every shadow test passes, the
  * march telescopes to the closed form); returns the comparison, the pass left
  * with shadows on. `shadowed` gets the number of shadowed lights.
