@@ -386,6 +386,7 @@ const vtkPlumeParameterTable& vtkPlumeSheetMapper::GetParameterTable()
            "rays agree).")
       .Bind(&T::SetInteractiveImageSampleDistance, &T::GetInteractiveImageSampleDistance);
     t.Real("interactive_lattice_tolerance", "InteractiveLatticeTolerance", 0.004)
+      .OnlyWith("mode", { "grid" })
       .Between(0.0, 1.0)
       .Panel("Quality")
       .Advanced()
