@@ -21,7 +21,9 @@ Every case has one expected outcome:
 Any case that crashes (signal, exit code > 100), hangs (killed after
 --timeout seconds) or matches the wrong message fails.
 
-usage: plume_bad_inputs.py PLUME WORKDIR [--only REGEX] [--timeout S] [--jobs N] [--list]
+usage: plume_bad_inputs.py PLUME WORKDIR [--only REGEX] [--bench-only] [--timeout S] [--jobs N] [--list]
+--bench-only runs just the `plume bench` cases: the main build's share when
+the sanitizer build (which has no plume-bench) runs the rest.
 Prints one line per case and a summary with the counts; exits 1 on any failure.
 """
 import argparse
@@ -857,6 +859,7 @@ def main():
     parser.add_argument("plume")
     parser.add_argument("work")
     parser.add_argument("--only", default="")
+    parser.add_argument("--bench-only", action="store_true")
     parser.add_argument("--timeout", type=float, default=60)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--list", action="store_true")
@@ -870,6 +873,8 @@ def main():
     names = [c["name"] for c in corpus.cases]
     assert len(names) == len(set(names)), "duplicate case names"
     cases = [c for c in corpus.cases if re.search(args.only, c["name"])]
+    if args.bench_only:
+        cases = [c for c in cases if c["args"][:1] == ["bench"]]
     if not os.path.exists(os.path.join(os.path.dirname(os.path.abspath(args.plume)), "plume-bench")):
         # a build without benchmarks (the sanitizer run: PLUME_BUILD_BENCHMARKS=OFF) cannot run `plume bench`
         skipped = [c for c in cases if c["args"][:1] == ["bench"]]
