@@ -1,6 +1,7 @@
 #include "vtkPlumeCompositingPass.h"
 
 #include "vtkActor.h"
+#include "vtkActor2D.h"
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
 #include "vtkDualDepthPeelingPass.h"
@@ -15,6 +16,7 @@
 #include "vtkOverlayPass.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
@@ -199,6 +201,34 @@ vtkPlumeOpaqueDepthTexture* vtkPlumeCompositingPass::AcquireDepth(
     return nullptr;
   }
   return own && own->Capture(renderer) ? own : nullptr;
+}
+
+bool vtkPlumeCompositingPass::HasOtherDepthWriters(vtkRenderer* renderer, vtkProp* self)
+{
+  if (!renderer || renderer->GetPreserveDepthBuffer())
+  {
+    return true;
+  }
+  vtkInformation* info = renderer->GetInformation();
+  const bool pass = info && info->Has(CURRENT_STAGE());
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop == self || !prop->GetVisibility() || vtkActor2D::SafeDownCast(prop))
+    {
+      continue;
+    }
+    const bool writes = pass
+      ? !IsMedium(prop) && (prop->HasOpaqueGeometry() || StagedMapper(prop, STAGE_SURFACES))
+      : prop->HasOpaqueGeometry() || prop->HasTranslucentPolygonalGeometry();
+    if (writes)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 vtkPlumeCompositingPass* vtkPlumeCompositingPass::Install(vtkRenderer* renderer)

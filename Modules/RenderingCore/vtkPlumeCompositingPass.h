@@ -154,6 +154,20 @@ public:
   static vtkPlumeOpaqueDepthTexture* AcquireDepth(vtkRenderer* renderer, vtkPlumeOpaqueDepthTexture* own);
 
   /**
+   * Whether anything but `self` may have written the opaque depth a medium
+   * drawn by `self` now would read. False means the depth is the far plane
+   * everywhere, so copying it and testing rays against it would change
+   * nothing. Conservative: under this pass, any visible prop that is not a
+   * medium (media draw after the shared depth is captured) and not a 2D
+   * actor, and has opaque geometry or draws in STAGE_SURFACES; without the
+   * pass, any visible prop but `self` and 2D actors with opaque or
+   * translucent geometry (vtkVolume says it has opaque geometry, and an
+   * isosurface writes depth). Always true for a renderer that keeps the
+   * depth of an earlier one (PreserveDepthBuffer) or no renderer.
+   */
+  static bool HasOtherDepthWriters(vtkRenderer* renderer, vtkProp* self);
+
+  /**
    * Sets a new compositing pass on `renderer` unless its pass already is one;
    * returns the renderer's compositing pass.
    */

@@ -27,8 +27,6 @@
 #include "vtkVolumeProperty.h"
 
 #include "vtkActor.h"
-#include "vtkActor2D.h"
-#include "vtkPropCollection.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
@@ -1060,25 +1058,6 @@ bool vtkPlumeSheetMapper::Internals::UpdateGrid(vtkPlumeSheetMapper* self, Frame
 }
 
 //------------------------------------------------------------------------------
-// Whether a prop other than `self` may write opaque depth before the sheet
-// (conservative: every visible prop but 2D actors; vtkProp's default says
-// opaque). Without one the depth buffer is the far plane everywhere.
-static bool OtherDepthWriters(vtkRenderer* ren, vtkProp* self)
-{
-  vtkPropCollection* props = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    if (prop != self && prop->GetVisibility() && !vtkActor2D::SafeDownCast(prop) && prop->HasOpaqueGeometry())
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-//------------------------------------------------------------------------------
 // Grid mode, step 2: the transfer functions and the internal volume mapper's
 // settings, then its raycast.
 void vtkPlumeSheetMapper::Internals::DrawGrid(vtkPlumeSheetMapper* self, const Frame& frame)
@@ -1148,7 +1127,8 @@ void vtkPlumeSheetMapper::Internals::DrawGrid(vtkPlumeSheetMapper* self, const F
   }
   // no other depth writer: the far plane everywhere, nothing to read (the
   // copy and the lattice's per-pixel depth checks cost more than its rays)
-  self->LastOpaqueDepth = self->BoundedByDepth && OtherDepthWriters(frame.Renderer, actor);
+  self->LastOpaqueDepth =
+    self->BoundedByDepth && vtkPlumeCompositingPass::HasOtherDepthWriters(frame.Renderer, actor);
   this->GridMapper->SetUseOpaqueDepth(self->LastOpaqueDepth);
   this->GridMapper->SetTerminationError(0.001); // unlit: rays stop at opacity 0.999
   this->GridMapper->SetEmptySpaceSkipping(true);

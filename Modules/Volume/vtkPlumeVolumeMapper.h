@@ -394,6 +394,14 @@ public:
   vtkBooleanMacro(UseOpaqueDepth, bool);
   ///@}
 
+  /**
+   * Whether the last render read the opaque depth: UseOpaqueDepth, and
+   * another visible prop may have written depth
+   * (vtkPlumeCompositingPass::HasOtherDepthWriters). Without one the depth
+   * is the far plane everywhere and reading it would change nothing.
+   */
+  vtkGetMacro(LastOpaqueDepth, bool);
+
   ///@{
   /**
    * Empty-space skipping over blocks of 8³ voxels. Composite and smoke: blocks
@@ -509,6 +517,7 @@ protected:
   bool LightCache = true;
   bool LastLightCache = false;
   bool UseOpaqueDepth = true;
+  bool LastOpaqueDepth = false;
   bool EmptySpaceSkipping = true;
   bool PreIntegration = false;
   bool LastPreIntegration = false;

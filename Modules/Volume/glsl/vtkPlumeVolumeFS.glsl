@@ -79,6 +79,12 @@ uniform float Lattice;              // pixels between lattice rays
 //PLUME::IF REFINE CLASSIFY
 uniform sampler2D LatticeColor;     // the lattice rays' premultiplied colour (linear filtering)
 uniform vec2 LatticeSize;
+uniform float LatticeSplit;         // lattice rows above it are stored LatticeBandShift rows up
+uniform float LatticeBandShift;     // (two bands, one llvmpipe tile each; split 1e9: one band)
+uniform float LatticeRows;          // the texture's height
+//PLUME::ENDIF
+//PLUME::IF COARSE
+uniform float LatticeRowOffset;     // lattice row = texture row + this (the band drawn)
 //PLUME::ENDIF
 //PLUME::IF CLASSIFY
 uniform float LatticeTolerance;
@@ -213,10 +219,23 @@ vec2 clipToBox(vec3 p, vec3 d, float lo, float hi)
   return vec2(max(lo, max(tn.x, max(tn.y, tn.z))), min(hi, min(tf.x, min(tf.y, tf.z))));
 }
 
+//PLUME::IF REFINE CLASSIFY
+// where lattice ray r is stored (see LatticeSplit)
+ivec2 latticeTexel(ivec2 r)
+{
+  return r.y > int(LatticeSplit) ? r + ivec2(0, int(LatticeBandShift)) : r;
+}
+//PLUME::ENDIF
+
 //PLUME::IF JITTER
 float jitter()
 {
   uvec2 q = uvec2(gl_FragCoord.xy);
+//PLUME::ENDIF
+//PLUME::IF JITTER+COARSE
+  q = uvec2(gl_FragCoord.xy + vec2(0.0, LatticeRowOffset)); // the lattice ray's, whatever its band
+//PLUME::ENDIF
+//PLUME::IF JITTER
   uint h = q.x * 1973u + q.y * 9277u + uint(JitterSeed) * 26699u;
   h = (h ^ 61u) ^ (h >> 16);
   h *= 9u;
@@ -365,7 +384,7 @@ void main()
     vec4 g[16];
     for (int k = 0; k < 16; ++k)
     {
-      g[k] = texelFetch(LatticeColor, clamp(a + ivec2(k % 4 - 1, k / 4 - 1), ivec2(0), top), 0);
+      g[k] = texelFetch(LatticeColor, latticeTexel(clamp(a + ivec2(k % 4 - 1, k / 4 - 1), ivec2(0), top)), 0);
     }
     // bilinear interpolation is exact for bilinear images; its error is about
     // 1/8 of the second differences across the cell (edges, silhouettes and
@@ -406,14 +425,17 @@ void main()
 //PLUME::ENDIF
   vec2 fragLocal = gl_FragCoord.xy - ViewportOrigin; // position in the viewport, pixels
 //PLUME::IF COARSE
-  fragLocal = (gl_FragCoord.xy - 0.5) * Lattice + 0.5; // texel i: pixel i L (the texture starts at 0)
+  // texel i: pixel i L (the texture starts at 0; rows by band)
+  fragLocal = (gl_FragCoord.xy - 0.5 + vec2(0.0, LatticeRowOffset)) * Lattice + 0.5;
 //PLUME::ENDIF
 //PLUME::IF REFINE
   {
     // pixel p lies in cell floor(p / L); at lattice position p / L
     vec2 q = (fragLocal - 0.5) / Lattice;
     ivec2 cell = clamp(ivec2(floor(q)), ivec2(0), ivec2(LatticeSize) - 1);
-    vec4 v = textureLod(LatticeColor, (q + 0.5) / LatticeSize, 0.0);
+    // (a cell's four rays lie in one band: the split row is stored in both)
+    vec2 stored = q + vec2(0.0, float(cell.y) >= LatticeSplit ? LatticeBandShift : 0.0);
+    vec4 v = textureLod(LatticeColor, (stored + 0.5) / vec2(LatticeSize.x, LatticeRows), 0.0);
     if (texelFetch(CellRefine, cell, 0).r != 0.0 || v.a <= 0.0)
     {
       discard; // (the cell's own rays are drawn by the ray program)

@@ -116,13 +116,17 @@ int TestVolumeLattice(int, char*[])
     s.Mapper->SetLatticeTolerance(1.0);
     plume::test::ReadBack(s.Window);
     const double withSphere = s.Mapper->GetLastRayCount();
+    const bool depthRead = s.Mapper->GetLastOpaqueDepth();
     actor->VisibilityOff();
     plume::test::ReadBack(s.Window);
     const double without = s.Mapper->GetLastRayCount();
-    const bool ok = rays > smokeRays && withSphere >= without + 20 * 16;
+    // the volume alone reads no depth (the far plane everywhere); with the sphere it must
+    const bool depthSkipped = !s.Mapper->GetLastOpaqueDepth();
+    const bool ok = rays > smokeRays && withSphere >= without + 20 * 16 && depthRead && depthSkipped;
     std::printf("%-40s %.0f rays (> the smoke's %.0f); depth criterion alone: %.0f rays, %.0f without the sphere "
-                "(>= 320 more)%s\n",
-      "opaque sphere, lattice 4, rays", rays, smokeRays, withSphere, without, ok ? "" : "  FAIL");
+                "(>= 320 more); depth read with the sphere %d (1), alone %d (0)%s\n",
+      "opaque sphere, lattice 4, rays", rays, smokeRays, withSphere, without, int(depthRead), int(!depthSkipped),
+      ok ? "" : "  FAIL");
     failures += ok ? 0 : 1;
   }
   {
