@@ -10,7 +10,8 @@
 //   POINT | PREINT   composite: a sample's value over its segment | segments
 //                    pre-integrated between their end values (no SKIP, PLAIN
 //                    or MASK then; SKIP_PREINT instead of SKIP)
-//   JITTER           jittered first segment
+//   JITTER           jittered first segment (per pixel; JITTER+COARSE: one
+//                    offset for all lattice rays)
 //   DEPTH            stop at the opaque scene's depth
 //   SKIP             empty-space skipping, with one of: SKIP_TRANSPARENT
 //                    (composite/smoke: jump over transparent blocks), SKIP_MIP
@@ -227,6 +228,16 @@ vec2 clipToBox(vec3 p, vec3 d, float lo, float hi)
 float jitter()
 {
   uvec2 q = uvec2(gl_FragCoord.xy);
+//PLUME::ENDIF
+//PLUME::IF JITTER+COARSE
+  // the lattice rays share one offset (per frame): independent offsets are
+  // noise between neighbouring lattice rays, which the cell classification
+  // cannot tell from curvature (at 64-voxel steps it refined most cells), and
+  // interpolating across them gains nothing that a pixel's own jittered ray
+  // would not lose to the same noise
+  q = uvec2(0u);
+//PLUME::ENDIF
+//PLUME::IF JITTER
   uint h = q.x * 1973u + q.y * 9277u + uint(JitterSeed) * 26699u;
   h = (h ^ 61u) ^ (h >> 16);
   h *= 9u;
@@ -323,13 +334,23 @@ vec3 phong(vec3 base, vec3 g, vec3 viewDir)
 
 //PLUME::IF DEPTH+CLASSIFY
 // where the ray through viewport position `local` meets the opaque scene,
-// index space, clamped to the box (rays that end beyond it all look alike)
-vec3 opaqueEnd(vec2 local)
+// index space, clamped to the box, w = 1; w = 0 (and xyz 0) where the scene
+// does not stop it before its exit from the box (nothing drawn there, or
+// drawn behind the box): those rays all look alike. (Clamping the far point
+// of such a ray to the box instead jumped from one side of the box to the
+// other along the lines through the view's centre, whose cells then always
+// refined.)
+vec4 opaqueEnd(vec2 local)
 {
   ivec2 px = clamp(ivec2(local), ivec2(0), ivec2(ViewportSize) - 1);
   float z = texelFetch(OpaqueDepth, px, 0).r;
-  vec4 q = ClipToIndex * vec4(2.0 * local / ViewportSize - 1.0, 2.0 * z - 1.0, 1.0);
-  return clamp(q.xyz / q.w, BoxMin, BoxMax);
+  vec2 ndc = 2.0 * local / ViewportSize - 1.0;
+  vec4 n = ClipToIndex * vec4(ndc, -1.0, 1.0);
+  vec4 q = ClipToIndex * vec4(ndc, 2.0 * z - 1.0, 1.0);
+  vec3 p0 = n.xyz / n.w;
+  vec3 end = q.xyz / q.w;
+  vec2 t = clipToBox(p0, end - p0, 0.0, 1e30); // the opaque point is at t = 1
+  return t.y > t.x && t.y > 1.0 ? vec4(clamp(end, BoxMin, BoxMax), 1.0) : vec4(0.0);
 }
 //PLUME::ENDIF
 
@@ -472,18 +493,20 @@ void main()
     {
       // no opaque edge in the cell: every pixel's opaque end is what the
       // corner rays' predict, within half a voxel
-      vec3 e00 = opaqueEnd(vec2(a) * Lattice + 0.5);
-      vec3 e10 = opaqueEnd(vec2(a + ivec2(1, 0)) * Lattice + 0.5);
-      vec3 e01 = opaqueEnd(vec2(a + ivec2(0, 1)) * Lattice + 0.5);
-      vec3 e11 = opaqueEnd(vec2(a + ivec2(1, 1)) * Lattice + 0.5);
+      // (and whether the scene stops it inside the box at all: w)
+      vec4 e00 = opaqueEnd(vec2(a) * Lattice + 0.5);
+      vec4 e10 = opaqueEnd(vec2(a + ivec2(1, 0)) * Lattice + 0.5);
+      vec4 e01 = opaqueEnd(vec2(a + ivec2(0, 1)) * Lattice + 0.5);
+      vec4 e11 = opaqueEnd(vec2(a + ivec2(1, 1)) * Lattice + 0.5);
       int n = int(Lattice);
       for (int j = 0; j < n && agree; ++j)
       {
         for (int i = 0; i < n && agree; ++i)
         {
           vec2 f = vec2(float(i), float(j)) / Lattice;
-          vec3 e = mix(mix(e00, e10, f.x), mix(e01, e11, f.x), f.y);
-          agree = length(opaqueEnd(vec2(a) * Lattice + vec2(float(i), float(j)) + 0.5) - e) <= 0.5;
+          vec4 e = mix(mix(e00, e10, f.x), mix(e01, e11, f.x), f.y);
+          vec4 o = opaqueEnd(vec2(a) * Lattice + vec2(float(i), float(j)) + 0.5);
+          agree = abs(o.w - e.w) <= 1e-3 && length(o.xyz - e.xyz) <= 0.5;
         }
       }
     }
