@@ -1176,7 +1176,8 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
     key.insert(key.end(), frame.LightIndexDirs.begin(), frame.LightIndexDirs.end());
     key.insert(key.end(), frame.LightWorldPerIndex.begin(), frame.LightWorldPerIndex.end());
     // (remade in the frame its inputs change, even every frame while a light
-    // moves: the sweep costs a fraction of one frame of shadow rays)
+    // moves: the sweep costs less than a frame of shadow rays, e.g. 12 s
+    // against 20 s at 256^3 on llvmpipe)
     features.Enable(frame.LightCache ? "LIGHT_CACHE" : "SHADOW_RAYS");
     self->LastLightCache = frame.LightCache;
     if (frame.LightCache)
