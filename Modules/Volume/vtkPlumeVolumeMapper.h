@@ -89,6 +89,7 @@
 class vtkImageData;
 class vtkVolumeProperty;
 class vtkPlumeParameterTable;
+class vtkTextureObject;
 
 class PLUMEVOLUME_EXPORT vtkPlumeVolumeMapper : public vtkVolumeMapper
 {
@@ -362,14 +363,15 @@ public:
   ///@{
   /**
    * Smoke: cache the lighting. The transmittance from every grid node towards
-   * each light (the same shadow march a sample would run) is kept in a 3D
-   * texture (2 bytes per node and light, 4 channels for 3 lights, within TextureMemoryBudgetMB beside
-   * the volume, else shadow rays are used) and interpolated at each sample; it
-   * is recomputed only when a light's direction relative to the volume, the
-   * data, the transfer function or ShadowSampleDistance changes, and only once
-   * they hold still: a frame whose inputs changed since the previous frame (a
-   * light moving with the camera) casts shadow rays instead. Off: a shadow ray
-   * per sample. Default on.
+   * each light is kept in a 3D texture (2 bytes per node and light, 4
+   * channels for 3 lights; within TextureMemoryBudgetMB beside the volume,
+   * with 4 more bytes per node while it is made, else shadow rays are used)
+   * and interpolated at each sample. It is made by a sweep along each light
+   * (vtkPlumeLightVolume: layer by layer, each node's transmittance from an
+   * earlier layer's, bicubic, times its own segment's, marched with
+   * ShadowSampleDistance steps), and remade in the frame a light's direction
+   * relative to the volume, the data, the transfer function or
+   * ShadowSampleDistance changes. Off: a shadow ray per sample. Default on.
    */
   vtkSetMacro(LightCache, bool);
   vtkGetMacro(LightCache, bool);
@@ -381,6 +383,13 @@ public:
 
   /** How often the smoke's light volume has been computed (tests: no stale lighting, no needless work). */
   int GetLightVolumeUpdateCount();
+
+  /**
+   * The smoke's light volume: a 3D texture of the grid's size, the
+   * transmittance towards light l in channel l (16-bit normalised); null
+   * before the first frame that used it (tests read it back).
+   */
+  vtkTextureObject* GetLightVolumeTexture();
 
   ///@{
   /**

@@ -10,7 +10,8 @@
 //   POINT | PREINT   composite: a sample's value over its segment | segments
 //                    pre-integrated between their end values (no SKIP, PLAIN
 //                    or MASK then; SKIP_PREINT instead of SKIP)
-//   JITTER           jittered first segment
+//   JITTER           jittered first segment (per pixel; JITTER+COARSE: one
+//                    offset for all lattice rays)
 //   DEPTH            stop at the opaque scene's depth
 //   SKIP             empty-space skipping, with one of: SKIP_TRANSPARENT
 //                    (composite/smoke: jump over transparent blocks), SKIP_MIP
@@ -45,9 +46,12 @@
 //                    (gl_FragDepth), as opaque geometry does
 //   SHADOW_RAYS | LIGHT_CACHE   SMOKE: a shadow ray per sample and light | the
 //                    transmittances interpolated from the light volume
-//   LIGHT_VOLUME     the light volume's pass (one z-slice per draw): fragment
-//                    (i, j) writes node (i, j, LightSlice)'s transmittance
-//                    towards each light (channel l), by the same shadow march
+//   LIGHT_VOLUME     the light volume's passes (vtkPlumeLightVolume): a sweep
+//                    layer (LightPass 0: fragment (u, v) writes the transmittance
+//                    of the sweep's node (u, v, SweepLayer) towards light
+//                    SweepLight from the previous layer's), or a z-slice of the
+//                    light volume (LightPass 1: node (i, j, LightSlice) from its
+//                    sweep texel)
 // Values (#define): PLUME_LIGHTS n (lit modes), PLUME_ISO_MARGIN (SKIP_ISO).
 
 //PLUME::Defines
@@ -128,7 +132,14 @@ uniform float LightWorldPerIndex[PLUME_LIGHTS]; // world length of one index uni
 uniform sampler3D LightVolume;      // per node: transmittance towards light l in channel l
 //PLUME::ENDIF
 //PLUME::IF LIGHT_VOLUME
-uniform float LightSlice;           // the node layer k drawn
+uniform int LightPass;              // 0: a sweep layer; 1: a z-slice of the light volume
+uniform sampler3D LightSweep;       // the sweep's layers so far: texel (u, v, q), transmittance
+uniform int SweepLight;             // the light swept
+uniform int SweepAxis;              // its dominant index axis a (vtkPlumeLightVolume::GetSweep)
+uniform int SweepFlip;              // 1: layer q holds coordinate Dims[a] - 1 - q on axis a; 0: q
+uniform int SweepLayer;             // the layer drawn (LightPass 0)
+uniform int SweepStride;            // it reads the layer SweepStride * k just before it
+uniform int LightSlice;             // the z-slice drawn (LightPass 1)
 //PLUME::ENDIF
 //PLUME::IF ISO SMOKE SHADE
 uniform vec3 LightDirection[PLUME_LIGHTS]; // unit, world, towards the light
@@ -233,6 +244,8 @@ float jitter()
   uvec2 q = uvec2(gl_FragCoord.xy);
 //PLUME::ENDIF
 //PLUME::IF JITTER+COARSE
+  // each lattice ray its own offset: one shared offset made a coherent error
+  // (RMS +30 % at 16-64-voxel steps, h/volspeed, measured 2026-11-28)
   q = uvec2(gl_FragCoord.xy + vec2(0.0, LatticeRowOffset)); // the lattice ray's, whatever its band
 //PLUME::ENDIF
 //PLUME::IF JITTER
@@ -332,13 +345,61 @@ vec3 phong(vec3 base, vec3 g, vec3 viewDir)
 
 //PLUME::IF DEPTH+CLASSIFY
 // where the ray through viewport position `local` meets the opaque scene,
-// index space, clamped to the box (rays that end beyond it all look alike)
-vec3 opaqueEnd(vec2 local)
+// index space, clamped to the box, w = 1; w = 0 (and xyz 0) where the scene
+// does not stop it before its exit from the box (nothing drawn there, or
+// drawn behind the box): those rays all look alike. (Clamping the far point
+// of such a ray to the box instead jumped from one side of the box to the
+// other along the lines through the view's centre, whose cells then always
+// refined.)
+vec4 opaqueEnd(vec2 local)
 {
   ivec2 px = clamp(ivec2(local), ivec2(0), ivec2(ViewportSize) - 1);
   float z = texelFetch(OpaqueDepth, px, 0).r;
-  vec4 q = ClipToIndex * vec4(2.0 * local / ViewportSize - 1.0, 2.0 * z - 1.0, 1.0);
-  return clamp(q.xyz / q.w, BoxMin, BoxMax);
+  vec2 ndc = 2.0 * local / ViewportSize - 1.0;
+  vec4 n = ClipToIndex * vec4(ndc, -1.0, 1.0);
+  vec4 q = ClipToIndex * vec4(ndc, 2.0 * z - 1.0, 1.0);
+  vec3 p0 = n.xyz / n.w;
+  vec3 end = q.xyz / q.w;
+  vec2 t = clipToBox(p0, end - p0, 0.0, 1e30); // the opaque point is at t = 1
+  return t.y > t.x && t.y > 1.0 ? vec4(clamp(end, BoxMin, BoxMax), 1.0) : vec4(0.0);
+}
+//PLUME::ENDIF
+
+//PLUME::IF LIGHT_VOLUME
+// layer q of the sweep at (u, v): Catmull-Rom bicubic, limited to the range of
+// the 2 x 2 texels around (no new extremes); bilinear interpolation, repeated
+// from layer to layer, would blur the shadows (by about a voxel over 16 layers
+// of a 32^3 smoke)
+float sweepLayerAt(vec2 uv, int q)
+{
+  ivec2 top = ivec2(textureSize(LightSweep, 0).xy) - 1;
+  vec2 x = clamp(uv, vec2(0.0), vec2(top));
+  ivec2 i1 = min(ivec2(floor(x)), max(top - 1, ivec2(0)));
+  vec2 f = x - vec2(i1);
+  vec2 w[4];
+  w[0] = f * (-0.5 + f * (1.0 - 0.5 * f));
+  w[1] = 1.0 + f * f * (-2.5 + 1.5 * f);
+  w[2] = f * (0.5 + f * (2.0 - 1.5 * f));
+  w[3] = f * f * (-0.5 + 0.5 * f);
+  float sum = 0.0;
+  float lo = 1e30;
+  float hi = -1e30;
+  for (int j = 0; j < 4; ++j)
+  {
+    float row = 0.0;
+    for (int i = 0; i < 4; ++i)
+    {
+      float v = texelFetch(LightSweep, ivec3(clamp(i1 + ivec2(i - 1, j - 1), ivec2(0), top), q), 0).r;
+      row += w[i].x * v;
+      if ((i == 1 || i == 2) && (j == 1 || j == 2))
+      {
+        lo = min(lo, v);
+        hi = max(hi, v);
+      }
+    }
+    sum += w[j].y * row;
+  }
+  return clamp(sum, lo, hi);
 }
 //PLUME::ENDIF
 
@@ -346,32 +407,73 @@ void main()
 {
 //PLUME::IF LIGHT_VOLUME
   {
-    vec3 node = vec3(floor(gl_FragCoord.xy), LightSlice);
-    vec4 transmittance = vec4(1.0);
+    ivec2 uv = ivec2(gl_FragCoord.xy);
+    int a = SweepAxis;
+    int b = (a + 1) % 3;
+    int c = (a + 2) % 3;
+    if (LightPass == 1)
+    {
+      ivec3 n = ivec3(uv, LightSlice);
+      int na = SweepFlip != 0 ? int(Dims[a]) - 1 - n[a] : n[a];
+      gl_FragData[0] = vec4(texelFetch(LightSweep, ivec3(n[b], n[c], na), 0).r);
+      return;
+    }
+    vec3 node;
+    node[a] = float(SweepFlip != 0 ? int(Dims[a]) - 1 - SweepLayer : SweepLayer);
+    node[b] = float(uv.x);
+    node[c] = float(uv.y);
+    vec3 e = LightIndexDir[SweepLight];
+    // the layer read: the last multiple of SweepStride before this one, so a
+    // ray is interpolated once per SweepStride layers only (each bilinear
+    // interpolation blurs the shadows a little)
+    int from = ((SweepLayer - 1) / SweepStride) * SweepStride;
+    float h = float(SweepLayer - from) / abs(e[a]); // ray length from the node to that layer
 //PLUME::ENDIF
 //PLUME::IF LIGHT_VOLUME+SKIP_TRANSPARENT
     // a sample's cell lies in one block, whose nodes (shared faces included)
-    // are all it interpolates; where every block holding this node is
-    // transparent, no sample with extinction reads it: no march
-    bool needed = false;
-    for (int c = 0; c < 8; ++c)
+    // are all it interpolates: where every block holding this node is
+    // transparent, no sample with extinction reads it, and unless later
+    // layers read this one, it is not computed
+    if (SweepLayer % SweepStride != 0)
     {
-      vec3 q = node - vec3(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1));
-      ivec3 cell = clamp(ivec3(floor(q / BlockSize)), ivec3(0), ivec3(BlockDims) - 1);
-      needed = needed || texelFetch(Occupancy, cell, 0).r != 0.0;
-    }
-    if (!needed)
-    {
-      gl_FragData[0] = transmittance;
-      return;
+      bool needed = false;
+      for (int k = 0; k < 8; ++k)
+      {
+        vec3 q = node - vec3(float(k & 1), float((k >> 1) & 1), float((k >> 2) & 1));
+        ivec3 cell = clamp(ivec3(floor(q / BlockSize)), ivec3(0), ivec3(BlockDims) - 1);
+        needed = needed || texelFetch(Occupancy, cell, 0).r != 0.0;
+      }
+      if (!needed)
+      {
+        gl_FragData[0] = vec4(1.0);
+        return;
+      }
     }
 //PLUME::ENDIF
 //PLUME::IF LIGHT_VOLUME
-    for (int l = 0; l < PLUME_LIGHTS; ++l)
+    float t = 1.0;
+    if (SweepLayer == 0 || clipToBox(node, e, 0.0, 1e30).y < h * (1.0 - 1e-5))
     {
-      transmittance[l] = lightTransmittance(node, l);
+      // the ray leaves the box before the previous layer: march the rest
+      t = lightTransmittance(node, SweepLight);
     }
-    gl_FragData[0] = transmittance;
+    else
+    {
+      // that layer's transmittance where the ray meets it...
+      vec3 p = node + h * e;
+      t = sweepLayerAt(vec2(p[b], p[c]), from);
+      // ...times the segment's own (midpoint steps of at most ShadowStepIndex),
+      // unless the light is already gone (the deep shadow of dense smoke)
+      int n = t > 1e-6 ? max(1, int(ceil(h / ShadowStepIndex))) : 0;
+      float hs = h / float(n);
+      float tau = 0.0;
+      for (int k = 0; k < n; ++k)
+      {
+        tau += sampleExtinction(node + (float(k) + 0.5) * hs * e);
+      }
+      t = n > 0 ? t * exp(-tau * hs * LightWorldPerIndex[SweepLight]) : 0.0;
+    }
+    gl_FragData[0] = vec4(t);
     return;
   }
 //PLUME::ENDIF
@@ -402,18 +504,20 @@ void main()
     {
       // no opaque edge in the cell: every pixel's opaque end is what the
       // corner rays' predict, within half a voxel
-      vec3 e00 = opaqueEnd(vec2(a) * Lattice + 0.5);
-      vec3 e10 = opaqueEnd(vec2(a + ivec2(1, 0)) * Lattice + 0.5);
-      vec3 e01 = opaqueEnd(vec2(a + ivec2(0, 1)) * Lattice + 0.5);
-      vec3 e11 = opaqueEnd(vec2(a + ivec2(1, 1)) * Lattice + 0.5);
+      // (and whether the scene stops it inside the box at all: w)
+      vec4 e00 = opaqueEnd(vec2(a) * Lattice + 0.5);
+      vec4 e10 = opaqueEnd(vec2(a + ivec2(1, 0)) * Lattice + 0.5);
+      vec4 e01 = opaqueEnd(vec2(a + ivec2(0, 1)) * Lattice + 0.5);
+      vec4 e11 = opaqueEnd(vec2(a + ivec2(1, 1)) * Lattice + 0.5);
       int n = int(Lattice);
       for (int j = 0; j < n && agree; ++j)
       {
         for (int i = 0; i < n && agree; ++i)
         {
           vec2 f = vec2(float(i), float(j)) / Lattice;
-          vec3 e = mix(mix(e00, e10, f.x), mix(e01, e11, f.x), f.y);
-          agree = length(opaqueEnd(vec2(a) * Lattice + vec2(float(i), float(j)) + 0.5) - e) <= 0.5;
+          vec4 e = mix(mix(e00, e10, f.x), mix(e01, e11, f.x), f.y);
+          vec4 o = opaqueEnd(vec2(a) * Lattice + vec2(float(i), float(j)) + 0.5);
+          agree = abs(o.w - e.w) <= 1e-3 && length(o.xyz - e.xyz) <= 0.5;
         }
       }
     }
