@@ -203,6 +203,10 @@ public:
   // the mapper's arrays; none without usable arrays (defined below).
   static std::vector<float> PieceSpeeds(vtkPlumeVelocityGlyphMapper* self, vtkImageData* image, const int* extent);
 
+  // The pieces' speeds faster than StillFraction x `speed`, summed over the
+  // pieces by `sum` (collective when given; defined below).
+  static vtkIdType CountMoving(const std::vector<float>& speeds, double speed, const vtkPlumePercentile::Sum& sum);
+
   // The robust maximum (RobustSpeed) and the moving nodes of the whole input.
   void BuildRobustSpeed(vtkImageData* image, vtkDataArray* vectors, vtkDataArray* mask)
   {
@@ -213,8 +217,7 @@ public:
     if (!speeds.empty())
     {
       this->RobustSpeed = vtkPlumePercentile::Select(speeds, RobustPercentile);
-      const double still = StillFraction * this->RobustSpeed;
-      this->MovingNodes = std::count_if(speeds.begin(), speeds.end(), [still](float s) { return s > still; });
+      this->MovingNodes = CountMoving(speeds, this->RobustSpeed, nullptr);
     }
   }
 
@@ -602,21 +605,10 @@ std::vector<float> vtkPlumeVelocityGlyphMapper::Internals::PieceSpeeds(
 }
 
 //------------------------------------------------------------------------------
-double vtkPlumeVelocityGlyphMapper::ComputeRobustMaximumSpeed(
-  vtkImageData* image, const int extent[6], const vtkPlumePercentile::Sum& sum)
+vtkIdType vtkPlumeVelocityGlyphMapper::Internals::CountMoving(
+  const std::vector<float>& speeds, double speed, const vtkPlumePercentile::Sum& sum)
 {
-  const std::vector<float> speeds = Internals::PieceSpeeds(this, image, extent);
-  // collective: every piece selects, with or without speeds
-  const double speed = vtkPlumePercentile::Select(speeds, Internals::RobustPercentile, sum);
-  return std::isfinite(speed) ? speed : 0.0;
-}
-
-//------------------------------------------------------------------------------
-vtkIdType vtkPlumeVelocityGlyphMapper::ComputeMovingNodes(
-  vtkImageData* image, const int extent[6], double speed, const vtkPlumePercentile::Sum& sum)
-{
-  const std::vector<float> speeds = Internals::PieceSpeeds(this, image, extent);
-  const double still = Internals::StillFraction * speed;
+  const double still = StillFraction * speed;
   std::vector<vtkIdType> count{ static_cast<vtkIdType>(
     std::count_if(speeds.begin(), speeds.end(), [still](float s) { return s > still; })) };
   if (sum)
@@ -624,6 +616,29 @@ vtkIdType vtkPlumeVelocityGlyphMapper::ComputeMovingNodes(
     sum(count); // collective: every piece sums, with or without speeds
   }
   return count[0];
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeVelocityGlyphMapper::ComputeRobustMaximumSpeed(vtkImageData* image,
+  const int extent[6], const vtkPlumePercentile::Sum& sum, vtkIdType* movingNodes)
+{
+  const std::vector<float> speeds = Internals::PieceSpeeds(this, image, extent);
+  // collective: every piece selects, with or without speeds
+  double speed = vtkPlumePercentile::Select(speeds, Internals::RobustPercentile, sum);
+  speed = std::isfinite(speed) ? speed : 0.0;
+  if (movingNodes)
+  {
+    // from the same speeds: one pass over the piece serves both
+    *movingNodes = Internals::CountMoving(speeds, speed, sum);
+  }
+  return speed;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkPlumeVelocityGlyphMapper::ComputeMovingNodes(
+  vtkImageData* image, const int extent[6], double speed, const vtkPlumePercentile::Sum& sum)
+{
+  return Internals::CountMoving(Internals::PieceSpeeds(this, image, extent), speed, sum);
 }
 
 //------------------------------------------------------------------------------

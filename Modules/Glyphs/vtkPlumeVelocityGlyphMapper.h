@@ -299,9 +299,13 @@ public:
    * `sum` (empty: this piece alone). Exact (vtkPlumePercentile): equals
    * GetRobustMaximumSpeed of the whole data when the pieces' extents tile it
    * without overlap. Collective: every piece calls it, a piece without data
-   * with image nullptr. 0 when no piece has a valid node.
+   * with image nullptr. 0 when no piece has a valid node. With
+   * `movingNodes`, also ComputeMovingNodes at the speed found, from the same
+   * pass over the piece (the speeds are collected once; the sums are made in
+   * the same order as by the two calls).
    */
-  double ComputeRobustMaximumSpeed(vtkImageData* image, const int extent[6], const vtkPlumePercentile::Sum& sum);
+  double ComputeRobustMaximumSpeed(vtkImageData* image, const int extent[6], const vtkPlumePercentile::Sum& sum,
+    vtkIdType* movingNodes = nullptr);
 
   /**
    * The moving nodes of data split into pieces, for MovingNodeCount: valid

@@ -323,7 +323,7 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Bind(&T::SetRenderMode, &T::GetRenderMode);
     t.Real("iso_value", "IsoValue", 0.0)
       .OnlyWith("mode", { "isosurface" })
-      .Automatic("the volume property's first iso value if set, else the middle of the colour map's range")
+      .Automatic("the middle of the colour map's range; in C++ with UsePropertyIsoValue on, the volume property's first iso value")
       .Units("data units")
       .Panel("Isosurface")
       .Doc("Value whose first crossing the isosurface mode draws.")
@@ -1418,10 +1418,9 @@ void vtkPlumeVolumeMapper::Internals::SetUniforms(
   {
     double iso = self->IsoValue;
     vtkContourValues* values = property->GetIsoSurfaceValues();
-    // the property's, unless it holds VTK's default (one value, 0: not set)
-    const bool propertySet = values && values->GetNumberOfContours() > 0 &&
-      !(values->GetNumberOfContours() == 1 && values->GetValue(0) == 0.0);
-    if (!std::isfinite(iso) && propertySet)
+    // the property's only when asked for: its default (one value, 0) cannot
+    // be told from a 0 set on purpose
+    if (!std::isfinite(iso) && self->UsePropertyIsoValue && values && values->GetNumberOfContours() > 0)
     {
       iso = values->GetValue(0);
     }
@@ -1830,6 +1829,7 @@ void vtkPlumeVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LatticeTolerance: " << this->LatticeTolerance << "\n";
   os << indent << "EffectiveOpacityThreshold: " << this->EffectiveOpacityThreshold << "\n";
   os << indent << "IsoValue: " << this->IsoValue << " (in effect " << this->EffectiveIsoValue << ")\n";
+  os << indent << "UsePropertyIsoValue: " << this->UsePropertyIsoValue << "\n";
   os << indent << "OpacityUnitDistance: " << this->OpacityUnitDistance << " (in effect "
      << this->EffectiveOpacityUnitDistance << ")\n";
   os << indent << "TransferFunctionRange: " << this->TransferFunctionRange[0] << " "

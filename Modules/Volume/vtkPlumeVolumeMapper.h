@@ -50,8 +50,8 @@
  *    isosurface below (central-difference normal at the sample).
  *  - MAXIMUM_INTENSITY_BLEND: s_max along the ray, output (c α, α)(s_max).
  *  - ISOSURFACE_BLEND: the first crossing of the iso value (IsoValue if set,
- *    else the property's first IsoSurfaceValues entry if set, else the middle of the
- *    colour transfer function's range, GetAutomaticIsoValue) between two
+ *    else the property's first IsoSurfaceValues entry with UsePropertyIsoValue
+ *    on, else the middle of the colour transfer function's range, GetAutomaticIsoValue) between two
  *    samples, refined by 8 bisection steps; normal from central differences
  *    (one voxel) of the trilinear field, Phong lighting with the property's
  *    ambient/diffuse/specular/specular power and the renderer's lights; opaque.
@@ -293,14 +293,29 @@ public:
 
   ///@{
   /**
-   * Iso value (data units) for ISOSURFACE_BLEND. Default NaN = the property's
-   * first iso value if it was set (anything but VTK's default, a single 0),
-   * else GetAutomaticIsoValue (the middle of the colour transfer function's
-   * range). Rendering with a value outside the data's range warns (once per
-   * value): no surface shows. Scene key `iso_value`.
+   * Iso value (data units) for ISOSURFACE_BLEND; any finite value, 0
+   * included, is used as set. Default NaN (not set) = the volume property's
+   * first iso value if UsePropertyIsoValue is on, else GetAutomaticIsoValue
+   * (the middle of the colour transfer function's range). Rendering with a
+   * value outside the data's range warns (once per value): no surface shows.
+   * Scene key `iso_value`.
    */
   vtkSetMacro(IsoValue, double);
   vtkGetMacro(IsoValue, double);
+  ///@}
+
+  ///@{
+  /**
+   * Whether an IsoValue left at NaN takes the volume property's first iso
+   * value (GetIsoSurfaceValues()->GetValue(0), whatever it is, 0 included,
+   * as VTK's own mappers read it). Default false: the automatic value. A
+   * vtkVolumeProperty always holds one (VTK's default is a single 0, the
+   * same state as a 0 set on purpose), so only this switch can say that the
+   * property's value was meant.
+   */
+  vtkSetMacro(UsePropertyIsoValue, bool);
+  vtkGetMacro(UsePropertyIsoValue, bool);
+  vtkBooleanMacro(UsePropertyIsoValue, bool);
   ///@}
 
   /** The iso value used at the last isosurface render (data units). */
@@ -521,6 +536,7 @@ protected:
   double LastRayCount = 0.0;
   double EffectiveOpacityThreshold = 1.0;
   double IsoValue;
+  bool UsePropertyIsoValue = false;
   bool Smoke = false;
   double ShadowSampleDistance = 1.0;
   bool LightCache = true;

@@ -132,11 +132,12 @@ void vtkPlumeVelocityLinesRepresentation::ReduceAutomaticScaleSpeed(const int* o
     };
   }
   auto* image = vtkImageData::SafeDownCast(this->Cache);
-  const double speed = this->Mapper->ComputeRobustMaximumSpeed(image, owned, sum);
+  // and the moving nodes over all ranks (seams once), for the screen-adaptive
+  // stride, from one pass over the piece's speeds; pieces not of one image
+  // (resampled, merged leaves) keep their own.
+  vtkIdType moving = 0;
+  const double speed = this->Mapper->ComputeRobustMaximumSpeed(image, owned, sum, &moving);
   this->Mapper->SetAutomaticScaleSpeed(speed > 0.0 ? speed : vtkMath::Nan());
-  // The moving nodes over all ranks (seams once), for the screen-adaptive
-  // stride; pieces not of one image (resampled, merged leaves) keep their own.
-  const vtkIdType moving = this->Mapper->ComputeMovingNodes(image, owned, speed, sum);
   this->Mapper->SetMovingNodeCount(owned ? moving : -1);
 }
 

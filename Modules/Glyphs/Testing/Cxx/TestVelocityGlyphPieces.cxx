@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace
@@ -147,6 +148,25 @@ int TestVelocityGlyphPieces(int, char*[])
       pieces[p]->GetExtent(owned);
       owned[1] -= p == 0 ? 1 : 0;
       moving += one->ComputeMovingNodes(pieces[p], owned, speed, {});
+
+      // the representation's one call (speeds collected once) gives what the
+      // two calls give, bit for bit, with its collective sums in the same
+      // order (recorded: a one-rank sum leaves the counts as they are)
+      std::vector<size_t> sumsTwo, sumsOne;
+      auto recorder = [](std::vector<size_t>& log) {
+        return vtkPlumePercentile::Sum([&log](std::vector<vtkIdType>& counts) { log.push_back(counts.size()); });
+      };
+      const double pieceSpeed = one->ComputeRobustMaximumSpeed(pieces[p], owned, recorder(sumsTwo));
+      const vtkIdType pieceMoving = one->ComputeMovingNodes(pieces[p], owned, pieceSpeed, recorder(sumsTwo));
+      vtkIdType onceMoving = -1;
+      const double onceSpeed = one->ComputeRobustMaximumSpeed(pieces[p], owned, recorder(sumsOne), &onceMoving);
+      std::printf("piece %d: robust speed %.9g, moving %lld (two calls); %.9g, %lld (one call); %zu / %zu sums\n",
+        p, pieceSpeed, static_cast<long long>(pieceMoving), onceSpeed, static_cast<long long>(onceMoving),
+        sumsTwo.size(), sumsOne.size());
+      PLUME_CHECK(pieceSpeed > 0 && pieceMoving > 0);
+      PLUME_CHECK(std::memcmp(&onceSpeed, &pieceSpeed, sizeof(double)) == 0);
+      PLUME_CHECK(onceMoving == pieceMoving);
+      PLUME_CHECK(sumsOne == sumsTwo);
     }
     Draw together, alone;
     int strides[2] = { 0, 0 };

@@ -8,9 +8,11 @@
 //    1 as "unset" and drew one voxel); the mapper's OpacityUnitDistance wins
 //    over the property's; changing the automatic value re-tabulates (the
 //    table holds it);
-//  - iso value: unset (the property at VTK's default, one value 0), the
-//    middle of the colour transfer function's range,
-//    drawing exactly what that value set explicitly draws;
+//  - iso value: unset (the mapper's NaN; the property's values are read only
+//    with UsePropertyIsoValue, since VTK's default, one value 0, cannot be
+//    told from a 0 set on purpose), the middle of the colour transfer
+//    function's range, drawing exactly what that value set explicitly draws;
+//    0 is honoured, from the mapper and from the property alike;
 //  - an iso value outside the data warns once per value (no surface shows);
 //  - the unit distance and the iso value declared in the parameter table;
 //  - the lighting per mode (ApplyDefaultLighting: smoke 0.3/1.0, else 0.15/0.75).
@@ -115,13 +117,42 @@ int TestVolumeDefaults(int, char*[])
     fail("the automatic iso value does not draw as the same value set explicitly");
   }
 
-  // a property's own iso value is honoured
+  // the property's iso value only with UsePropertyIsoValue (its default, one
+  // value 0, is the same state as a 0 set on purpose); then any value, 0
+  // included, as the mapper's own 0 is
   s.Mapper->SetIsoValue(std::numeric_limits<double>::quiet_NaN());
   property->GetIsoSurfaceValues()->SetValue(0, 0.3);
   s.Window->Render();
-  if (s.Mapper->GetEffectiveIsoValue() != 0.3)
+  const double unsetIso = s.Mapper->GetEffectiveIsoValue();
+  s.Mapper->UsePropertyIsoValueOn();
+  s.Window->Render();
+  const double propertyIso = s.Mapper->GetEffectiveIsoValue();
+  std::printf("property 0.3: in effect %.6g without UsePropertyIsoValue (want 0.4), %.6g with it\n", unsetIso,
+    propertyIso);
+  if (std::abs(unsetIso - 0.4) > 1e-12)
   {
-    fail("the property's iso value is not honoured");
+    fail("an unset iso value is not the automatic one");
+  }
+  if (propertyIso != 0.3)
+  {
+    fail("the property's iso value is not honoured with UsePropertyIsoValue");
+  }
+  // (0 lies just below this field's minimum: it draws no surface and warns,
+  // which is what a 0 set on purpose must do here, unlike the automatic 0.4)
+  property->GetIsoSurfaceValues()->SetValue(0, 0.0);
+  const plume::test::FloatImage propertyZero = plume::test::ReadBack(s.Window);
+  const double propertyZeroIso = s.Mapper->GetEffectiveIsoValue();
+  s.Mapper->UsePropertyIsoValueOff();
+  s.Mapper->SetIsoValue(0.0);
+  const plume::test::FloatImage mapperZero = plume::test::ReadBack(s.Window);
+  const double mapperZeroIso = s.Mapper->GetEffectiveIsoValue();
+  const double zeroRMS = plume::test::Compare(propertyZero, mapperZero).RMS;
+  const double zeroVsAuto = plume::test::Compare(autoIso, mapperZero).RMS;
+  std::printf("iso 0: in effect %.6g (property) / %.6g (mapper); RMS %.3g between them, %.3g against automatic\n",
+    propertyZeroIso, mapperZeroIso, zeroRMS, zeroVsAuto);
+  if (propertyZeroIso != 0.0 || mapperZeroIso != 0.0 || zeroRMS > 0 || !(zeroVsAuto > 1e-3))
+  {
+    fail("an iso value of 0 is not honoured");
   }
 
   // an iso value outside the data warns (no surface shows), once per value
