@@ -328,28 +328,18 @@ bool textured(int l)
   return LightTextureRect[l].z > 0.0;
 }
 
-// Where the direction v (from the light, any length) meets light l's image:
-// the cone's square, the cone's circle inscribed, u along Right, v along Up.
+//PLUME::LightTexture
+
+// Where the direction v (from the light) meets light l's image.
 vec2 lightTextureCoordinates(int l, vec3 v)
 {
-  float z = max(dot(v, LightAxis[l]), 1e-30); // > 0 inside a cone of at most 90 degrees
-  return clamp(0.5 + 0.5 * vec2(dot(v, LightTextureRight[l]), dot(v, LightTextureUp[l])) / z, 0.0, 1.0);
+  return plumeLightTextureCoordinates(v, LightAxis[l], LightTextureRight[l], LightTextureUp[l]);
 }
 
-// The light's image (RGB) in direction v, bilinear between texel centres.
+// Light l's image (RGB) in direction v.
 vec3 lightTexture(int l, vec3 v)
 {
-  ivec4 rect = ivec4(LightTextureRect[l]);
-  vec2 s = lightTextureCoordinates(l, v) * vec2(rect.zw) - 0.5;
-  vec2 s0 = floor(s);
-  vec2 f = s - s0;
-  ivec2 i0 = clamp(ivec2(s0), ivec2(0), rect.zw - 1);
-  ivec2 i1 = clamp(ivec2(s0) + 1, ivec2(0), rect.zw - 1);
-  vec3 t00 = texelFetch(LightTextures, rect.xy + i0, 0).rgb;
-  vec3 t10 = texelFetch(LightTextures, rect.xy + ivec2(i1.x, i0.y), 0).rgb;
-  vec3 t01 = texelFetch(LightTextures, rect.xy + ivec2(i0.x, i1.y), 0).rgb;
-  vec3 t11 = texelFetch(LightTextures, rect.xy + i1, 0).rgb;
-  return mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
+  return plumeLightTexel(LightTextures, LightTextureRect[l], lightTextureCoordinates(l, v));
 }
 
 // Sub-intervals for a textured light over the ray's span in its cone: two per
