@@ -405,7 +405,7 @@ public:
    * (H, G) row-major, row j: u = j/(n-1), column i: p = i/(n-1),
    * m' = p^2/(1-p^2), storing
    *   (1+m') H(m, tau),  m = m' (1 + kH), tau = u / (1 + kH (1 - u)),
-   *   (1+m') G(m, eps),  m = m' / (1 + kG), eps = u / (1 + kG (1 - u)),
+   *   (1+m') G(m, eps),  m = m' / (1 + kG eps), eps = u / (1 + kG (1 - u)),
    *   H(m, tau) = integral_0^1 exp(-m q) P(tau q) / (1 + tau^2 q^2) dq,
    *   G(m, eps) = integral_0^inf exp(-m y) P((1+y)/eps) / (eps^2 + (1+y)^2) dy,
    * P(s) = 4 pi p_HG at cos a = (1 - s^2)/(1 + s^2), i.e.

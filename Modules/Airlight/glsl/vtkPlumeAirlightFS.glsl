@@ -139,14 +139,16 @@ float lookup(float m, float tau, float mScale, float k, int channel)
   return texture(Table, c)[channel] / (1.0 + ms);
 }
 
-// H(m, tau) and G(m, eps) of the header.
+// H(m, tau) and G(m, eps) of the header. A backward peak (g < 0) puts G's
+// m-dependence at m ~ 1 / (1 + k eps): each row's m is scaled by that (1 for
+// g >= 0, k = 0).
 float lookupH(float m, float tau)
 {
   return lookup(m, tau, 1.0 / (1.0 + PhaseStretch.x), PhaseStretch.x, 0);
 }
 float lookupG(float m, float eps)
 {
-  return lookup(m, eps, 1.0 + PhaseStretch.y, PhaseStretch.y, 1);
+  return lookup(m, eps, 1.0 + PhaseStretch.y * eps, PhaseStretch.y, 1);
 }
 
 // P_head(t) without the factor ks I0/(2 pi) exp(-kt tc), for t <= 0, per channel.
