@@ -888,17 +888,21 @@ void main()
     exact = true; // the low-resolution airlight is of the whole ray
   }
 //PLUME::ENDIF
+#ifndef PLUME_FEATURE_NO_LIGHTS
   for (int k = exact ? 0 : 1; k < 1; ++k)
   {
     airlight = airlightOf(o, r, xv);
   }
+#endif
   vec3 mediumTransmittance = mix(exp(-KappaT * xv), vec3(1.0), vec3(equal(KappaT, vec3(0.0))));
   vec3 behind = vec3(0.0);
+#ifndef PLUME_FEATURE_NO_LIGHTS
   for (int k = xv < xs ? 0 : 1; k < 1; ++k)
   {
     // the ray from xv on, seen through the haze in front of xv
     behind = mediumTransmittance * airlightOf(o + xv * r, r, xs - xv);
   }
+#endif
   // The surface as the window would show it without the medium (the float
   // target keeps values above 1 that an 8-bit window clamps), then attenuated;
   // the translucent media's layer over it, attenuated up to xv.
