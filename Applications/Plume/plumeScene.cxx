@@ -27,6 +27,7 @@
 #include "vtkImageReader2.h"
 #include "vtkImageReader2Factory.h"
 #include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkOutputWindow.h"
 #include "vtkPlumeCompositingPass.h"
@@ -876,11 +877,26 @@ void BuildLights(const nlohmann::json* spec, vtkRenderer* renderer, const SceneD
 }
 
 // The scene's "medium": a vtkPlumeAirlightPass around the compositing pass,
-// its keys checked and set through the pass's parameter table.
+// its keys checked and set through the pass's parameter table. Without a
+// medium the pass is still there when a light projects an image (it draws
+// the image on the surfaces).
 void BuildMedium(const nlohmann::json* spec, vtkRenderer* renderer)
 {
   if (!spec)
   {
+    vtkLightCollection* lights = renderer->GetLights();
+    lights->InitTraversal();
+    bool textured = false;
+    while (vtkLight* light = lights->GetNextItem())
+    {
+      textured = textured || vtkPlumeAirlightPass::GetLightTexture(light);
+    }
+    if (textured)
+    {
+      vtkNew<vtkPlumeAirlightPass> pass;
+      pass->SetDelegatePass(vtkPlumeCompositingPass::Install(renderer));
+      renderer->SetPass(pass);
+    }
     return;
   }
   if (!spec->is_object())

@@ -1,6 +1,7 @@
 #include "vtkPlumeAirlightPass.h"
 
 #include "vtkPlumeAirlightFS.h"
+#include "vtkPlumeLightTexture.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
@@ -25,6 +26,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -211,6 +213,18 @@ namespace
 {
 constexpr int MaximumLights = 8;
 
+// The airlight's fragment shader with the textured lights' shared GLSL in it
+// (one string for the process: the program cache knows templates by address).
+const char* AirlightSource()
+{
+  static const std::string source = [] {
+    std::string fs = vtkPlumeAirlightFS;
+    vtkShaderProgram::Substitute(fs, "//PLUME::LightTexture", vtkPlumeLightTexture, false);
+    return fs;
+  }();
+  return source.c_str();
+}
+
 // Adaptive Simpson on [a, b] to absolute tolerance `tol` (the table's
 // integrands are smooth and bounded; the depth limit only guards round-off).
 template <class F>
@@ -281,19 +295,24 @@ std::vector<double> ComputeTable(int n, double g)
     for (int i = 0; i < n; ++i)
     {
       double* out = &table[2 * (static_cast<size_t>(j) * n + i)];
+      // G's m scale, row by row: a backward peak (width 1/(1+kG) in eps) puts
+      // its m-dependence at m ~ 1/(1 + kG eps), from 1/(1 + kG) at eps = 1 to
+      // 1 at eps = 0 (a fixed 1/(1 + kG) squeezed the small-eps rows' transition
+      // to the limit into the last column: 18 % of their value at g = -0.9).
+      const double sG = 1.0 + kG * eps;
       if (i == n - 1)
       {
         // p = 1, m = infinity: m times the integrals tend to the integrands at 0.
         out[0] = (1.0 + g) / ((1.0 - g) * (1.0 - g)) / (1.0 + kH);
-        out[1] = (1.0 + kG) * c * std::sqrt(e2 + 1.0) / std::pow(a + b * e2, 1.5);
+        out[1] = sG * c * std::sqrt(e2 + 1.0) / std::pow(a + b * e2, 1.5);
         continue;
       }
       // m' = p^2 / (1 - p^2): G has a k log k term at m = 0 that a uniform grid in
-      // m / (1 + m) would only resolve to first order. m = m' (1 + kH) for H, m' / (1 + kG) for G.
+      // m / (1 + m) would only resolve to first order. m = m' (1 + kH) for H, m' / sG for G.
       const double p = static_cast<double>(i) / (n - 1);
       const double mp = p * p / (1.0 - p * p);
       const double mH = mp * (1.0 + kH);
-      const double mG = mp / (1.0 + kG);
+      const double mG = mp / sG;
       // H: the phase 4 pi p_HG times 1 / (1 + s^2), s = tau q (g = 0: 1 / (1 + s^2)).
       auto h = [mH, t2, a, b, c](double q) {
         const double s2 = t2 * q * q;
@@ -817,6 +836,229 @@ bool vtkPlumeAirlightPass::BakeShadowMap(const vtkRenderState* s, int index,
 }
 
 //------------------------------------------------------------------------------
+bool vtkPlumeAirlightPass::UpdateLightTextures(vtkRenderer* r, vtkOpenGLRenderWindow* renWin)
+{
+  // Camera lights are placed as the delegate's lights pass will place them.
+  if (r->GetLightFollowCamera())
+  {
+    r->UpdateLightsGeometryToFollowCamera();
+  }
+  vtkMatrix4x4* view = r->GetActiveCamera()->GetViewTransformMatrix();
+  auto toEye = [view](const glm::dvec3& p, double w4) {
+    double in[4] = { p.x, p.y, p.z, w4 };
+    double out[4];
+    view->MultiplyPoint(in, out);
+    return glm::dvec3(out[0], out[1], out[2]);
+  };
+  std::vector<std::pair<vtkImageData*, vtkMTimeType>> atlasKey;
+  std::vector<int> indices;
+  this->LightTextures.clear();
+  int atlasWidth = 1, atlasHeight = 0;
+  int index = 0; // among the switched-on lights, as VTK's polydata shaders count them
+  vtkCollectionSimpleIterator it;
+  vtkLightCollection* lights = r->GetLights();
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (!light->GetSwitch())
+    {
+      continue;
+    }
+    vtkImageData* image = light->GetPositional() ? ProjectedTexture(light) : nullptr;
+    if (image)
+    {
+      int dims[3];
+      image->GetDimensions(dims);
+      atlasKey.emplace_back(image, image->GetMTime());
+      indices.push_back(index);
+      LightTexture t;
+      t.Light = light;
+      t.Index = index;
+      t.Rect[0] = 0.0f;
+      t.Rect[1] = static_cast<float>(atlasHeight);
+      t.Rect[2] = static_cast<float>(dims[0]);
+      t.Rect[3] = static_cast<float>(dims[1]);
+      atlasHeight += dims[1];
+      atlasWidth = std::max(atlasWidth, dims[0]);
+      // The image's axes (see SetLightTexture), scaled by 1/tan(cone) so that
+      // the shaders divide by v.a only; to eye coordinates (VTK's view
+      // transform is rigid: directions take its rotation only).
+      double position[3], focal[3];
+      light->GetTransformedPosition(position);
+      light->GetTransformedFocalPoint(focal);
+      const glm::dvec3 wp(position[0], position[1], position[2]);
+      glm::dvec3 wa = glm::dvec3(focal[0], focal[1], focal[2]) - wp;
+      wa = glm::length(wa) > 0 ? glm::normalize(wa) : glm::dvec3(0, 0, -1);
+      glm::dvec3 hint(0.0, 1.0, 0.0);
+      vtkInformation* li = light->GetInformation();
+      if (li && li->Has(LIGHT_TEXTURE_UP()) && li->Length(LIGHT_TEXTURE_UP()) == 3)
+      {
+        const double* u = li->Get(LIGHT_TEXTURE_UP());
+        hint = glm::dvec3(u[0], u[1], u[2]);
+      }
+      if (!(glm::length(glm::cross(wa, hint)) > 1e-9 * glm::length(hint)))
+      {
+        hint = glm::dvec3(0.0, 0.0, 1.0);
+      }
+      const glm::dvec3 wr = glm::normalize(glm::cross(wa, hint));
+      const glm::dvec3 wu = glm::cross(wr, wa);
+      const double scaleTan =
+        1.0 / std::max(std::tan(vtkMath::RadiansFromDegrees(light->GetConeAngle())), 1e-9);
+      const glm::dvec3 pe = toEye(wp, 1.0);
+      glm::dvec3 axis = toEye(glm::dvec3(focal[0], focal[1], focal[2]), 1.0) - pe;
+      axis = glm::length(axis) > 0.0 ? axis / glm::length(axis) : glm::dvec3(0.0, 0.0, -1.0);
+      const glm::dvec3 frame[4] = { pe, axis, toEye(wr * scaleTan, 0.0), toEye(wu * scaleTan, 0.0) };
+      for (int k = 0; k < 4; ++k)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          t.Frame[k][c] = static_cast<float>(frame[k][c]);
+        }
+      }
+      this->LightTextures.push_back(t);
+    }
+    ++index;
+  }
+  if (indices != this->LightTextureIndices)
+  {
+    this->LightTextureIndices = indices;
+    this->LightTextureShaderTime.Modified(); // the surface shaders' code changes
+  }
+  if (atlasKey.empty())
+  {
+    return false;
+  }
+  if (!this->TextureAtlas || atlasKey != this->TextureAtlasKey)
+  {
+    std::vector<float> texels;
+    for (const auto& k : atlasKey)
+    {
+      AppendTexels(k.first, texels, atlasWidth);
+    }
+    if (!this->TextureAtlas)
+    {
+      this->TextureAtlas = vtkTextureObject::New();
+      this->TextureAtlas->SetContext(renWin);
+    }
+    // read with texelFetch (bilinear in the shader, within each image)
+    this->TextureAtlas->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->TextureAtlas->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->TextureAtlas->Create2DFromRaw(atlasWidth, atlasHeight, 4, VTK_FLOAT, texels.data());
+    this->TextureAtlasKey = atlasKey;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightPass::RenderDelegate(const vtkRenderState* s, bool textured)
+{
+  if (textured)
+  {
+    // The props' shaders multiply the textured spots' light by their images
+    // (PreReplaceShaderValues ... SetShaderParameters below).
+    this->TextureAtlas->Activate();
+    this->PreRender(s);
+  }
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  if (textured)
+  {
+    this->PostRender(s);
+    this->TextureAtlas->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The diffuse and specular lines of light N in VTK 9.1's polydata shaders (the
+// ones vtkShadowMapPass rewrites too), and the PBR one.
+std::string DiffuseLine(int i)
+{
+  return "diffuse += (df * lightColor" + std::to_string(i) + ");";
+}
+std::string SpecularLine(int i)
+{
+  return "specular += (sf * lightColor" + std::to_string(i) + ");";
+}
+std::string RadianceLine(int i)
+{
+  return "radiance = lightColor" + std::to_string(i) + " * attenuation;";
+}
+}
+
+bool vtkPlumeAirlightPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (this->LightTextures.empty() || !vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    return true;
+  }
+  std::string dec = "//VTK::Light::Dec\n"
+                    "uniform sampler2D plumeLightTextures;\n";
+  for (const LightTexture& t : this->LightTextures)
+  {
+    const std::string n = std::to_string(t.Index);
+    dec += "uniform vec4 plumeLightTextureRect" + n + ";\n" + "uniform vec3 plumeLightTextureFrame" + n +
+      "[4];\n";
+  }
+  dec += vtkPlumeLightTexture;
+  dec += "// light `frame` (position, axis, right, up)'s image at the eye-space point p\n"
+         "vec3 plumeSurfaceLightTexture(vec3 p, vec3 frame[4], vec4 rect)\n"
+         "{\n"
+         "  return plumeLightTexel(plumeLightTextures, rect,\n"
+         "    plumeLightTextureCoordinates(p - frame[0], frame[1], frame[2], frame[3]));\n"
+         "}\n";
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec", dec, false);
+  return true;
+}
+
+bool vtkPlumeAirlightPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (this->LightTextures.empty() || !vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    return true;
+  }
+  // The light code is expanded by now: multiply each textured light's lines.
+  for (const LightTexture& t : this->LightTextures)
+  {
+    const std::string n = std::to_string(t.Index);
+    const std::string texel =
+      "plumeSurfaceLightTexture(vertexVC.xyz, plumeLightTextureFrame" + n + ", plumeLightTextureRect" + n + ")";
+    vtkShaderProgram::Substitute(fragmentShader, DiffuseLine(t.Index),
+      "diffuse += (df * " + texel + " * lightColor" + n + ");", false);
+    vtkShaderProgram::Substitute(fragmentShader, SpecularLine(t.Index),
+      "specular += (sf * " + texel + " * lightColor" + n + ");", false);
+    vtkShaderProgram::Substitute(fragmentShader, RadianceLine(t.Index),
+      "radiance = " + texel + " * lightColor" + n + " * attenuation;", false);
+  }
+  return true;
+}
+
+bool vtkPlumeAirlightPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  if (this->LightTextures.empty() || !program->IsUniformUsed("plumeLightTextures"))
+  {
+    return true;
+  }
+  program->SetUniformi("plumeLightTextures", this->TextureAtlas->GetTextureUnit());
+  for (const LightTexture& t : this->LightTextures)
+  {
+    const std::string n = std::to_string(t.Index);
+    program->SetUniform4f(("plumeLightTextureRect" + n).c_str(), t.Rect);
+    program->SetUniform3fv(("plumeLightTextureFrame" + n).c_str(), 4, t.Frame);
+  }
+  return true;
+}
+
+vtkMTimeType vtkPlumeAirlightPass::GetShaderStageMTime()
+{
+  return this->LightTextureShaderTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
 void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
@@ -826,23 +1068,24 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     vtkWarningMacro("no delegate in vtkPlumeAirlightPass.");
     return;
   }
+  vtkRenderer* r = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(r->GetRenderWindow());
+  // Textured spot lights project their images onto the surfaces, medium or not.
+  const bool anyTexture = this->UpdateLightTextures(r, renWin);
   // Nothing to scatter or absorb: the scene as it is, no framebuffer, no pass.
   if (!this->HasMedium())
   {
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    this->NumberOfTexturedLights = static_cast<int>(this->LightTextures.size());
+    this->RenderDelegate(s, anyTexture);
     return;
   }
 
-  vtkRenderer* r = s->GetRenderer();
-  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(r->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
   int x, y, w, h;
   r->GetTiledSizeAndOrigin(&w, &h, &x, &y);
   if (!this->UpdateResources(renWin, w, h))
   {
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    this->RenderDelegate(s, anyTexture);
     return;
   }
 
@@ -917,8 +1160,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   vtkRenderState inner(r);
   inner.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
   inner.SetFrameBuffer(this->FrameBuffer);
-  this->DelegatePass->Render(&inner);
-  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  this->RenderDelegate(&inner, anyTexture);
   this->FrameBuffer->RemoveColorAttachments(1);
   this->FrameBuffer->RemoveDepthAttachment();
   ostate->PopFramebufferBindings();
@@ -1003,28 +1245,10 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &textureUnits);
   vtkLightCollection* lights = r->GetLights();
   vtkCollectionSimpleIterator it;
-  // Textured spot lights: their images go into one atlas (one more sampler).
-  std::vector<std::pair<vtkImageData*, vtkMTimeType>> atlasKey;
-  lights->InitTraversal(it);
-  while (vtkLight* light = lights->GetNextLight(it))
-  {
-    vtkImageData* image = light->GetSwitch() && light->GetPositional() ? ProjectedTexture(light) : nullptr;
-    if (image)
-    {
-      atlasKey.emplace_back(image, image->GetMTime());
-    }
-  }
-  const bool anyTexture = !atlasKey.empty();
+  // Textured spot lights: their images are in one atlas (one more sampler).
   const int shadowLimit = std::max(
     0, std::min<int>(MaximumShadowedLights, textureUnits - (media ? 7 : 4) - (anyTexture ? 1 : 0)));
   std::vector<float> textureRects, textureRights, textureUps; // per light (rect width 0: untextured)
-  int atlasWidth = 1, atlasHeight = 0;
-  for (const auto& k : atlasKey)
-  {
-    int dims[3];
-    k.first->GetDimensions(dims);
-    atlasWidth = std::max(atlasWidth, dims[0]);
-  }
   lights->InitTraversal(it);
   while (vtkLight* light = lights->GetNextLight(it))
   {
@@ -1063,49 +1287,16 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     }
     cosCones.push_back(
       spot ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()))) : -2.0f);
-    vtkImageData* image = ProjectedTexture(light);
+    const LightTexture* image = nullptr;
+    for (const LightTexture& t : this->LightTextures)
     {
-      float rect[4] = { 0, 0, 0, 0 };
-      glm::dvec3 right(0.0), up(0.0);
-      if (image)
-      {
-        int dims[3];
-        image->GetDimensions(dims);
-        rect[1] = static_cast<float>(atlasHeight);
-        rect[2] = static_cast<float>(dims[0]);
-        rect[3] = static_cast<float>(dims[1]);
-        atlasHeight += dims[1];
-        // The image's axes in world coordinates (see SetLightTexture), scaled
-        // by 1/tan(cone) so that the shader divides by v.a only.
-        const glm::dvec3 wp(position[0], position[1], position[2]);
-        glm::dvec3 wa = glm::dvec3(focal[0], focal[1], focal[2]) - wp;
-        wa = glm::length(wa) > 0 ? glm::normalize(wa) : glm::dvec3(0, 0, -1);
-        glm::dvec3 hint(0.0, 1.0, 0.0);
-        vtkInformation* li = light->GetInformation();
-        if (li && li->Has(LIGHT_TEXTURE_UP()) && li->Length(LIGHT_TEXTURE_UP()) == 3)
-        {
-          const double* u = li->Get(LIGHT_TEXTURE_UP());
-          hint = glm::dvec3(u[0], u[1], u[2]);
-        }
-        if (!(glm::length(glm::cross(wa, hint)) > 1e-9 * glm::length(hint)))
-        {
-          hint = glm::dvec3(0.0, 0.0, 1.0);
-        }
-        const glm::dvec3 wr = glm::normalize(glm::cross(wa, hint));
-        const glm::dvec3 wu = glm::cross(wr, wa);
-        const double scaleTan =
-          1.0 / std::max(std::tan(vtkMath::RadiansFromDegrees(light->GetConeAngle())), 1e-9);
-        const double wrs[3] = { wr.x * scaleTan, wr.y * scaleTan, wr.z * scaleTan };
-        const double wus[3] = { wu.x * scaleTan, wu.y * scaleTan, wu.z * scaleTan };
-        right = toEye(wrs, 0.0); // directions: the view's rotation only
-        up = toEye(wus, 0.0);
-      }
-      textureRects.insert(textureRects.end(), rect, rect + 4);
-      for (int c = 0; c < 3; ++c)
-      {
-        textureRights.push_back(static_cast<float>(right[c]));
-        textureUps.push_back(static_cast<float>(up[c]));
-      }
+      image = t.Light == light ? &t : image;
+    }
+    {
+      const float none[4] = { 0, 0, 0, 0 };
+      textureRects.insert(textureRects.end(), image ? image->Rect : none, (image ? image->Rect : none) + 4);
+      textureRights.insert(textureRights.end(), image ? image->Frame[2] : none, (image ? image->Frame[2] : none) + 3);
+      textureUps.insert(textureUps.end(), image ? image->Frame[3] : none, (image ? image->Frame[3] : none) + 3);
     }
     // A shadow map for a spot light whose cone holds some opaque prop's
     // bounding sphere, or for a point light with any opaque prop (a cube map).
@@ -1176,25 +1367,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     exponents.push_back(static_cast<float>(light->GetExponent()));
   }
   this->NumberOfShadowedLights = shadowCount;
-  this->NumberOfTexturedLights = static_cast<int>(atlasKey.size());
-  if (anyTexture && (!this->TextureAtlas || atlasKey != this->TextureAtlasKey))
-  {
-    std::vector<float> texels;
-    for (const auto& k : atlasKey)
-    {
-      AppendTexels(k.first, texels, atlasWidth);
-    }
-    if (!this->TextureAtlas)
-    {
-      this->TextureAtlas = vtkTextureObject::New();
-      this->TextureAtlas->SetContext(renWin);
-    }
-    // read with texelFetch (bilinear in the shader, within each image)
-    this->TextureAtlas->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->TextureAtlas->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->TextureAtlas->Create2DFromRaw(atlasWidth, atlasHeight, 4, VTK_FLOAT, texels.data());
-    this->TextureAtlasKey = atlasKey;
-  }
+  this->NumberOfTexturedLights = static_cast<int>(this->LightTextures.size());
   this->NumberOfUnshadowedLights = unshadowed;
   this->NumberOfLightGroups = static_cast<int>(groups.size());
   if (unshadowed > 0 && unshadowed != this->ReportedUnshadowed)
@@ -1235,6 +1408,10 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     // 3. The program for this group's variant (lights count, spot lights, shadows).
     vtkPlumeShaderFeatures features;
     features.Define("NUMBER_OF_LIGHTS", std::max(group.Count, 1));
+    // A medium and no positional light (haze for depth cues): the frame is
+    // the attenuated surface alone. Without this variant the light code,
+    // inlined twice, cost about half the pass on llvmpipe even at 0 trips.
+    features.Enable("NO_LIGHTS", group.Count == 0);
     // the shadowed march uses the spot path's running integral
     features.Enable("SPOT", group.AnySpot || group.Shadows > 0);
     features.Enable("TEXTURE", group.AnyTexture); // only spot lights project one
@@ -1251,7 +1428,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     // one table look-up for the three channels
     features.Enable("GREY",
       kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2]);
-    vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, vtkPlumeAirlightFS, features);
+    vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, AirlightSource(), features);
     if (!quad)
     {
       vtkErrorMacro("Could not build the airlight shader program.");

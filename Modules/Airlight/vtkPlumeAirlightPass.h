@@ -54,7 +54,8 @@
  * its airlight (additive blending); the surface is attenuated once.
  *
  * Skipped work: with ks = ka = 0 in every channel the delegate renders
- * directly (no framebuffer, no pass). The table is built once per process
+ * directly (no framebuffer, no pass; textured spot lights still put their
+ * images on the surfaces). The table is built once per process
  * and resolution and uploaded once per context.
  *
  * Volumetric shadows (Wyman & Ramsey 2008, seed 001): with Shadows on,
@@ -73,7 +74,9 @@
  * Textured spot lights (a gobo, a slide projector): a vtkImageData set on
  * a spot light (SetLightTexture, the LIGHT_TEXTURE() key of the light's
  * information) is projected by it and multiplies I0 per RGB channel by
- * direction; see SetLightTexture for the projection. The closed form treats
+ * direction, in the airlight and on the surfaces it falls on (the diffuse
+ * and specular light of VTK's polydata mappers, see PreReplaceShaderValues);
+ * see SetLightTexture for the projection. The closed form treats
  * the image like the exponent weight, per sub-interval at its middle
  * direction (two sub-intervals per texel the ray's image crosses); the
  * shader variant with this code is compiled only for a light group that has
@@ -100,8 +103,10 @@
 #include "PlumeAirlightModule.h" // For export macro
 #include "vtkImageProcessingPass.h"
 #include "vtkNew.h"                      // For vtkNew
+#include "vtkTimeStamp.h"                // For vtkTimeStamp
 #include "vtkPlumeShaderProgramCache.h" // For Programs
 
+#include <string>  // For std::string
 #include <utility> // For std::pair
 #include <vector>  // For std::vector
 
@@ -126,6 +131,24 @@ public:
   static const vtkPlumeParameterTable& GetParameterTable();
 
   void Render(const vtkRenderState* s) override;
+
+  ///@{
+  /**
+   * Textured spot lights on surfaces: while the delegate draws, the pass puts
+   * itself on the props' vtkOpenGLRenderPass::RenderPasses() key (as VTK's
+   * vtkShadowMapPass does) and multiplies, in every vtkOpenGLPolyDataMapper's
+   * fragment shader, the diffuse and specular light of each textured spot by
+   * its image in the fragment's direction (the projection of SetLightTexture,
+   * the same GLSL as the airlight's). Called by the mappers, not by users.
+   */
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+  ///@}
   /**
    * Frees the pass's GL objects. The renderer calls it when its window goes;
    * as with VTK's own passes, call it before taking the pass out of a
@@ -382,7 +405,7 @@ public:
    * (H, G) row-major, row j: u = j/(n-1), column i: p = i/(n-1),
    * m' = p^2/(1-p^2), storing
    *   (1+m') H(m, tau),  m = m' (1 + kH), tau = u / (1 + kH (1 - u)),
-   *   (1+m') G(m, eps),  m = m' / (1 + kG), eps = u / (1 + kG (1 - u)),
+   *   (1+m') G(m, eps),  m = m' / (1 + kG eps), eps = u / (1 + kG (1 - u)),
    *   H(m, tau) = integral_0^1 exp(-m q) P(tau q) / (1 + tau^2 q^2) dq,
    *   G(m, eps) = integral_0^inf exp(-m y) P((1+y)/eps) / (eps^2 + (1+y)^2) dy,
    * P(s) = 4 pi p_HG at cos a = (1 - s^2)/(1 + s^2), i.e.
@@ -426,6 +449,25 @@ protected:
   // image or the set of textured lights changes (key: image pointers and MTimes).
   vtkTextureObject* TextureAtlas = nullptr;
   std::vector<std::pair<vtkImageData*, vtkMTimeType>> TextureAtlasKey;
+  // This frame's textured lights: the light, its index among the renderer's
+  // switched-on lights (the polydata shaders' lightColorN), its rectangle in
+  // the atlas (x0, y0, width, height) and, in eye coordinates, its position,
+  // unit axis and the image's axes divided by tan(cone).
+  struct LightTexture
+  {
+    vtkLight* Light = nullptr;
+    int Index = 0;
+    float Rect[4];
+    float Frame[4][3]; // position, axis, right, up
+  };
+  std::vector<LightTexture> LightTextures;
+  vtkTimeStamp LightTextureShaderTime; // the set of textured indices changed (the surface shaders' code)
+  std::vector<int> LightTextureIndices;
+  // Collects the frame's textured lights and uploads the atlas if an image
+  // changed; returns true if some light projects an image.
+  bool UpdateLightTextures(vtkRenderer* r, vtkOpenGLRenderWindow* renWin);
+  // The delegate's render, with the textured lights' images on the surfaces.
+  void RenderDelegate(const vtkRenderState* s, bool textured);
 
   struct ShadowMap;
   std::vector<ShadowMap*> ShadowMaps;

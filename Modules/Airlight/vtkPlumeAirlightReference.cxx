@@ -416,6 +416,16 @@ void vtkPlumeAirlightReference::SetLights(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+void vtkPlumeAirlightReference::ComputeLightTexture(int index, const double direction[3], double rgb[3]) const
+{
+  rgb[0] = rgb[1] = rgb[2] = 1.0;
+  if (index >= 0 && index < static_cast<int>(this->Lights.size()) && this->Lights[index].TextureWidth > 0)
+  {
+    TextureAt(this->Lights[index], direction, rgb);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkPlumeAirlightReference::TextureAt(const Light& light, const double v[3], double rgb[3])
 {
   const double z = v[0] * light.Axis[0] + v[1] * light.Axis[1] + v[2] * light.Axis[2];

@@ -110,6 +110,14 @@ public:
   int GetNumberOfLights() const { return static_cast<int>(this->Lights.size()); }
 
   /**
+   * The image (RGB) that light `index` (in SetLights' order) projects in the
+   * world direction `direction` from the light (any length), by the
+   * reference's own projection and bilinear rule; (1, 1, 1) for a light with
+   * no image. For checking the surfaces' lighting of textured spot lights.
+   */
+  void ComputeLightTexture(int index, const double direction[3], double rgb[3]) const;
+
+  /**
    * Airlight (RGB) along the ray origin + x * direction (direction need not be
    * unit length; x in world units along the unit direction), 0 <= x <= distance;
    * distance may be +infinity.

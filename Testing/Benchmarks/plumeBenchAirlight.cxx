@@ -476,7 +476,10 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
   // Error against the reference on a lattice of pixels (every `stride`-th;
   // shadowed: a quarter as many pixels, the reference's exact shadow rays are slow).
   const int stride = (context.Quick ? 4 : 16) * (shadowed ? 2 : 1);
-  const test::FloatImage plain = RenderFloat(window, renderer, nullptr);
+  // the surfaces as the pass draws them without a medium (a textured spot's image on them)
+  vtkNew<vtkPlumeAirlightPass> surfaces;
+  surfaces->SetDelegatePass(steps);
+  const test::FloatImage plain = RenderFloat(window, renderer, surfaces);
   const test::FloatImage image = RenderFloat(window, renderer, pass);
   result.update(ErrorAgainst(image, ReferenceFrame(renderer, pass, shadowed, plain, stride)));
   return result;

@@ -71,76 +71,51 @@ uniform int ShadowRunStatistics; // 1: the output is (runs decided, all runs) of
 float RunsDecided = 0.0;
 float RunsTotal = 0.0;
 uniform mat3 EyeToWorld;
-uniform sampler2D ShadowMap0;
-uniform mat4 ShadowMatrix0[6];
-uniform vec2 ShadowRange0;
-uniform int ShadowFaces0;
-uniform vec3 ShadowLight0;
-uniform ivec2 ShadowSize0;
-uniform int ShadowTop0;
+// Per shadow map, one set of uniforms and one case in lit() and runState():
+// GLSL cannot index samplers by a computed value. SHADOW_MAPS(M) expands to
+// M(1) ... M(NUMBER_OF_SHADOWS - 1) (map 0 is the default case), and ##
+// pastes the map's number into the names.
 #if NUMBER_OF_SHADOWS > 1
-uniform sampler2D ShadowMap1;
-uniform mat4 ShadowMatrix1[6];
-uniform vec2 ShadowRange1;
-uniform int ShadowFaces1;
-uniform vec3 ShadowLight1;
-uniform ivec2 ShadowSize1;
-uniform int ShadowTop1;
+#define SHADOW_MAP_1(M) M(1)
+#else
+#define SHADOW_MAP_1(M)
 #endif
 #if NUMBER_OF_SHADOWS > 2
-uniform sampler2D ShadowMap2;
-uniform mat4 ShadowMatrix2[6];
-uniform vec2 ShadowRange2;
-uniform int ShadowFaces2;
-uniform vec3 ShadowLight2;
-uniform ivec2 ShadowSize2;
-uniform int ShadowTop2;
+#define SHADOW_MAP_2(M) M(2)
+#else
+#define SHADOW_MAP_2(M)
 #endif
 #if NUMBER_OF_SHADOWS > 3
-uniform sampler2D ShadowMap3;
-uniform mat4 ShadowMatrix3[6];
-uniform vec2 ShadowRange3;
-uniform int ShadowFaces3;
-uniform vec3 ShadowLight3;
-uniform ivec2 ShadowSize3;
-uniform int ShadowTop3;
+#define SHADOW_MAP_3(M) M(3)
+#else
+#define SHADOW_MAP_3(M)
 #endif
 #if NUMBER_OF_SHADOWS > 4
-uniform sampler2D ShadowMap4;
-uniform mat4 ShadowMatrix4[6];
-uniform vec2 ShadowRange4;
-uniform int ShadowFaces4;
-uniform vec3 ShadowLight4;
-uniform ivec2 ShadowSize4;
-uniform int ShadowTop4;
+#define SHADOW_MAP_4(M) M(4)
+#else
+#define SHADOW_MAP_4(M)
 #endif
 #if NUMBER_OF_SHADOWS > 5
-uniform sampler2D ShadowMap5;
-uniform mat4 ShadowMatrix5[6];
-uniform vec2 ShadowRange5;
-uniform int ShadowFaces5;
-uniform vec3 ShadowLight5;
-uniform ivec2 ShadowSize5;
-uniform int ShadowTop5;
+#define SHADOW_MAP_5(M) M(5)
+#else
+#define SHADOW_MAP_5(M)
 #endif
 #if NUMBER_OF_SHADOWS > 6
-uniform sampler2D ShadowMap6;
-uniform mat4 ShadowMatrix6[6];
-uniform vec2 ShadowRange6;
-uniform int ShadowFaces6;
-uniform vec3 ShadowLight6;
-uniform ivec2 ShadowSize6;
-uniform int ShadowTop6;
+#define SHADOW_MAP_6(M) M(6)
+#else
+#define SHADOW_MAP_6(M)
 #endif
 #if NUMBER_OF_SHADOWS > 7
-uniform sampler2D ShadowMap7;
-uniform mat4 ShadowMatrix7[6];
-uniform vec2 ShadowRange7;
-uniform int ShadowFaces7;
-uniform vec3 ShadowLight7;
-uniform ivec2 ShadowSize7;
-uniform int ShadowTop7;
+#define SHADOW_MAP_7(M) M(7)
+#else
+#define SHADOW_MAP_7(M)
 #endif
+#define SHADOW_MAPS(M) SHADOW_MAP_1(M) SHADOW_MAP_2(M) SHADOW_MAP_3(M) SHADOW_MAP_4(M) SHADOW_MAP_5(M) SHADOW_MAP_6(M) SHADOW_MAP_7(M)
+#define SHADOW_UNIFORMS(i) uniform sampler2D ShadowMap##i; uniform mat4 ShadowMatrix##i[6]; \
+  uniform vec2 ShadowRange##i; uniform int ShadowFaces##i; uniform vec3 ShadowLight##i; \
+  uniform ivec2 ShadowSize##i; uniform int ShadowTop##i;
+SHADOW_UNIFORMS(0)
+SHADOW_MAPS(SHADOW_UNIFORMS)
 //PLUME::ENDIF
 
 //VTK::Output::Dec
@@ -164,14 +139,16 @@ float lookup(float m, float tau, float mScale, float k, int channel)
   return texture(Table, c)[channel] / (1.0 + ms);
 }
 
-// H(m, tau) and G(m, eps) of the header.
+// H(m, tau) and G(m, eps) of the header. A backward peak (g < 0) puts G's
+// m-dependence at m ~ 1 / (1 + k eps): each row's m is scaled by that (1 for
+// g >= 0, k = 0).
 float lookupH(float m, float tau)
 {
   return lookup(m, tau, 1.0 / (1.0 + PhaseStretch.x), PhaseStretch.x, 0);
 }
 float lookupG(float m, float eps)
 {
-  return lookup(m, eps, 1.0 + PhaseStretch.y, PhaseStretch.y, 1);
+  return lookup(m, eps, 1.0 + PhaseStretch.y * eps, PhaseStretch.y, 1);
 }
 
 // P_head(t) without the factor ks I0/(2 pi) exp(-kt tc), for t <= 0, per channel.
@@ -328,28 +305,18 @@ bool textured(int l)
   return LightTextureRect[l].z > 0.0;
 }
 
-// Where the direction v (from the light, any length) meets light l's image:
-// the cone's square, the cone's circle inscribed, u along Right, v along Up.
+//PLUME::LightTexture
+
+// Where the direction v (from the light) meets light l's image.
 vec2 lightTextureCoordinates(int l, vec3 v)
 {
-  float z = max(dot(v, LightAxis[l]), 1e-30); // > 0 inside a cone of at most 90 degrees
-  return clamp(0.5 + 0.5 * vec2(dot(v, LightTextureRight[l]), dot(v, LightTextureUp[l])) / z, 0.0, 1.0);
+  return plumeLightTextureCoordinates(v, LightAxis[l], LightTextureRight[l], LightTextureUp[l]);
 }
 
-// The light's image (RGB) in direction v, bilinear between texel centres.
+// Light l's image (RGB) in direction v.
 vec3 lightTexture(int l, vec3 v)
 {
-  ivec4 rect = ivec4(LightTextureRect[l]);
-  vec2 s = lightTextureCoordinates(l, v) * vec2(rect.zw) - 0.5;
-  vec2 s0 = floor(s);
-  vec2 f = s - s0;
-  ivec2 i0 = clamp(ivec2(s0), ivec2(0), rect.zw - 1);
-  ivec2 i1 = clamp(ivec2(s0) + 1, ivec2(0), rect.zw - 1);
-  vec3 t00 = texelFetch(LightTextures, rect.xy + i0, 0).rgb;
-  vec3 t10 = texelFetch(LightTextures, rect.xy + ivec2(i1.x, i0.y), 0).rgb;
-  vec3 t01 = texelFetch(LightTextures, rect.xy + ivec2(i0.x, i1.y), 0).rgb;
-  vec3 t11 = texelFetch(LightTextures, rect.xy + i1, 0).rgb;
-  return mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
+  return plumeLightTexel(LightTextures, LightTextureRect[l], lightTextureCoordinates(l, v));
 }
 
 // Sub-intervals for a textured light over the ray's span in its cone: two per
@@ -416,59 +383,14 @@ float litIn(sampler2D map, ivec2 size, mat4 toLight, vec2 range, vec3 p, int fac
   return clip.w <= zMap * 1.002 ? 1.0 : 0.0;
 }
 
+// Map i's test of point p (on p's cube face for a point light).
+#define LIT_IN(i) { int f = ShadowFaces##i == 6 ? cubeFace(p - ShadowLight##i) : 0; \
+  return litIn(ShadowMap##i, ShadowSize##i, ShadowMatrix##i[f], ShadowRange##i, p, f, ShadowFaces##i); }
+#define LIT_CASE(i) if (s == i) LIT_IN(i)
 float lit(int s, vec3 p)
 {
-#if NUMBER_OF_SHADOWS > 1
-  if (s == 1)
-  {
-    int f = ShadowFaces1 == 6 ? cubeFace(p - ShadowLight1) : 0;
-    return litIn(ShadowMap1, ShadowSize1, ShadowMatrix1[f], ShadowRange1, p, f, ShadowFaces1);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 2
-  if (s == 2)
-  {
-    int f = ShadowFaces2 == 6 ? cubeFace(p - ShadowLight2) : 0;
-    return litIn(ShadowMap2, ShadowSize2, ShadowMatrix2[f], ShadowRange2, p, f, ShadowFaces2);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 3
-  if (s == 3)
-  {
-    int f = ShadowFaces3 == 6 ? cubeFace(p - ShadowLight3) : 0;
-    return litIn(ShadowMap3, ShadowSize3, ShadowMatrix3[f], ShadowRange3, p, f, ShadowFaces3);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 4
-  if (s == 4)
-  {
-    int f = ShadowFaces4 == 6 ? cubeFace(p - ShadowLight4) : 0;
-    return litIn(ShadowMap4, ShadowSize4, ShadowMatrix4[f], ShadowRange4, p, f, ShadowFaces4);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 5
-  if (s == 5)
-  {
-    int f = ShadowFaces5 == 6 ? cubeFace(p - ShadowLight5) : 0;
-    return litIn(ShadowMap5, ShadowSize5, ShadowMatrix5[f], ShadowRange5, p, f, ShadowFaces5);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 6
-  if (s == 6)
-  {
-    int f = ShadowFaces6 == 6 ? cubeFace(p - ShadowLight6) : 0;
-    return litIn(ShadowMap6, ShadowSize6, ShadowMatrix6[f], ShadowRange6, p, f, ShadowFaces6);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 7
-  if (s == 7)
-  {
-    int f = ShadowFaces7 == 6 ? cubeFace(p - ShadowLight7) : 0;
-    return litIn(ShadowMap7, ShadowSize7, ShadowMatrix7[f], ShadowRange7, p, f, ShadowFaces7);
-  }
-#endif
-  int f = ShadowFaces0 == 6 ? cubeFace(p - ShadowLight0) : 0;
-  return litIn(ShadowMap0, ShadowSize0, ShadowMatrix0[f], ShadowRange0, p, f, ShadowFaces0);
+  SHADOW_MAPS(LIT_CASE)
+  LIT_IN(0)
 }
 
 // Min-max shadow mipmaps (Chen et al. 2011). Whether every point of the
@@ -551,67 +473,15 @@ int runIn(sampler2D map, ivec2 size, int top, mat4 toLight, vec2 range, vec3 pa,
   return 2;
 }
 
+// Map i's run state of the segment [pa, pb] (mixed if its ends are on different cube faces).
+#define RUN_IN(i) { int fa = ShadowFaces##i == 6 ? cubeFace(pa - ShadowLight##i) : 0; \
+  int fb = ShadowFaces##i == 6 ? cubeFace(pb - ShadowLight##i) : 0; \
+  return fa != fb ? 2 : runIn(ShadowMap##i, ShadowSize##i, ShadowTop##i, ShadowMatrix##i[fa], ShadowRange##i, pa, pb, fa, ShadowFaces##i); }
+#define RUN_CASE(i) if (s == i) RUN_IN(i)
 int runState(int s, vec3 pa, vec3 pb)
 {
-#if NUMBER_OF_SHADOWS > 1
-  if (s == 1)
-  {
-    int fa = ShadowFaces1 == 6 ? cubeFace(pa - ShadowLight1) : 0;
-    int fb = ShadowFaces1 == 6 ? cubeFace(pb - ShadowLight1) : 0;
-    return fa != fb ? 2 : runIn(ShadowMap1, ShadowSize1, ShadowTop1, ShadowMatrix1[fa], ShadowRange1, pa, pb, fa, ShadowFaces1);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 2
-  if (s == 2)
-  {
-    int fa = ShadowFaces2 == 6 ? cubeFace(pa - ShadowLight2) : 0;
-    int fb = ShadowFaces2 == 6 ? cubeFace(pb - ShadowLight2) : 0;
-    return fa != fb ? 2 : runIn(ShadowMap2, ShadowSize2, ShadowTop2, ShadowMatrix2[fa], ShadowRange2, pa, pb, fa, ShadowFaces2);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 3
-  if (s == 3)
-  {
-    int fa = ShadowFaces3 == 6 ? cubeFace(pa - ShadowLight3) : 0;
-    int fb = ShadowFaces3 == 6 ? cubeFace(pb - ShadowLight3) : 0;
-    return fa != fb ? 2 : runIn(ShadowMap3, ShadowSize3, ShadowTop3, ShadowMatrix3[fa], ShadowRange3, pa, pb, fa, ShadowFaces3);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 4
-  if (s == 4)
-  {
-    int fa = ShadowFaces4 == 6 ? cubeFace(pa - ShadowLight4) : 0;
-    int fb = ShadowFaces4 == 6 ? cubeFace(pb - ShadowLight4) : 0;
-    return fa != fb ? 2 : runIn(ShadowMap4, ShadowSize4, ShadowTop4, ShadowMatrix4[fa], ShadowRange4, pa, pb, fa, ShadowFaces4);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 5
-  if (s == 5)
-  {
-    int fa = ShadowFaces5 == 6 ? cubeFace(pa - ShadowLight5) : 0;
-    int fb = ShadowFaces5 == 6 ? cubeFace(pb - ShadowLight5) : 0;
-    return fa != fb ? 2 : runIn(ShadowMap5, ShadowSize5, ShadowTop5, ShadowMatrix5[fa], ShadowRange5, pa, pb, fa, ShadowFaces5);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 6
-  if (s == 6)
-  {
-    int fa = ShadowFaces6 == 6 ? cubeFace(pa - ShadowLight6) : 0;
-    int fb = ShadowFaces6 == 6 ? cubeFace(pb - ShadowLight6) : 0;
-    return fa != fb ? 2 : runIn(ShadowMap6, ShadowSize6, ShadowTop6, ShadowMatrix6[fa], ShadowRange6, pa, pb, fa, ShadowFaces6);
-  }
-#endif
-#if NUMBER_OF_SHADOWS > 7
-  if (s == 7)
-  {
-    int fa = ShadowFaces7 == 6 ? cubeFace(pa - ShadowLight7) : 0;
-    int fb = ShadowFaces7 == 6 ? cubeFace(pb - ShadowLight7) : 0;
-    return fa != fb ? 2 : runIn(ShadowMap7, ShadowSize7, ShadowTop7, ShadowMatrix7[fa], ShadowRange7, pa, pb, fa, ShadowFaces7);
-  }
-#endif
-  int fa = ShadowFaces0 == 6 ? cubeFace(pa - ShadowLight0) : 0;
-  int fb = ShadowFaces0 == 6 ? cubeFace(pb - ShadowLight0) : 0;
-  return fa != fb ? 2 : runIn(ShadowMap0, ShadowSize0, ShadowTop0, ShadowMatrix0[fa], ShadowRange0, pa, pb, fa, ShadowFaces0);
+  SHADOW_MAPS(RUN_CASE)
+  RUN_IN(0)
 }
 
 // The march of Wyman & Ramsey over [span.x, span.y] for shadowed light l (a
@@ -1018,17 +888,21 @@ void main()
     exact = true; // the low-resolution airlight is of the whole ray
   }
 //PLUME::ENDIF
+#ifndef PLUME_FEATURE_NO_LIGHTS
   for (int k = exact ? 0 : 1; k < 1; ++k)
   {
     airlight = airlightOf(o, r, xv);
   }
+#endif
   vec3 mediumTransmittance = mix(exp(-KappaT * xv), vec3(1.0), vec3(equal(KappaT, vec3(0.0))));
   vec3 behind = vec3(0.0);
+#ifndef PLUME_FEATURE_NO_LIGHTS
   for (int k = xv < xs ? 0 : 1; k < 1; ++k)
   {
     // the ray from xv on, seen through the haze in front of xv
     behind = mediumTransmittance * airlightOf(o + xv * r, r, xs - xv);
   }
+#endif
   // The surface as the window would show it without the medium (the float
   // target keeps values above 1 that an 8-bit window clamps), then attenuated;
   // the translucent media's layer over it, attenuated up to xv.

@@ -104,6 +104,26 @@ int TestAirlightStress(int, char*[])
     Against(s, offset == 0.0 ? "gamma = pi" : "gamma = pi - 1e-6", plain, image);
   }
 
+  // A medium and no positional light (haze for depth cues, the shader variant
+  // without the light code): the surfaces dimmed by exp(-kt ds), no airlight.
+  {
+    airtest::Scene s(W, H);
+    s.AddRoom();
+    vtkNew<vtkLight> sun;
+    sun->SetLightTypeToSceneLight();
+    sun->SetPositional(false);
+    sun->SetPosition(1.0, 3.0, 2.0);
+    sun->SetFocalPoint(0.0, 0.0, 0.0);
+    s.Renderer->AddLight(sun);
+    s.Pass->SetScattering(0.2, 0.15, 0.1);
+    s.Pass->SetAbsorption(0.0, 0.02, 0.04);
+    s.Camera(0.5, 1.6, 6.0, -0.3, 1.2, -2.0);
+    const airtest::FloatImage plain = s.RenderFloat(nullptr);
+    const airtest::FloatImage image = Clean(s, "no positional light");
+    PLUME_CHECK(s.Pass->GetNumberOfLightGroups() == 1);
+    Against(s, "no positional light (absolute error)", plain, image);
+  }
+
   // A light at the eye: the integral diverges on every ray; finite, saturated pixels.
   {
     airtest::Scene s(W, H);

@@ -16,47 +16,6 @@
 #include "vtkFloatArray.h"
 #include "vtkUnsignedCharArray.h"
 
-namespace
-{
-vtkSmartPointer<vtkImageData> Gobo()
-{
-  const int w = 16, h = 12;
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(w, h, 1);
-  vtkNew<vtkUnsignedCharArray> rgb;
-  rgb->SetNumberOfComponents(3);
-  rgb->SetNumberOfTuples(w * h);
-  for (int j = 0; j < h; ++j)
-  {
-    for (int i = 0; i < w; ++i)
-    {
-      const bool bar = ((i / 4 + j / 3) % 2) == 1;
-      const double v = (i < 4 && j < 3) ? 0.0 : (bar ? 1.0 : 0.15); // a block of zeros in a corner
-      rgb->SetComponent(i + j * w, 0, std::round(255 * v));
-      rgb->SetComponent(i + j * w, 1, std::round(255 * v * i / (w - 1.0)));
-      rgb->SetComponent(i + j * w, 2, std::round(255 * v * (1.0 - 0.7 * j / (h - 1.0))));
-    }
-  }
-  image->GetPointData()->SetScalars(rgb);
-  return image;
-}
-
-vtkSmartPointer<vtkImageData> Constant(int w, int h, float r, float g, float b)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(w, h, 1);
-  vtkNew<vtkFloatArray> rgb;
-  rgb->SetNumberOfComponents(3);
-  rgb->SetNumberOfTuples(w * h);
-  for (vtkIdType p = 0; p < w * h; ++p)
-  {
-    rgb->SetTuple3(p, r, g, b);
-  }
-  image->GetPointData()->SetScalars(rgb);
-  return image;
-}
-}
-
 int TestAirlightTexture(int, char*[])
 {
   int failures = 0;
@@ -72,11 +31,12 @@ int TestAirlightTexture(int, char*[])
   s.Pass->SetIntensityScale(40.0);
   s.Camera(0.5, 1.6, 6.0, -0.3, 1.6, -2.0);
 
-  vtkSmartPointer<vtkImageData> gobo = Gobo();
+  vtkSmartPointer<vtkImageData> gobo = airtest::Gobo();
   vtkPlumeAirlightPass::SetLightTexture(spot, gobo);
   PLUME_CHECK(vtkPlumeAirlightPass::GetLightTexture(spot) == gobo);
 
-  const airtest::FloatImage plain = s.RenderFloat(nullptr);
+  // the surfaces with the image on them, as the pass draws them (TestAirlightGoboSurface checks them)
+  const airtest::FloatImage plain = s.RenderSurfaces();
   airtest::FloatImage air;
   const airtest::FloatImage ref = s.Reference(plain, 2, &air, false);
   const airtest::FloatImage image = s.RenderFloat(s.Pass);
@@ -95,14 +55,14 @@ int TestAirlightTexture(int, char*[])
   // (up hint along the light's x), the reference is far from the pass.
   {
     vtkPlumeAirlightPass::SetLightTexture(spot, nullptr);
-    const airtest::FloatImage plainRef = s.Reference(plain, 4, nullptr, false);
+    const airtest::FloatImage plainRef = s.Reference(s.RenderSurfaces(), 4, nullptr, false);
     const airtest::Error untextured = airtest::Compare(image, plainRef, air);
     std::cout << "pass (textured) vs reference untextured: ";
     airtest::Print("", untextured);
     PLUME_CHECK(untextured.RMS > 0.05);
     vtkPlumeAirlightPass::SetLightTexture(spot, gobo);
     vtkPlumeAirlightPass::SetLightTextureUp(spot, 1.0, 0.0, 0.0);
-    const airtest::FloatImage turnedRef = s.Reference(plain, 4, nullptr, false);
+    const airtest::FloatImage turnedRef = s.Reference(s.RenderSurfaces(), 4, nullptr, false);
     const airtest::Error turned = airtest::Compare(image, turnedRef, air);
     std::cout << "pass vs reference with the image turned by 90 degrees: ";
     airtest::Print("", turned);
@@ -140,7 +100,7 @@ int TestAirlightTexture(int, char*[])
   // Stress 1: a 1 x 1 image of colour c at exponent 0 is the untextured light
   // of colour c (the closed form over the cone; the textured path's
   // sub-intervals telescope). Surfaces black from here on, so that the images
-  // are the airlight alone (VTK's surface lighting of the spot is untextured).
+  // are the airlight alone.
   {
     vtkActorCollection* actors = s.Renderer->GetActors();
     actors->InitTraversal();
@@ -151,7 +111,7 @@ int TestAirlightTexture(int, char*[])
       actor->GetProperty()->SetSpecular(0.0);
     }
     spot->SetExponent(0.0);
-    vtkPlumeAirlightPass::SetLightTexture(spot, Constant(1, 1, 0.5f, 0.25f, 1.0f));
+    vtkPlumeAirlightPass::SetLightTexture(spot, airtest::ConstantImage(1, 1, 0.5f, 0.25f, 1.0f));
     const airtest::FloatImage one = s.RenderFloat(s.Pass);
     vtkPlumeAirlightPass::SetLightTexture(spot, nullptr);
     spot->SetColor(0.5 * 1.0, 0.25 * 0.95, 1.0 * 0.9);
@@ -166,7 +126,7 @@ int TestAirlightTexture(int, char*[])
   }
   // Stress 2: an image of zeros: only the point light is left.
   {
-    vtkPlumeAirlightPass::SetLightTexture(spot, Constant(3, 2, 0.0f, 0.0f, 0.0f));
+    vtkPlumeAirlightPass::SetLightTexture(spot, airtest::ConstantImage(3, 2, 0.0f, 0.0f, 0.0f));
     const airtest::FloatImage zero = s.RenderFloat(s.Pass);
     vtkPlumeAirlightPass::SetLightTexture(spot, nullptr);
     spot->SwitchOff();
@@ -180,7 +140,7 @@ int TestAirlightTexture(int, char*[])
   }
   // Stress 3: NaN, infinite and negative texels count as 0; a 1 x 1 image with an exponent.
   {
-    auto bad = Constant(4, 4, 1.0f, 1.0f, 1.0f);
+    auto bad = airtest::ConstantImage(4, 4, 1.0f, 1.0f, 1.0f);
     auto* a = vtkFloatArray::SafeDownCast(bad->GetPointData()->GetScalars());
     a->SetTuple3(0, std::nanf(""), 1.0f, 1.0f);
     a->SetTuple3(5, HUGE_VALF, -HUGE_VALF, -3.0f);
@@ -196,7 +156,7 @@ int TestAirlightTexture(int, char*[])
     airtest::Print("", eb);
     PLUME_CHECK(eb.RMS <= 0.005);
     PLUME_CHECK(eb.Max <= 0.02);
-    vtkPlumeAirlightPass::SetLightTexture(spot, Constant(1, 1, 0.8f, 0.6f, 0.4f));
+    vtkPlumeAirlightPass::SetLightTexture(spot, airtest::ConstantImage(1, 1, 0.8f, 0.6f, 0.4f));
     const airtest::FloatImage img1 = s.RenderFloat(s.Pass);
     PLUME_CHECK(!plume::test::HasNonFinite(img1));
     const airtest::Error e1 = airtest::Compare(img1, s.Reference(black, 4, nullptr, false), air);

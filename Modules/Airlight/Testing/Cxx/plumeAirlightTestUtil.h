@@ -24,6 +24,7 @@
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -50,9 +51,12 @@ struct Scene
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkPlumeAirlightPass> Pass;
   vtkNew<vtkRenderStepsPass> Steps;
+  // No medium: only the textured spot lights' images on the surfaces.
+  vtkNew<vtkPlumeAirlightPass> Surfaces;
 
   Scene(int w, int h)
   {
+    this->Surfaces->SetDelegatePass(this->Steps);
     this->Window = plume::test::MakeOffscreenWindow(w, h);
     this->Renderer->SetBackground(0.1, 0.15, 0.3);
     this->Window->AddRenderer(this->Renderer);
@@ -182,6 +186,12 @@ struct Scene
   }
 
   /**
+   * The surfaces as the pass shows them without a medium (textured spot
+   * lights project their images; the plain scene otherwise), float read-back.
+   */
+  FloatImage RenderSurfaces() { return this->RenderFloat(this->Surfaces); }
+
+  /**
    * The reference frame for the pass's medium, clamped to [0, 1] like the
    * window; `airlight` (optional) gets the airlight alone (surfaces black), clamped too.
    */
@@ -231,6 +241,46 @@ struct Scene
     return out;
   }
 };
+
+/** The textured-light tests' image: an asymmetric coloured 16 x 12 image (bars, a colour ramp, a block of zeros in a corner). */
+inline vtkSmartPointer<vtkImageData> Gobo()
+{
+  const int w = 16, h = 12;
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(w, h, 1);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(w * h);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      const bool bar = ((i / 4 + j / 3) % 2) == 1;
+      const double v = (i < 4 && j < 3) ? 0.0 : (bar ? 1.0 : 0.15); // a block of zeros in a corner
+      rgb->SetComponent(i + j * w, 0, std::round(255 * v));
+      rgb->SetComponent(i + j * w, 1, std::round(255 * v * i / (w - 1.0)));
+      rgb->SetComponent(i + j * w, 2, std::round(255 * v * (1.0 - 0.7 * j / (h - 1.0))));
+    }
+  }
+  image->GetPointData()->SetScalars(rgb);
+  return image;
+}
+
+/** A w x h float RGB image of one colour. */
+inline vtkSmartPointer<vtkImageData> ConstantImage(int w, int h, float r, float g, float b)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(w, h, 1);
+  vtkNew<vtkFloatArray> rgb;
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(w * h);
+  for (vtkIdType p = 0; p < w * h; ++p)
+  {
+    rgb->SetTuple3(p, r, g, b);
+  }
+  image->GetPointData()->SetScalars(rgb);
+  return image;
+}
 
 /** Error of `image` against `reference` over the pixels the reference computed, relative to the range of `airlight`. */
 struct Error
