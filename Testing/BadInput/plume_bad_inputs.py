@@ -797,6 +797,11 @@ def build(c):
     c.add("BenchSheetsJobNotNumber", "error", ["bench", "sheets", "--job", "reference:abc"], r"unknown job 'reference:abc'")
 
 
+def is_bench(case):
+    """A `plume bench` case (it needs plume-bench beside plume)."""
+    return case["args"][:1] == ["bench"]
+
+
 def run_case(plume, case, timeout):
     env = dict(os.environ)
     env.setdefault("PLUME_MEMORY_BUDGET_MB", "512")
@@ -874,11 +879,11 @@ def main():
     assert len(names) == len(set(names)), "duplicate case names"
     cases = [c for c in corpus.cases if re.search(args.only, c["name"])]
     if args.bench_only:
-        cases = [c for c in cases if c["args"][:1] == ["bench"]]
+        cases = [c for c in cases if is_bench(c)]
     if not os.path.exists(os.path.join(os.path.dirname(os.path.abspath(args.plume)), "plume-bench")):
         # a build without benchmarks (the sanitizer run: PLUME_BUILD_BENCHMARKS=OFF) cannot run `plume bench`
-        skipped = [c for c in cases if c["args"][:1] == ["bench"]]
-        cases = [c for c in cases if c["args"][:1] != ["bench"]]
+        skipped = [c for c in cases if is_bench(c)]
+        cases = [c for c in cases if not is_bench(c)]
         print("skipped %d 'plume bench' cases: no plume-bench beside %s" % (len(skipped), args.plume))
     if args.list:
         for c in cases:
