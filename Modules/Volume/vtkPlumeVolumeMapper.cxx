@@ -323,7 +323,7 @@ const vtkPlumeParameterTable& vtkPlumeVolumeMapper::GetParameterTable()
       .Bind(&T::SetRenderMode, &T::GetRenderMode);
     t.Real("iso_value", "IsoValue", 0.0)
       .OnlyWith("mode", { "isosurface" })
-      .Automatic("the middle of the colour map's range; in C++ the volume property's first iso value if it is not 0 (VTK's default) or UsePropertyIsoValue is on")
+      .Automatic("the middle of the colour map's range; in C++ the volume property's first iso value if it holds anything but VTK's default (a single 0) or UsePropertyIsoValue is on")
       .Units("data units")
       .Panel("Isosurface")
       .Doc("Value whose first crossing the isosurface mode draws.")
@@ -1421,8 +1421,9 @@ void vtkPlumeVolumeMapper::Internals::SetUniforms(
     // the property's when asked for, or when it holds anything but VTK's
     // default (one value, 0, which cannot be told from a 0 set on purpose):
     // VTK's own mappers read it, so code written for them keeps its value
+    const bool propertyDefault = values && values->GetNumberOfContours() == 1 && values->GetValue(0) == 0.0;
     if (!std::isfinite(iso) && values && values->GetNumberOfContours() > 0 &&
-      (self->UsePropertyIsoValue || values->GetValue(0) != 0.0))
+      (self->UsePropertyIsoValue || !propertyDefault))
     {
       iso = values->GetValue(0);
     }

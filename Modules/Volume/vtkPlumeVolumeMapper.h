@@ -50,8 +50,8 @@
  *    isosurface below (central-difference normal at the sample).
  *  - MAXIMUM_INTENSITY_BLEND: s_max along the ray, output (c α, α)(s_max).
  *  - ISOSURFACE_BLEND: the first crossing of the iso value (IsoValue if set,
- *    else the property's first IsoSurfaceValues entry if it is not 0 or
- *    UsePropertyIsoValue is on, else the middle of the colour transfer function's range, GetAutomaticIsoValue) between two
+ *    else the property's first IsoSurfaceValues entry if the property holds
+ *    anything but VTK's default (a single 0) or UsePropertyIsoValue is on, else the middle of the colour transfer function's range, GetAutomaticIsoValue) between two
  *    samples, refined by 8 bisection steps; normal from central differences
  *    (one voxel) of the trilinear field, Phong lighting with the property's
  *    ambient/diffuse/specular/specular power and the renderer's lights; opaque.
@@ -295,8 +295,8 @@ public:
   /**
    * Iso value (data units) for ISOSURFACE_BLEND; any finite value, 0
    * included, is used as set. Default NaN (not set) = the volume property's
-   * first iso value if it is not 0 (VTK's default) or UsePropertyIsoValue is
-   * on, else GetAutomaticIsoValue
+   * first iso value if the property holds anything but VTK's default (a
+   * single 0) or UsePropertyIsoValue is on, else GetAutomaticIsoValue
    * (the middle of the colour transfer function's range). Rendering with a
    * value outside the data's range warns (once per value): no surface shows.
    * Scene key `iso_value`.
@@ -310,9 +310,10 @@ public:
    * Whether an IsoValue left at NaN takes the volume property's first iso
    * value (GetIsoSurfaceValues()->GetValue(0)) even when it is 0. A
    * vtkVolumeProperty always holds one value, and VTK's default is a single
-   * 0, the same state as a 0 set on purpose: a non-zero value is taken
-   * whatever this switch says (as VTK's own mappers read it), a 0 only with
-   * it on. Default false: a property left at 0 gives the automatic value.
+   * 0, the same state as a 0 set on purpose: any other state (a non-zero
+   * value, several values) is taken whatever this switch says (as VTK's own
+   * mappers read it), a single 0 only with it on. Default false: a property
+   * left at VTK's default gives the automatic value.
    */
   vtkSetMacro(UsePropertyIsoValue, bool);
   vtkGetMacro(UsePropertyIsoValue, bool);

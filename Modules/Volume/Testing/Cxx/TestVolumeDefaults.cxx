@@ -9,8 +9,9 @@
 //    over the property's; changing the automatic value re-tabulates (the
 //    table holds it);
 //  - iso value: unset (the mapper's NaN, the property at VTK's default, one
-//    value 0, which only UsePropertyIsoValue says was meant; a non-zero
-//    property value is read as VTK's own mappers read it), the middle of the colour transfer
+//    value 0, which only UsePropertyIsoValue says was meant; any other state,
+//    a non-zero value or several values, is read as VTK's own mappers read
+//    it), the middle of the colour transfer
 //    function's range, drawing exactly what that value set explicitly draws;
 //    0 is honoured, from the mapper and from the property alike;
 //  - an iso value outside the data warns once per value (no surface shows);
@@ -150,6 +151,20 @@ int TestVolumeDefaults(int, char*[])
   {
     fail("an iso value of 0 is not honoured");
   }
+  // several values are not VTK's default: the first, 0, without the switch too
+  s.Mapper->SetIsoValue(std::numeric_limits<double>::quiet_NaN());
+  property->GetIsoSurfaceValues()->SetNumberOfContours(2);
+  property->GetIsoSurfaceValues()->SetValue(0, 0.0);
+  property->GetIsoSurfaceValues()->SetValue(1, 0.3);
+  s.Window->Render();
+  const double listIso = s.Mapper->GetEffectiveIsoValue();
+  std::printf("property values 0, 0.3: in effect %.6g without UsePropertyIsoValue (want 0)\n", listIso);
+  if (listIso != 0.0)
+  {
+    fail("the first of several property iso values, 0, is not honoured");
+  }
+  property->GetIsoSurfaceValues()->SetNumberOfContours(1);
+  property->GetIsoSurfaceValues()->SetValue(0, 0.0);
 
   // an iso value outside the data warns (no surface shows), once per value
   int warnings = 0;
