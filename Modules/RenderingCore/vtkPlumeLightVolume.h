@@ -10,11 +10,12 @@
  * It is made by a sweep along each light, O(N^3) instead of a march per node
  * (O(N^4)): the nodes are visited layer by layer along the light's dominant
  * index axis (GetSweep), starting at the face the light enters through; a
- * node's transmittance is the previous layer's, interpolated bilinearly where
- * the ray towards the light meets that layer, times the segment's own. The
+ * node's transmittance is an earlier layer's (in the volume mapper's shader:
+ * the last one whose number is a multiple of 8, interpolated bicubically
+ * where the ray towards the light meets it), times the segment's own. The
  * caller's shader draws each layer into a float scratch texture laid out
- * along the sweep (layers of the dominant axis; it reads the previous layer,
- * a texture barrier apart), then copies the light's channel into the volume
+ * along the sweep (layers of the dominant axis; it reads earlier layers, a
+ * texture barrier apart), then copies the light's channel into the volume
  * one z-slice at a time.
  *
  * Update() recomputes it only when the window or the key (grid size, lights,

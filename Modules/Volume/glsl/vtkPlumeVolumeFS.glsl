@@ -10,8 +10,8 @@
 //   POINT | PREINT   composite: a sample's value over its segment | segments
 //                    pre-integrated between their end values (no SKIP, PLAIN
 //                    or MASK then; SKIP_PREINT instead of SKIP)
-//   JITTER           jittered first segment (per pixel; JITTER+COARSE: one
-//                    offset for all lattice rays)
+//   JITTER           jittered first segment (per pixel; JITTER+COARSE: per
+//                    lattice ray, whatever band of the texture it is stored in)
 //   DEPTH            stop at the opaque scene's depth
 //   SKIP             empty-space skipping, with one of: SKIP_TRANSPARENT
 //                    (composite/smoke: jump over transparent blocks), SKIP_MIP
@@ -49,7 +49,7 @@
 //   LIGHT_VOLUME     the light volume's passes (vtkPlumeLightVolume): a sweep
 //                    layer (LightPass 0: fragment (u, v) writes the transmittance
 //                    of the sweep's node (u, v, SweepLayer) towards light
-//                    SweepLight from the previous layer's), or a z-slice of the
+//                    SweepLight from an earlier layer's), or a z-slice of the
 //                    light volume (LightPass 1: node (i, j, LightSlice) from its
 //                    sweep texel)
 // Values (#define): PLUME_LIGHTS n (lit modes), PLUME_ISO_MARGIN (SKIP_ISO).
@@ -424,7 +424,7 @@ void main()
     node[c] = float(uv.y);
     vec3 e = LightIndexDir[SweepLight];
     // the layer read: the last multiple of SweepStride before this one, so a
-    // ray is interpolated once per SweepStride layers only (each bilinear
+    // ray is interpolated once per SweepStride layers only (each
     // interpolation blurs the shadows a little)
     int from = ((SweepLayer - 1) / SweepStride) * SweepStride;
     float h = float(SweepLayer - from) / abs(e[a]); // ray length from the node to that layer
