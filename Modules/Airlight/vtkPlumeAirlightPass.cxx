@@ -1287,17 +1287,17 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     }
     cosCones.push_back(
       spot ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()))) : -2.0f);
-    const LightTexture* image = nullptr;
-    for (const LightTexture& t : this->LightTextures)
-    {
-      image = t.Light == light ? &t : image;
-    }
-    {
-      const float none[4] = { 0, 0, 0, 0 };
-      textureRects.insert(textureRects.end(), image ? image->Rect : none, (image ? image->Rect : none) + 4);
-      textureRights.insert(textureRights.end(), image ? image->Frame[2] : none, (image ? image->Frame[2] : none) + 3);
-      textureUps.insert(textureUps.end(), image ? image->Frame[3] : none, (image ? image->Frame[3] : none) + 3);
-    }
+    // its image, as UpdateLightTextures collected it (rect width 0: none)
+    const auto image = std::find_if(this->LightTextures.begin(), this->LightTextures.end(),
+      [light](const LightTexture& t) { return t.Light == light; });
+    const bool textured = image != this->LightTextures.end();
+    const float none[4] = { 0, 0, 0, 0 };
+    const float* rect = textured ? image->Rect : none;
+    const float* right = textured ? image->Frame[2] : none;
+    const float* up = textured ? image->Frame[3] : none;
+    textureRects.insert(textureRects.end(), rect, rect + 4);
+    textureRights.insert(textureRights.end(), right, right + 3);
+    textureUps.insert(textureUps.end(), up, up + 3);
     // A shadow map for a spot light whose cone holds some opaque prop's
     // bounding sphere, or for a point light with any opaque prop (a cube map).
     int shadow = -1;
@@ -1362,7 +1362,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     Group& group = groups.back();
     ++group.Count;
     group.AnySpot = group.AnySpot || spot;
-    group.AnyTexture = group.AnyTexture || image != nullptr;
+    group.AnyTexture = group.AnyTexture || textured;
     shadowIndex.push_back(shadow);
     exponents.push_back(static_cast<float>(light->GetExponent()));
   }
