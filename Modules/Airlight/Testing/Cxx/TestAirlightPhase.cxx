@@ -154,7 +154,7 @@ int TestAirlightPhase(int, char*[])
   // small difference of two large potentials (the phase's peak, 190 times
   // the isotropic value at 0.9, lies outside the cone but inside both) and
   // the brightest pixel of the image. Unshadowed: the table alone.
-  for (double g : { 0.9, -0.9, 0.5, -0.5, 0.0 })
+  for (double g : { 0.9, -0.9, 0.5, -0.5, 0.0, 0.95, -0.95 })
   {
     airtest::Scene s(W, H);
     s.AddRoom();
