@@ -271,14 +271,43 @@ double PhaseStretch(double g)
   return 2.0 * std::fabs(g) / (1.0 - std::fabs(g));
 }
 
+// The peaked function's rows (see GetScatteringTable; both 0 for k = 0).
+// The warp r = sqrt(1 + k) - 1 spreads the rows evenly between the peak
+// (width 1/(1+k)) and tau = 1: the row spacing in tau grows (1+r)^2 = 1 + k
+// times from tau = 0 to 1 (with r = k, 19^2 times at g = 0.9: four rows held
+// tau in [0.4, 1]). The weight slope w grows as k^3, as the peak's height
+// over the phase at 90 degrees ((1+g^2)^1.5 / (1-g)^3, 2435 at g = 0.9,
+// 11 at 0.5) that the rows' values cancel to (w = 91 at 0.9, 0.12 at 0.5).
+double RowWarp(double k)
+{
+  return std::sqrt(1.0 + k) - 1.0;
+}
+double RowWeight(double k)
+{
+  return k * k * k / 64.0;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightPass::GetTableCoordinates(double g, double coordinates[6])
+{
+  const double kH = g > 0.0 ? PhaseStretch(g) : 0.0;
+  const double kG = g < 0.0 ? PhaseStretch(g) : 0.0;
+  const double values[6] = { kH, kG, RowWarp(kH), RowWarp(kG), RowWeight(kH), RowWeight(kG) };
+  std::copy(values, values + 6, coordinates);
+}
+
+namespace
+{
 std::vector<double> ComputeTable(int n, double g)
 {
   std::vector<double> table(2 * static_cast<size_t>(n) * n);
   const double tol = 1e-11;
   // The head function H carries the forward peak (g > 0), the tail G the
   // backward one (g < 0): each gets the stretch of the peak it has.
-  const double kH = g > 0.0 ? PhaseStretch(g) : 0.0;
-  const double kG = g < 0.0 ? PhaseStretch(g) : 0.0;
+  double k[6];
+  vtkPlumeAirlightPass::GetTableCoordinates(g, k);
+  const double kH = k[0], kG = k[1], rH = k[2], rG = k[3], wH = k[4], wG = k[5];
   const double a = (1.0 + g) * (1.0 + g);
   const double b = (1.0 - g) * (1.0 - g);
   const double c = 1.0 - g * g;
@@ -286,32 +315,41 @@ std::vector<double> ComputeTable(int n, double g)
   vtkSMPTools::For(0, n, [&](int rowBegin, int rowEnd) {
   for (int j = rowBegin; j < rowEnd; ++j)
   {
-    // Row j: u = j/(n-1); tau (or eps) = u / (1 + k (1 - u)) inverts u = tau (1+k) / (1 + k tau).
+    // Row j: u = j/(n-1); tau (or eps) = u / (1 + r (1 - u)) inverts u = tau (1+r) / (1 + r tau).
     const double u = static_cast<double>(j) / (n - 1);
-    const double tau = u / (1.0 + kH * (1.0 - u));
-    const double eps = u / (1.0 + kG * (1.0 - u));
+    const double tau = u / (1.0 + rH * (1.0 - u));
+    const double eps = u / (1.0 + rG * (1.0 - u));
     const double t2 = tau * tau;
     const double e2 = eps * eps;
+    // m's scale, row by row. H: a forward peak (width 1/(1+kH) in tau) puts
+    // its m-dependence at m ~ 1 + kH tau (the decay over the peak, whose
+    // integral the row's value is made of beyond tau ~ 1/kH): m = m' (1 + kH tau).
+    // G: a backward peak puts it at m ~ 1/(1 + kG eps): m = m' / (1 + kG eps).
+    // Beyond the peak both scales make m' ~ kt h (a ray's constant), so the
+    // two ends of a ray's segment read the table at nearly the same column.
+    const double sH = 1.0 + kH * tau;
+    const double sG = 1.0 + kG * eps;
+    // The row weights 1 + w tau (1 + w eps): beyond the peak the head function
+    // is its integral over tau, H ~ A / tau, and a segment that misses the
+    // peak is a small difference of two such values; stored as H (1 + w tau),
+    // nearly constant there, the interpolation keeps that difference.
+    const double fH = 1.0 + wH * tau;
+    const double fG = 1.0 + wG * eps;
     for (int i = 0; i < n; ++i)
     {
       double* out = &table[2 * (static_cast<size_t>(j) * n + i)];
-      // G's m scale, row by row: a backward peak (width 1/(1+kG) in eps) puts
-      // its m-dependence at m ~ 1/(1 + kG eps), from 1/(1 + kG) at eps = 1 to
-      // 1 at eps = 0 (a fixed 1/(1 + kG) squeezed the small-eps rows' transition
-      // to the limit into the last column: 18 % of their value at g = -0.9).
-      const double sG = 1.0 + kG * eps;
       if (i == n - 1)
       {
         // p = 1, m = infinity: m times the integrals tend to the integrands at 0.
-        out[0] = (1.0 + g) / ((1.0 - g) * (1.0 - g)) / (1.0 + kH);
-        out[1] = sG * c * std::sqrt(e2 + 1.0) / std::pow(a + b * e2, 1.5);
+        out[0] = fH * (1.0 + g) / ((1.0 - g) * (1.0 - g)) / sH;
+        out[1] = fG * sG * c * std::sqrt(e2 + 1.0) / std::pow(a + b * e2, 1.5);
         continue;
       }
       // m' = p^2 / (1 - p^2): G has a k log k term at m = 0 that a uniform grid in
-      // m / (1 + m) would only resolve to first order. m = m' (1 + kH) for H, m' / sG for G.
+      // m / (1 + m) would only resolve to first order.
       const double p = static_cast<double>(i) / (n - 1);
       const double mp = p * p / (1.0 - p * p);
-      const double mH = mp * (1.0 + kH);
+      const double mH = mp * sH;
       const double mG = mp / sG;
       // H: the phase 4 pi p_HG times 1 / (1 + s^2), s = tau q (g = 0: 1 / (1 + s^2)).
       auto h = [mH, t2, a, b, c](double q) {
@@ -327,8 +365,8 @@ std::vector<double> ComputeTable(int n, double g)
         const double w = 1.0 - z; // 1 + y = 1 / w
         return std::exp(-mG * z / w) * c * std::sqrt(e2 * w * w + 1.0) / std::pow(a + b * e2 * w * w, 1.5);
       };
-      out[0] = (1.0 + mp) * Integrate(h, 0.0, 1.0, tol / (1.0 + mp));
-      out[1] = (1.0 + mp) * Integrate(gg, 0.0, 1.0, tol / (1.0 + mp));
+      out[0] = fH * (1.0 + mp) * Integrate(h, 0.0, 1.0, tol / (1.0 + mp));
+      out[1] = fG * (1.0 + mp) * Integrate(gg, 0.0, 1.0, tol / (1.0 + mp));
     }
   }
   });
@@ -1466,9 +1504,13 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     }
     {
       const double g = this->UploadedTableAnisotropy;
-      const float stretch[2] = { static_cast<float>(g > 0.0 ? PhaseStretch(g) : 0.0),
-        static_cast<float>(g < 0.0 ? PhaseStretch(g) : 0.0) };
+      double k[6];
+      GetTableCoordinates(g, k);
+      const float stretch[2] = { static_cast<float>(k[0]), static_cast<float>(k[1]) };
+      const float rows[4] = { static_cast<float>(k[2]), static_cast<float>(k[3]), static_cast<float>(k[4]),
+        static_cast<float>(k[5]) };
       program->SetUniform2f("PhaseStretch", stretch);
+      program->SetUniform4f("PhaseRows", rows);
       if (this->MarchSteps > 0)
       {
         program->SetUniformf("Anisotropy", static_cast<float>(g));

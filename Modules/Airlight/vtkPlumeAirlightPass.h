@@ -404,18 +404,29 @@ public:
    * once per (n, g) in double precision; shared, thread-safe): n*n pairs
    * (H, G) row-major, row j: u = j/(n-1), column i: p = i/(n-1),
    * m' = p^2/(1-p^2), storing
-   *   (1+m') H(m, tau),  m = m' (1 + kH), tau = u / (1 + kH (1 - u)),
-   *   (1+m') G(m, eps),  m = m' / (1 + kG eps), eps = u / (1 + kG (1 - u)),
+   *   (1+m') (1 + wH tau) H(m, tau),  m = m' (1 + kH tau),  tau = u / (1 + rH (1 - u)),
+   *   (1+m') (1 + wG eps) G(m, eps),  m = m' / (1 + kG eps), eps = u / (1 + rG (1 - u)),
    *   H(m, tau) = integral_0^1 exp(-m q) P(tau q) / (1 + tau^2 q^2) dq,
    *   G(m, eps) = integral_0^inf exp(-m y) P((1+y)/eps) / (eps^2 + (1+y)^2) dy,
    * P(s) = 4 pi p_HG at cos a = (1 - s^2)/(1 + s^2), i.e.
    * P(s) = (1-g^2) (1+s^2)^1.5 / ((1+g)^2 s^2 + (1-g)^2)^1.5 (1 for g = 0);
    * kH = 2g/(1-g) for g > 0 (else 0) and kG = 2|g|/(1-|g|) for g < 0 (else
-   * 0) stretch the table where the phase's peak is (width (1-|g|)/(1+|g|)
-   * in tau or eps). Each value to an absolute accuracy of 1e-10 (adaptive
-   * Simpson). Column p = 1 holds the limits m = inf.
+   * 0) follow the phase's peak (width (1-|g|)/(1+|g|) in tau or eps); the
+   * row warp r = sqrt(1 + k) - 1 and the row weight w = k^3/64 of the same
+   * function keep a segment that misses the peak (a small difference of two
+   * large values) exact (GetTableCoordinates; Documentation/Airlight.md).
+   * Each value to an absolute accuracy of about 1e-10 times its row weight
+   * (adaptive Simpson).
+   * Column p = 1 holds the limits m = inf.
    */
   static const std::vector<double>& GetScatteringTable(int n, double g = 0.0);
+
+  /**
+   * The scattering table's coordinates for Henyey-Greenstein g, as the
+   * table and the shader use them: (kH, kG, rH, rG, wH, wG) of
+   * GetScatteringTable (all 0 for g = 0).
+   */
+  static void GetTableCoordinates(double g, double coordinates[6]);
 
 protected:
   vtkPlumeAirlightPass();

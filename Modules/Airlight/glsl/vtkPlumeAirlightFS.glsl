@@ -17,9 +17,10 @@ in vec2 texCoord;
 
 uniform sampler2D SceneColor;
 uniform sampler2D SceneDepth;
-uniform sampler2D Table;      // RG32F, TableSize^2: (1+m) H and (1+m) G, see vtkPlumeAirlightPass.h
+uniform sampler2D Table;      // RG32F, TableSize^2: (1+m) H and (1+m) G (times row weights), see vtkPlumeAirlightPass.h
 uniform int TableSize;
 uniform vec2 PhaseStretch;    // (k of H, k of G): 0 for the isotropic phase
+uniform vec4 PhaseRows;       // (row warp of H, of G, row weight of H, of G): 0 for the isotropic phase
 uniform float Anisotropy;     // Henyey-Greenstein g (the brute-force march only)
 uniform vec2 ViewportOrigin;  // window pixels of the viewport's lower-left corner
 uniform mat4 InverseProjection; // NDC -> eye coordinates
@@ -125,30 +126,29 @@ const float HUGE = 1e20;
 
 // Bilinear look-up of one table at (m, tau or eps): one filtered fetch, texel
 // centres at (i + 0.5)/N (GL_LINEAR on the RG32F texture). The coordinates
-// are p = sqrt(m' / (1 + m')), m' = m * mScale, and u = tau (1 + k) / (1 + k tau)
-// (k = 0 and mScale = 1 for the isotropic phase; for Henyey-Greenstein they
-// stretch the table around the phase's peak, see vtkPlumeAirlightPass.h).
-// Returns the function itself: the texel holds (1 + m') times it.
-float lookup(float m, float tau, float mScale, float k, int channel)
+// are p = sqrt(m' / (1 + m')), m' = m * mScale, and u = tau (1 + k) / (1 + k tau);
+// the texel holds (1 + m') (1 + w tau) times the function (k = w = 0 and
+// mScale = 1 for the isotropic phase; for Henyey-Greenstein they follow the
+// phase's peak, see vtkPlumeAirlightPass.h). Returns the function itself.
+float lookup(float m, float tau, float mScale, float k, float w, int channel)
 {
   float ms = m * mScale;
   float p = sqrt(ms / (1.0 + ms)); // m in [0, inf) -> p in [0, 1], finer near m = 0
   float u = tau * (1.0 + k) / (1.0 + k * tau);
   float n1 = float(TableSize - 1);
   vec2 c = (clamp(vec2(p, u), 0.0, 1.0) * n1 + 0.5) / float(TableSize);
-  return texture(Table, c)[channel] / (1.0 + ms);
+  return texture(Table, c)[channel] / ((1.0 + ms) * (1.0 + w * tau));
 }
 
-// H(m, tau) and G(m, eps) of the header. A backward peak (g < 0) puts G's
-// m-dependence at m ~ 1 / (1 + k eps): each row's m is scaled by that (1 for
-// g >= 0, k = 0).
+// H(m, tau) and G(m, eps) of the header; m's scale follows the peak row by
+// row (1 for the isotropic phase).
 float lookupH(float m, float tau)
 {
-  return lookup(m, tau, 1.0 / (1.0 + PhaseStretch.x), PhaseStretch.x, 0);
+  return lookup(m, tau, 1.0 / (1.0 + PhaseStretch.x * tau), PhaseRows.x, PhaseRows.z, 0);
 }
 float lookupG(float m, float eps)
 {
-  return lookup(m, eps, 1.0 + PhaseStretch.y * eps, PhaseStretch.y, 1);
+  return lookup(m, eps, 1.0 + PhaseStretch.y * eps, PhaseRows.y, PhaseRows.w, 1);
 }
 
 // P_head(t) without the factor ks I0/(2 pi) exp(-kt tc), for t <= 0, per channel.
