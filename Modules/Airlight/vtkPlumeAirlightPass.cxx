@@ -1425,6 +1425,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       mediaDepthTexture->Activate();
     }
   }
+  this->LastRefinedCellFraction = 0.0; // stays 0 unless a group uses the lattice
   for (size_t gi = 0; gi < groups.size(); ++gi)
   {
     const Group& group = groups[gi];
@@ -1453,10 +1454,14 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2]);
     // The airlight lattice (Downsampling > 1): for a group with lights, two
     // cells in each direction at least; the run statistics are per pixel.
+    // Not for shadowed or textured lights: a shadow or a slat's shaft
+    // narrower than a cell can fall between the nodes, and nothing in the
+    // classification would see it.
     const int cells[2] = { w >= 2 ? (w - 2) / this->Downsampling + 1 : 0,
       h >= 2 ? (h - 2) / this->Downsampling + 1 : 0 };
-    const bool lattice = this->Downsampling > 1 && group.Count > 0 && this->MarchSteps == 0 &&
-      !this->ShadowRunStatistics && cells[0] >= 2 && cells[1] >= 2;
+    const bool lattice = this->Downsampling > 1 && group.Count > 0 && group.Shadows == 0 &&
+      !group.AnyTexture && this->MarchSteps == 0 && !this->ShadowRunStatistics && cells[0] >= 2 &&
+      cells[1] >= 2;
     // 4. Uniforms (the same for every program of the group) and the passes.
     auto setUniforms = [&](vtkShaderProgram* program) {
       program->SetUniformi("SceneColor", this->ColorTexture->GetTextureUnit());

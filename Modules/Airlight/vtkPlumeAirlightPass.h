@@ -228,7 +228,9 @@ public:
    * pass between nodes); and (4)
    * no translucent medium covers one of its pixels. Every pixel of the other
    * cells is evaluated exactly, in a pass drawn over those cells only
-   * (vtkPlumeLatticeCellsVS). Clamped to 1..8. Default 8.
+   * (vtkPlumeLatticeCellsVS). Lights that cast shadows or project an image
+   * are always evaluated at every pixel: a shadow or a shaft narrower than a
+   * cell could fall between the nodes. Clamped to 1..8. Default 8.
    */
   vtkSetClampMacro(Downsampling, int, 1, 8);
   vtkGetMacro(Downsampling, int);
