@@ -4,6 +4,7 @@
 #include "vtkPlumeLightTexture.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeGLMatrix.h"
+#include "vtkPlumeLatticeCellsVS.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumeShaderFeatures.h"
@@ -31,6 +32,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
@@ -212,6 +214,16 @@ struct vtkPlumeAirlightPass::ShadowMap
 namespace
 {
 constexpr int MaximumLights = 8;
+// The airlight lattice: a pixel whose eye depth differs by more than this
+// (relative) from the plane through its cell's corners lies on another
+// surface (a silhouette, an object smaller than a cell) and its cell is
+// refined. Window depth is stored as float: on a plane the mismatch is
+// rounding; on the benchmark's sphere, bilinear depth over 8 pixels is
+// within about 3e-4.
+constexpr double LatticeDepthTolerance = 1e-3;
+// Spots narrower than this (cone half-angle, degrees) can make a shaft
+// thinner than a lattice cell: the cells along their axis are refined.
+constexpr double NarrowSpotAngle = 10.0;
 
 // The airlight's fragment shader with the textured lights' shared GLSL in it
 // (one string for the process: the program cache knows templates by address).
@@ -423,17 +435,17 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Advanced()
       .Doc("Sub-intervals per spot light cone for its exponent weight, per unit of sqrt(exponent/2) (one when the exponent is 0).")
       .Bind(&T::SetSpotSteps, &T::GetSpotSteps);
-    t.Integer("downsampling", "Downsampling", 1)
+    t.Integer("downsampling", "Downsampling", 8)
       .Between(1, 8)
       .Panel("Medium")
       .Advanced()
-      .Doc("Airlight computed once per D x D pixels and upsampled (bilinear where the four samples share the pixel's surface and agree within upsampling_tolerance, exact elsewhere); 1: every pixel (accurate).")
+      .Doc("Airlight lattice: evaluated every D pixels, interpolated in cells whose estimated error is within upsampling_tolerance and which hold no surface edge, light or translucent medium, every pixel of the other cells evaluated; 1: every pixel.")
       .Bind(&T::SetDownsampling, &T::GetDownsampling);
-    t.Real("upsampling_tolerance", "UpsamplingTolerance", 0.05)
+    t.Real("upsampling_tolerance", "UpsamplingTolerance", 0.005)
       .Between(0.0, 1.0)
       .Panel("Medium")
       .Advanced()
-      .Doc("With downsampling: the largest relative spread of the four samples that is interpolated (0: every pixel exact).")
+      .Doc("With downsampling: the largest estimated interpolation error of a lattice cell, as a fraction of the frame's airlight range (0: every pixel evaluated).")
       .Bind(&T::SetUpsamplingTolerance, &T::GetUpsamplingTolerance);
     t.Integer("table_resolution", "TableResolution", 64)
       .Between(8, 2048)
@@ -599,21 +611,32 @@ bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w,
     this->FrameBuffer = vtkOpenGLFramebufferObject::New();
     this->FrameBuffer->SetContext(renWin);
   }
-  if (this->Downsampling > 1)
+  if (this->Downsampling > 1 && w >= 2 && h >= 2)
   {
-    const int lw = (w + this->Downsampling - 1) / this->Downsampling;
-    const int lh = (h + this->Downsampling - 1) / this->Downsampling;
-    if (!this->LowTexture)
+    // the lattice: (cells + 1)^2 nodes' airlight (bilinear filtering: the
+    // interpolated cells' one fetch), one refinement flag per cell
+    const int cw = (w - 2) / this->Downsampling + 1;
+    const int ch = (h - 2) / this->Downsampling + 1;
+    for (vtkTextureObject** t : { &this->LowTexture, &this->CellTexture })
     {
-      this->LowTexture = vtkTextureObject::New();
-      this->LowTexture->SetContext(renWin);
-      this->LowTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-      this->LowTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-      this->LowTexture->Allocate2D(lw, lh, 4, VTK_FLOAT);
+      const bool nodes = t == &this->LowTexture;
+      if (!*t)
+      {
+        *t = vtkTextureObject::New();
+        (*t)->SetContext(renWin);
+        (*t)->SetMinificationFilter(nodes ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+        (*t)->SetMagnificationFilter(nodes ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+        (*t)->SetWrapS(vtkTextureObject::ClampToEdge);
+        (*t)->SetWrapT(vtkTextureObject::ClampToEdge);
+        (*t)->Allocate2D(nodes ? cw + 1 : cw, nodes ? ch + 1 : ch, nodes ? 4 : 1, VTK_FLOAT);
+      }
+      (*t)->Resize(nodes ? cw + 1 : cw, nodes ? ch + 1 : ch);
+    }
+    if (!this->LowFrameBuffer)
+    {
       this->LowFrameBuffer = vtkOpenGLFramebufferObject::New();
       this->LowFrameBuffer->SetContext(renWin);
     }
-    this->LowTexture->Resize(lw, lh);
   }
   if (!this->TableTexture || this->UploadedTableResolution != this->TableResolution ||
     this->UploadedTableAnisotropy != this->ScatteringAnisotropy)
@@ -1277,15 +1300,15 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   vtkNew<vtkMatrix4x4> inverseView;
   vtkMatrix4x4::Invert(view, inverseView);
   int shadowCount = 0;
-  // One sampler per shadowed light of a group beside the pass's own 4
-  // (colour, depth, table, low-resolution airlight).
+  // One sampler per shadowed light of a group beside the pass's own 5
+  // (colour, depth, table, the lattice's nodes and cells).
   GLint textureUnits = 16;
   glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &textureUnits);
   vtkLightCollection* lights = r->GetLights();
   vtkCollectionSimpleIterator it;
   // Textured spot lights: their images are in one atlas (one more sampler).
   const int shadowLimit = std::max(
-    0, std::min<int>(MaximumShadowedLights, textureUnits - (media ? 7 : 4) - (anyTexture ? 1 : 0)));
+    0, std::min<int>(MaximumShadowedLights, textureUnits - (media ? 8 : 5) - (anyTexture ? 1 : 0)));
   std::vector<float> textureRects, textureRights, textureUps; // per light (rect width 0: untextured)
   lights->InitTraversal(it);
   while (vtkLight* light = lights->GetNextLight(it))
@@ -1412,7 +1435,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   {
     vtkWarningMacro("vtkPlumeAirlightPass: " << unshadowed
       << " lights need a shadow map but the driver has " << textureUnits
-      << " fragment texture units, all used by the pass's 4 others; they are rendered unshadowed.");
+      << " fragment texture units, all used by the pass's 5 others; they are rendered unshadowed.");
   }
   this->ReportedUnshadowed = unshadowed;
 
@@ -1440,6 +1463,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       mediaDepthTexture->Activate();
     }
   }
+  this->LastRefinedCellFraction = 0.0; // stays 0 unless a group uses the lattice
   for (size_t gi = 0; gi < groups.size(); ++gi)
   {
     const Group& group = groups[gi];
@@ -1466,195 +1490,191 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
     // one table look-up for the three channels
     features.Enable("GREY",
       kt0 == this->Scattering[1] + this->Absorption[1] && kt0 == this->Scattering[2] + this->Absorption[2]);
-    vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, AirlightSource(), features);
-    if (!quad)
-    {
-      vtkErrorMacro("Could not build the airlight shader program.");
-      break;
-    }
-    vtkShaderProgram* program = quad->Program;
-
-    // 4. Uniforms and the full-screen pass.
-    program->SetUniformi("SceneColor", this->ColorTexture->GetTextureUnit());
-    program->SetUniformi("SceneDepth", this->DepthTexture->GetTextureUnit());
-    program->SetUniformi("Table", this->TableTexture->GetTextureUnit());
-    program->SetUniformi("TableSize", this->UploadedTableResolution);
-    if (media)
-    {
-      program->SetUniformi("MediaLayer", this->MediaTexture->GetTextureUnit());
-      // (without the depth before the media, the sampler still needs a valid unit)
-      program->SetUniformi("MediaDepth",
-        (mediaDepthTexture ? mediaDepthTexture : this->MediaTexture)->GetTextureUnit());
-      program->SetUniformi("HasMediaDepth", mediaDepthTexture ? 1 : 0);
-      program->SetUniformi("MediaTransmittance",
-        (mediaTransmittance ? this->MediaTransmittanceTexture : this->MediaTexture)->GetTextureUnit());
-      program->SetUniformi("HasMediaTransmittance", mediaTransmittance ? 1 : 0);
-      const int boxes = static_cast<int>(mediaBoxes.size() / 6);
-      std::vector<float> lo, hi;
-      for (int k = 0; k < boxes; ++k)
+    // The airlight lattice (Downsampling > 1): for a group with lights, two
+    // cells in each direction at least; the run statistics are per pixel.
+    // Not for shadowed or textured lights: a shadow or a slat's shaft
+    // narrower than a cell can fall between the nodes, and nothing in the
+    // classification would see it.
+    const int cells[2] = { w >= 2 ? (w - 2) / this->Downsampling + 1 : 0,
+      h >= 2 ? (h - 2) / this->Downsampling + 1 : 0 };
+    const bool lattice = this->Downsampling > 1 && group.Count > 0 && group.Shadows == 0 &&
+      !group.AnyTexture && this->MarchSteps == 0 && !this->ShadowRunStatistics && cells[0] >= 2 &&
+      cells[1] >= 2;
+    // 4. Uniforms (the same for every program of the group) and the passes.
+    auto setUniforms = [&](vtkShaderProgram* program) {
+      program->SetUniformi("SceneColor", this->ColorTexture->GetTextureUnit());
+      program->SetUniformi("SceneDepth", this->DepthTexture->GetTextureUnit());
+      program->SetUniformi("Table", this->TableTexture->GetTextureUnit());
+      program->SetUniformi("TableSize", this->UploadedTableResolution);
+      if (media)
       {
-        lo.insert(lo.end(), &mediaBoxes[6 * k], &mediaBoxes[6 * k + 3]);
-        hi.insert(hi.end(), &mediaBoxes[6 * k + 3], &mediaBoxes[6 * k + 6]);
+        program->SetUniformi("MediaLayer", this->MediaTexture->GetTextureUnit());
+        // (without the depth before the media, the sampler still needs a valid unit)
+        program->SetUniformi("MediaDepth",
+          (mediaDepthTexture ? mediaDepthTexture : this->MediaTexture)->GetTextureUnit());
+        program->SetUniformi("HasMediaDepth", mediaDepthTexture ? 1 : 0);
+        program->SetUniformi("MediaTransmittance",
+          (mediaTransmittance ? this->MediaTransmittanceTexture : this->MediaTexture)->GetTextureUnit());
+        program->SetUniformi("HasMediaTransmittance", mediaTransmittance ? 1 : 0);
+        const int boxes = static_cast<int>(mediaBoxes.size() / 6);
+        std::vector<float> lo, hi;
+        for (int k = 0; k < boxes; ++k)
+        {
+          lo.insert(lo.end(), &mediaBoxes[6 * k], &mediaBoxes[6 * k + 3]);
+          hi.insert(hi.end(), &mediaBoxes[6 * k + 3], &mediaBoxes[6 * k + 6]);
+        }
+        program->SetUniformi("NumberOfMediaBoxes", boxes);
+        program->SetUniform1iv("MediaBoxCentred", boxes, mediaCentred.data());
+        program->SetUniform3fv("MediaBoxMin", boxes, reinterpret_cast<const float(*)[3]>(lo.data()));
+        program->SetUniform3fv("MediaBoxMax", boxes, reinterpret_cast<const float(*)[3]>(hi.data()));
+        plume::SetUniformMatrix4x4(program, "EyeToWorldPoint", inverseView->GetData());
       }
-      program->SetUniformi("NumberOfMediaBoxes", boxes);
-      program->SetUniform1iv("MediaBoxCentred", boxes, mediaCentred.data());
-      program->SetUniform3fv("MediaBoxMin", boxes, reinterpret_cast<const float(*)[3]>(lo.data()));
-      program->SetUniform3fv("MediaBoxMax", boxes, reinterpret_cast<const float(*)[3]>(hi.data()));
-      plume::SetUniformMatrix4x4(program, "EyeToWorldPoint", inverseView->GetData());
-    }
-    {
-      const double g = this->UploadedTableAnisotropy;
-      double k[6];
-      GetTableCoordinates(g, k);
-      const float stretch[2] = { static_cast<float>(k[0]), static_cast<float>(k[1]) };
-      const float rows[4] = { static_cast<float>(k[2]), static_cast<float>(k[3]), static_cast<float>(k[4]),
-        static_cast<float>(k[5]) };
-      program->SetUniform2f("PhaseStretch", stretch);
-      program->SetUniform4f("PhaseRows", rows);
-      if (this->MarchSteps > 0)
       {
-        program->SetUniformf("Anisotropy", static_cast<float>(g));
+        const double g = this->UploadedTableAnisotropy;
+        double k[6];
+        GetTableCoordinates(g, k);
+        const float stretch[2] = { static_cast<float>(k[0]), static_cast<float>(k[1]) };
+        const float rows[4] = { static_cast<float>(k[2]), static_cast<float>(k[3]), static_cast<float>(k[4]),
+          static_cast<float>(k[5]) };
+        program->SetUniform2f("PhaseStretch", stretch);
+        program->SetUniform4f("PhaseRows", rows);
+        if (this->MarchSteps > 0)
+        {
+          program->SetUniformf("Anisotropy", static_cast<float>(g));
+        }
       }
-    }
-    const float origin[2] = { static_cast<float>(x), static_cast<float>(y) };
-    program->SetUniform2f("ViewportOrigin", origin);
-    vtkNew<vtkMatrix4x4> inverse;
-    inverse->DeepCopy(camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0));
-    inverse->Invert();
-    plume::SetUniformMatrix4x4(program, "InverseProjection", inverse->GetData());
-    program->SetUniformi("Perspective", camera->GetParallelProjection() ? 0 : 1);
-    const float viewportSize[2] = { static_cast<float>(w), static_cast<float>(h) };
-    program->SetUniform2f("ViewportSize", viewportSize);
-    program->SetUniformi("Downsampling", this->Downsampling);
-    program->SetUniformf("UpsamplingTolerance", static_cast<float>(this->UpsamplingTolerance));
-    // The first group composites the attenuated surface; the others add airlight only.
-    program->SetUniformi("AirlightOnly", gi == 0 ? 0 : 1);
-    float ks[3], kt[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      ks[c] = static_cast<float>(this->Scattering[c]);
-      kt[c] = static_cast<float>(this->Scattering[c] + this->Absorption[c]);
-    }
-    program->SetUniform3f("KappaS", ks);
-    program->SetUniform3f("KappaT", kt);
-    const int n = group.Count;
-    const int l0 = group.First;
-    program->SetUniformi("NumberOfLights", n);
-    if (this->MarchSteps > 0)
-    {
-      double ktMin = HUGE_VAL;
+      const float origin[2] = { static_cast<float>(x), static_cast<float>(y) };
+      program->SetUniform2f("ViewportOrigin", origin);
+      vtkNew<vtkMatrix4x4> inverse;
+      inverse->DeepCopy(camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0));
+      inverse->Invert();
+      plume::SetUniformMatrix4x4(program, "InverseProjection", inverse->GetData());
+      program->SetUniformi("Perspective", camera->GetParallelProjection() ? 0 : 1);
+      const float viewportSize[2] = { static_cast<float>(w), static_cast<float>(h) };
+      program->SetUniform2f("ViewportSize", viewportSize);
+      // The first group composites the attenuated surface; the others add airlight only.
+      program->SetUniformi("AirlightOnly", gi == 0 ? 0 : 1);
+      float ks[3], kt[3];
       for (int c = 0; c < 3; ++c)
       {
-        if (kt[c] > 0)
-        {
-          ktMin = std::min(ktMin, static_cast<double>(kt[c]));
-        }
+        ks[c] = static_cast<float>(this->Scattering[c]);
+        kt[c] = static_cast<float>(this->Scattering[c] + this->Absorption[c]);
       }
-      program->SetUniformf("MarchFar", static_cast<float>(std::log(1e6) / ktMin));
-    }
-    if (n > 0)
-    {
-      program->SetUniform3fv("LightPosition", n, reinterpret_cast<const float(*)[3]>(&positions[3 * l0]));
-      program->SetUniform3fv("LightI0", n, reinterpret_cast<const float(*)[3]>(&intensities[3 * l0]));
-      if (group.AnySpot || group.Shadows > 0)
+      program->SetUniform3f("KappaS", ks);
+      program->SetUniform3f("KappaT", kt);
+      const int n = group.Count;
+      const int l0 = group.First;
+      program->SetUniformi("NumberOfLights", n);
+      if (this->MarchSteps > 0)
       {
-        program->SetUniform3fv("LightAxis", n, reinterpret_cast<const float(*)[3]>(&axes[3 * l0]));
-        program->SetUniform1fv("LightCosCone", n, &cosCones[l0]);
-        program->SetUniform1fv("LightExponent", n, &exponents[l0]);
-        program->SetUniformi("SpotSteps", this->SpotSteps);
-      }
-      if (group.AnyTexture)
-      {
-        program->SetUniformi("LightTextures", this->TextureAtlas->GetTextureUnit());
-        program->SetUniform4fv("LightTextureRect", n, reinterpret_cast<const float(*)[4]>(&textureRects[4 * l0]));
-        program->SetUniform3fv(
-          "LightTextureRight", n, reinterpret_cast<const float(*)[3]>(&textureRights[3 * l0]));
-        program->SetUniform3fv("LightTextureUp", n, reinterpret_cast<const float(*)[3]>(&textureUps[3 * l0]));
-      }
-      if (group.Shadows > 0)
-      {
-        // The shader's sampler slots count from the group's first map.
-        std::vector<int> local(n);
-        for (int k = 0; k < n; ++k)
+        double ktMin = HUGE_VAL;
+        for (int c = 0; c < 3; ++c)
         {
-          local[k] = shadowIndex[l0 + k] >= 0 ? shadowIndex[l0 + k] - group.FirstShadow : -1;
-        }
-        program->SetUniform1iv("LightShadow", n, local.data());
-        program->SetUniformi("ShadowSteps", this->ShadowSteps);
-        program->SetUniformi("ShadowMinMax", this->ShadowMinMax ? 1 : 0);
-        program->SetUniformi("ShadowRunStatistics", this->ShadowRunStatistics ? 1 : 0);
-        // Cube faces are world-axis aligned: the shader picks one by the world direction.
-        double eyeToWorld[9];
-        for (int i = 0; i < 3; ++i)
-        {
-          for (int j = 0; j < 3; ++j)
+          if (kt[c] > 0)
           {
-            eyeToWorld[3 * i + j] = inverseView->GetElement(i, j);
+            ktMin = std::min(ktMin, static_cast<double>(kt[c]));
           }
         }
-        plume::SetUniformMatrix3x3(program, "EyeToWorld", eyeToWorld);
-        for (int k = 0; k < group.Shadows; ++k)
+        program->SetUniformf("MarchFar", static_cast<float>(std::log(1e6) / ktMin));
+      }
+      if (n > 0)
+      {
+        program->SetUniform3fv("LightPosition", n, reinterpret_cast<const float(*)[3]>(&positions[3 * l0]));
+        program->SetUniform3fv("LightI0", n, reinterpret_cast<const float(*)[3]>(&intensities[3 * l0]));
+        if (group.AnySpot || group.Shadows > 0)
         {
-          const int m = group.FirstShadow + k;
-          const std::string ks2 = std::to_string(k);
-          this->ShadowMaps[m]->MinMax->Activate();
-          program->SetUniformi(("ShadowMap" + ks2).c_str(), this->ShadowMaps[m]->MinMax->GetTextureUnit());
-          for (int f = 0; f < 6; ++f)
+          program->SetUniform3fv("LightAxis", n, reinterpret_cast<const float(*)[3]>(&axes[3 * l0]));
+          program->SetUniform1fv("LightCosCone", n, &cosCones[l0]);
+          program->SetUniform1fv("LightExponent", n, &exponents[l0]);
+          program->SetUniformi("SpotSteps", this->SpotSteps);
+        }
+        if (group.AnyTexture)
+        {
+          program->SetUniformi("LightTextures", this->TextureAtlas->GetTextureUnit());
+          program->SetUniform4fv("LightTextureRect", n, reinterpret_cast<const float(*)[4]>(&textureRects[4 * l0]));
+          program->SetUniform3fv(
+            "LightTextureRight", n, reinterpret_cast<const float(*)[3]>(&textureRights[3 * l0]));
+          program->SetUniform3fv("LightTextureUp", n, reinterpret_cast<const float(*)[3]>(&textureUps[3 * l0]));
+        }
+        if (group.Shadows > 0)
+        {
+          // The shader's sampler slots count from the group's first map.
+          std::vector<int> local(n);
+          for (int k = 0; k < n; ++k)
           {
-            plume::SetUniformMatrix4x4(program, ("ShadowMatrix" + ks2 + "[" + std::to_string(f) + "]").c_str(),
-              &shadowMatrices[16 * (6 * m + f)]);
+            local[k] = shadowIndex[l0 + k] >= 0 ? shadowIndex[l0 + k] - group.FirstShadow : -1;
           }
-          program->SetUniform2f(("ShadowRange" + ks2).c_str(), &shadowRanges[2 * m]);
-          program->SetUniformi(("ShadowFaces" + ks2).c_str(), shadowFaces[m]);
-          program->SetUniform3f(("ShadowLight" + ks2).c_str(), &shadowLights[3 * m]);
-          const ShadowMap* sm = this->ShadowMaps[m];
-          const int mapSize[2] = { sm->Faces == 6 ? 3 * sm->Size : sm->Size, sm->Faces == 6 ? 2 * sm->Size : sm->Size };
-          program->SetUniform2i(("ShadowSize" + ks2).c_str(), mapSize);
-          program->SetUniformi(("ShadowTop" + ks2).c_str(), sm->Top);
+          program->SetUniform1iv("LightShadow", n, local.data());
+          program->SetUniformi("ShadowSteps", this->ShadowSteps);
+          program->SetUniformi("ShadowMinMax", this->ShadowMinMax ? 1 : 0);
+          program->SetUniformi("ShadowRunStatistics", this->ShadowRunStatistics ? 1 : 0);
+          // Cube faces are world-axis aligned: the shader picks one by the world direction.
+          double eyeToWorld[9];
+          for (int i = 0; i < 3; ++i)
+          {
+            for (int j = 0; j < 3; ++j)
+            {
+              eyeToWorld[3 * i + j] = inverseView->GetElement(i, j);
+            }
+          }
+          plume::SetUniformMatrix3x3(program, "EyeToWorld", eyeToWorld);
+          for (int k = 0; k < group.Shadows; ++k)
+          {
+            const int m = group.FirstShadow + k;
+            const std::string ks2 = std::to_string(k);
+            this->ShadowMaps[m]->MinMax->Activate();
+            program->SetUniformi(("ShadowMap" + ks2).c_str(), this->ShadowMaps[m]->MinMax->GetTextureUnit());
+            for (int f = 0; f < 6; ++f)
+            {
+              plume::SetUniformMatrix4x4(program, ("ShadowMatrix" + ks2 + "[" + std::to_string(f) + "]").c_str(),
+                &shadowMatrices[16 * (6 * m + f)]);
+            }
+            program->SetUniform2f(("ShadowRange" + ks2).c_str(), &shadowRanges[2 * m]);
+            program->SetUniformi(("ShadowFaces" + ks2).c_str(), shadowFaces[m]);
+            program->SetUniform3f(("ShadowLight" + ks2).c_str(), &shadowLights[3 * m]);
+            const ShadowMap* sm = this->ShadowMaps[m];
+            const int mapSize[2] = { sm->Faces == 6 ? 3 * sm->Size : sm->Size, sm->Faces == 6 ? 2 * sm->Size : sm->Size };
+            program->SetUniform2i(("ShadowSize" + ks2).c_str(), mapSize);
+            program->SetUniformi(("ShadowTop" + ks2).c_str(), sm->Top);
+          }
         }
       }
-    }
-
+    };
     ostate->vtkglEnable(GL_DEPTH_TEST);
     ostate->vtkglDepthFunc(GL_ALWAYS);
-    const bool low = this->Downsampling > 1 && this->LowTexture;
-    if (low)
+    auto blendGroup = [&]() {
+      if (gi == 0)
+      {
+        ostate->vtkglDisable(GL_BLEND);
+      }
+      else
+      {
+        // The single-scattering airlight is a sum over lights: later groups add
+        // theirs to the colour and keep the alpha.
+        ostate->vtkglEnable(GL_BLEND);
+        ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+      }
+    };
+    if (!lattice)
     {
-      // The group's airlight alone at one sample per Downsampling^2 pixels.
-      ostate->vtkglDisable(GL_BLEND);
-      const int lw = static_cast<int>(this->LowTexture->GetWidth());
-      const int lh = static_cast<int>(this->LowTexture->GetHeight());
-      ostate->PushFramebufferBindings();
-      this->LowFrameBuffer->Bind();
-      this->LowFrameBuffer->AddColorAttachment(0, this->LowTexture);
-      this->LowFrameBuffer->ActivateDrawBuffers(1);
-      ostate->vtkglViewport(0, 0, lw, lh);
-      ostate->vtkglScissor(0, 0, lw, lh);
-      program->SetUniformi("Mode", 1);
+      vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, AirlightSource(), features);
+      if (!quad)
+      {
+        vtkErrorMacro("Could not build the airlight shader program.");
+        break;
+      }
+      setUniforms(quad->Program);
+      blendGroup();
+      ostate->vtkglViewport(x, y, w, h);
+      ostate->vtkglScissor(x, y, w, h);
       quad->Render();
-      this->LowFrameBuffer->RemoveColorAttachments(1);
-      ostate->PopFramebufferBindings();
-      this->LowTexture->Activate();
-      program->SetUniformi("LowRes", this->LowTexture->GetTextureUnit());
     }
-    if (gi == 0)
+    else if (!this->RenderLattice(renWin, features, setUniforms, blendGroup, cells, x, y, w, h,
+               camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0),
+               &positions[3 * group.First], &axes[3 * group.First], &cosCones[group.First], group.Count))
     {
-      ostate->vtkglDisable(GL_BLEND);
-    }
-    else
-    {
-      // The single-scattering airlight is a sum over lights: later groups add
-      // theirs to the colour and keep the alpha.
-      ostate->vtkglEnable(GL_BLEND);
-      ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
-    }
-    program->SetUniformi("Mode", low ? 2 : 0);
-    ostate->vtkglViewport(x, y, w, h);
-    ostate->vtkglScissor(x, y, w, h);
-    quad->Render();
-    if (low)
-    {
-      this->LowTexture->Deactivate();
+      vtkErrorMacro("Could not build the airlight lattice's shader programs.");
+      break;
     }
     for (int k = 0; k < group.Shadows; ++k)
     {
@@ -1684,12 +1704,181 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vtkPlumeShaderFeatures& base,
+  const std::function<void(vtkShaderProgram*)>& setUniforms, const std::function<void()>& blendGroup,
+  const int cells[2], int x, int y, int w, int h, vtkMatrix4x4* projection, const float* lights,
+  const float* axes, const float* cosCones, int count)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  const int D = this->Downsampling;
+  const int nodes[2] = { cells[0] + 1, cells[1] + 1 };
+  auto latticeUniforms = [&](vtkShaderProgram* program) {
+    setUniforms(program);
+    program->SetUniformi("Lattice", D);
+    program->SetUniform2i("LatticeCellCount", cells);
+    program->SetUniformi("LatticeNodes", this->LowTexture->GetTextureUnit());
+    program->SetUniformi("LatticeCells", this->CellTexture->GetTextureUnit());
+  };
+  auto into = [&](vtkTextureObject* target, const int size[2]) {
+    this->LowFrameBuffer->Bind();
+    this->LowFrameBuffer->AddColorAttachment(0, target);
+    this->LowFrameBuffer->ActivateDrawBuffers(1);
+    this->LowFrameBuffer->ActivateReadBuffer(0);
+    ostate->vtkglViewport(0, 0, size[0], size[1]);
+    ostate->vtkglScissor(0, 0, size[0], size[1]);
+  };
+  ostate->vtkglDisable(GL_BLEND);
+  this->LowTexture->Activate();
+  this->CellTexture->Activate();
+  ostate->PushFramebufferBindings();
+
+  // 1. The nodes' airlight (light code), read back for the frame's airlight range.
+  vtkPlumeShaderFeatures f = base;
+  f.Enable("LATTICE_NODES");
+  vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
+  if (!quad)
+  {
+    ostate->PopFramebufferBindings();
+    return false;
+  }
+  latticeUniforms(quad->Program);
+  into(this->LowTexture, nodes);
+  quad->Render();
+  std::vector<float> values(static_cast<size_t>(nodes[0]) * nodes[1] * 4);
+  glReadPixels(0, 0, nodes[0], nodes[1], GL_RGBA, GL_FLOAT, values.data());
+  float lo = HUGE_VALF, hi = -HUGE_VALF;
+  for (size_t k = 0; k < values.size(); ++k)
+  {
+    if (k % 4 != 3 && std::isfinite(values[k]))
+    {
+      lo = std::min(lo, values[k]);
+      hi = std::max(hi, values[k]);
+    }
+  }
+  // The error goal is relative to the airlight image's range; an 8-bit window
+  // shows at most 1 of it (a light in view can make the range huge).
+  const double range = hi > lo ? std::min(static_cast<double>(hi - lo), 1.0) : 0.0;
+
+  // 2. The cells to refine (no light code).
+  f = base;
+  f.Enable("LATTICE_CLASSIFY").Enable("NO_LIGHTS");
+  quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
+  if (!quad)
+  {
+    ostate->PopFramebufferBindings();
+    return false;
+  }
+  latticeUniforms(quad->Program);
+  quad->Program->SetUniformf("LatticeTolerance", static_cast<float>(this->UpsamplingTolerance * range));
+  quad->Program->SetUniformf("LatticeDepthTolerance", static_cast<float>(LatticeDepthTolerance));
+  std::vector<float> pixels(3 * std::max(count, 1), 0.0f);
+  for (int l = 0; l < count; ++l)
+  {
+    // the light's viewport pixel (index units), and whether it is in front of the eye
+    double p[4] = { lights[3 * l], lights[3 * l + 1], lights[3 * l + 2], 1.0 };
+    projection->MultiplyPoint(p, p);
+    if (p[3] > 0.0 && lights[3 * l + 2] < 0.0)
+    {
+      for (int k = 0; k < 2; ++k)
+      {
+        const double q = (p[k] / p[3] * 0.5 + 0.5) * (k == 0 ? w : h) - 0.5;
+        pixels[3 * l + k] = static_cast<float>(std::max(-1e6, std::min(q, 1e6)));
+      }
+      pixels[3 * l + 2] = 1.0f;
+    }
+  }
+  quad->Program->SetUniform3fv("LightPixel", std::max(count, 1), reinterpret_cast<const float(*)[3]>(pixels.data()));
+  // Narrow spots (cone below NarrowSpotAngle): the image of their axis from
+  // the apex to the far plane, clipped to the near plane (far away: none).
+  std::vector<float> shafts(4 * std::max(count, 1), 1e6f);
+  const double nearZ = -std::abs(projection->GetElement(2, 3) / (projection->GetElement(2, 2) - 1.0));
+  for (int l = 0; l < count; ++l)
+  {
+    if (!(cosCones[l] > std::cos(vtkMath::RadiansFromDegrees(NarrowSpotAngle))))
+    {
+      continue;
+    }
+    glm::dvec3 a(lights[3 * l], lights[3 * l + 1], lights[3 * l + 2]);
+    glm::dvec3 b = a + 1e6 * glm::dvec3(axes[3 * l], axes[3 * l + 1], axes[3 * l + 2]);
+    const double zMax = std::isfinite(nearZ) && nearZ < 0 ? nearZ * 1.001 : -1e-6;
+    if (a.z > zMax && b.z > zMax)
+    {
+      continue; // behind the eye
+    }
+    if (a.z > zMax)
+    {
+      a += (b - a) * ((a.z - zMax) / (a.z - b.z));
+    }
+    else if (b.z > zMax)
+    {
+      b += (a - b) * ((b.z - zMax) / (b.z - a.z));
+    }
+    for (int e = 0; e < 2; ++e)
+    {
+      const glm::dvec3& q = e == 0 ? a : b;
+      double p[4] = { q.x, q.y, q.z, 1.0 };
+      projection->MultiplyPoint(p, p);
+      for (int k = 0; k < 2; ++k)
+      {
+        const double v = (p[k] / p[3] * 0.5 + 0.5) * (k == 0 ? w : h) - 0.5;
+        shafts[4 * l + 2 * e + k] = static_cast<float>(std::max(-1e6, std::min(v, 1e6)));
+      }
+    }
+  }
+  quad->Program->SetUniform4fv("LightShaft", std::max(count, 1), reinterpret_cast<const float(*)[4]>(shafts.data()));
+  into(this->CellTexture, cells);
+  quad->Render();
+  std::vector<float> refined(static_cast<size_t>(cells[0]) * cells[1]);
+  glReadPixels(0, 0, cells[0], cells[1], GL_RED, GL_FLOAT, refined.data());
+  this->LastRefinedCellFraction =
+    std::count_if(refined.begin(), refined.end(), [](float v) { return v != 0.0f; }) / double(refined.size());
+  this->LowFrameBuffer->RemoveColorAttachments(1);
+  ostate->PopFramebufferBindings();
+
+  // 3. The frame: interpolated airlight, none in refined cells (no light code).
+  f = base;
+  f.Enable("LATTICE_RESOLVE").Enable("NO_LIGHTS");
+  quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
+  if (!quad)
+  {
+    return false;
+  }
+  latticeUniforms(quad->Program);
+  blendGroup();
+  ostate->vtkglViewport(x, y, w, h);
+  ostate->vtkglScissor(x, y, w, h);
+  quad->Render();
+
+  // 4. The refined cells' exact airlight, added (one quad per cell, the
+  // interpolated ones collapsed by the vertex shader).
+  f = base;
+  f.Enable("LATTICE_REFINE");
+  vtkShaderProgram* program = this->Programs->Ready(renWin, vtkPlumeLatticeCellsVS, nullptr, AirlightSource(), f);
+  if (!program)
+  {
+    return false;
+  }
+  latticeUniforms(program);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  ostate->vtkglDepthMask(GL_FALSE);
+  this->EmptyVAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 6 * cells[0] * cells[1]);
+  this->EmptyVAO->Release();
+  this->LowTexture->Deactivate();
+  this->CellTexture->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->Programs->ReleaseGraphicsResources(w);
   for (vtkTextureObject** t :
-    { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->LowTexture, &this->MediaTexture,
+    { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->LowTexture, &this->CellTexture,
+      &this->MediaTexture,
       &this->MediaTransmittanceTexture, &this->TextureAtlas })
   {
     if (*t)
@@ -1698,6 +1887,7 @@ void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
       *t = nullptr;
     }
   }
+  this->EmptyVAO->ReleaseGraphicsResources();
   this->UploadedTableResolution = 0;
   this->TextureAtlasKey.clear();
   for (ShadowMap* m : this->ShadowMaps)

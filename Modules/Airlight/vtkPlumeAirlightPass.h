@@ -106,6 +106,7 @@
 #include "vtkTimeStamp.h"                // For vtkTimeStamp
 #include "vtkPlumeShaderProgramCache.h" // For Programs
 
+#include <functional> // For std::function
 #include <string>  // For std::string
 #include <utility> // For std::pair
 #include <vector>  // For std::vector
@@ -114,6 +115,10 @@ class vtkImageData;
 class vtkInformationDoubleVectorKey;
 class vtkInformationObjectBaseKey;
 class vtkLight;
+class vtkMatrix4x4;
+class vtkOpenGLVertexArrayObject;
+class vtkPlumeShaderFeatures;
+class vtkShaderProgram;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkPlumeParameterTable;
@@ -207,13 +212,25 @@ public:
 
   ///@{
   /**
-   * Airlight resolution divisor D: 1 computes the airlight at every pixel
-   * (the accurate option); D > 1 computes it once per D x D pixels into a
-   * low-resolution buffer and upsamples it with error control: a pixel takes
-   * the bilinear interpolation of its four samples only if all four lie on
-   * its surface (distance within 2 %) and differ by at most
-   * UpsamplingTolerance of the largest, else it is computed exactly
-   * (silhouettes, glows, cone and shadow edges). Default 1.
+   * The airlight lattice, one node every D pixels: 1 evaluates the airlight
+   * at every pixel; D > 1 evaluates it first on the rays through pixels
+   * (i D, j D) (the last row and column at the viewport's edge), then
+   * classifies each cell of D x D pixels between four nodes. A cell is
+   * interpolated bilinearly only if (1) the nodes' second differences at its
+   * corners estimate the interpolation error, (|f_xx| + |f_yy|) D^2 / 8,
+   * within UpsamplingTolerance of the frame's airlight range (the nodes'
+   * max - min, at most 1) in every channel; (2) every pixel lies on the
+   * surface its corners predict (window depth bilinear between them, exact
+   * on a plane, within 0.1 % in eye depth; or all without a surface): no
+   * silhouette, no object smaller than a cell; (3) no light projects into
+   * the cell or its eight neighbours (a glow peaks between nodes), nor the
+   * axis of a spot narrower than 10 degrees within 1.5 cells (its shaft can
+   * pass between nodes); and (4)
+   * no translucent medium covers one of its pixels. Every pixel of the other
+   * cells is evaluated exactly, in a pass drawn over those cells only
+   * (vtkPlumeLatticeCellsVS). Lights that cast shadows or project an image
+   * are always evaluated at every pixel: a shadow or a shaft narrower than a
+   * cell could fall between the nodes. Clamped to 1..8. Default 8.
    */
   vtkSetClampMacro(Downsampling, int, 1, 8);
   vtkGetMacro(Downsampling, int);
@@ -221,13 +238,20 @@ public:
 
   ///@{
   /**
-   * With Downsampling > 1: the largest relative spread (max - min) / max of
-   * the four low-resolution samples, per channel, that is interpolated; 0
-   * computes every pixel exactly. Default 0.05.
+   * With Downsampling > 1: the largest estimated interpolation error the
+   * lattice accepts in a cell, as a fraction of the frame's airlight range
+   * (clamped to 1, what an 8-bit window shows); 0 evaluates every pixel.
+   * Default 0.005.
    */
   vtkSetClampMacro(UpsamplingTolerance, double, 0.0, 1.0);
   vtkGetMacro(UpsamplingTolerance, double);
   ///@}
+
+  /**
+   * The fraction of the airlight lattice's cells refined (evaluated at every
+   * pixel) in the last frame's last light group; 0 without a lattice.
+   */
+  vtkGetMacro(LastRefinedCellFraction, double);
 
   ///@{
   /**
@@ -331,8 +355,8 @@ public:
    * At most this many lights are shadowed per light group, i.e. per shader
    * pass (one shadow-map sampler each: GLSL 1.50 cannot index samplers
    * dynamically): 8, the number of lights a group holds, so every light can
-   * be shadowed. A driver with fewer than 12 fragment texture units (GL 3.2
-   * guarantees 16) lowers it to the units left after the pass's 4 others and
+   * be shadowed. A driver with fewer than 13 fragment texture units (GL 3.2
+   * guarantees 16) lowers it to the units left after the pass's 5 others and
    * a shadowed light beyond it opens a new group; only a driver with no unit
    * left renders shadowed lights unshadowed, with a warning.
    */
@@ -439,8 +463,8 @@ protected:
   double IntensityScale = 1.0;
   double ScatteringAnisotropy = 0.0;
   int SpotSteps = 8;
-  int Downsampling = 1;
-  double UpsamplingTolerance = 0.05;
+  int Downsampling = 8;
+  double UpsamplingTolerance = 0.005;
   int TableResolution = 64;
   int MarchSteps = 0;
   bool Shadows = true;
@@ -493,7 +517,19 @@ protected:
   vtkTextureObject* DepthTexture = nullptr;
   vtkTextureObject* TableTexture = nullptr;
   vtkOpenGLFramebufferObject* LowFrameBuffer = nullptr; // Downsampling > 1
-  vtkTextureObject* LowTexture = nullptr;
+  vtkTextureObject* LowTexture = nullptr;  // the lattice nodes' airlight (RGBA32F)
+  vtkTextureObject* CellTexture = nullptr; // per lattice cell: 1 refined, 0 interpolated (R32F)
+  vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO; // the refined cells' quads come from gl_VertexID
+  double LastRefinedCellFraction = 0.0;
+  // One light group's airlight on the lattice (Downsampling > 1): nodes, cell
+  // classification, the frame with the interpolated airlight, the refined
+  // cells' exact airlight. `lights`, `axes`, `cosCones`: the group's eye
+  // positions, spot axes and cos(cone) (-2: a point light). False if a
+  // program does not build.
+  bool RenderLattice(vtkOpenGLRenderWindow* renWin, const vtkPlumeShaderFeatures& base,
+    const std::function<void(vtkShaderProgram*)>& setUniforms, const std::function<void()>& blendGroup,
+    const int cells[2], int x, int y, int w, int h, vtkMatrix4x4* projection, const float* lights,
+    const float* axes, const float* cosCones, int count);
   vtkTextureObject* MediaTexture = nullptr; // translucent media's premultiplied layer
   vtkTextureObject* MediaTransmittanceTexture = nullptr; // the media over 1: minus the layer, their RGB transmittance
   int UploadedTableResolution = 0;

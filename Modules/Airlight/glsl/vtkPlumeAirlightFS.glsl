@@ -26,13 +26,24 @@ uniform vec2 ViewportOrigin;  // window pixels of the viewport's lower-left corn
 uniform mat4 InverseProjection; // NDC -> eye coordinates
 uniform int Perspective;      // 1: rays start at the eye; 0: at the near plane
 uniform vec2 ViewportSize;    // w, h of the full-resolution viewport
-// Mode 0: full resolution; 1: the airlight alone into the low-resolution
-// target (one sample per Downsampling^2 pixels); 2: the frame, the airlight
-// upsampled from LowRes where that is safe (see main).
-uniform int Mode;
-uniform int Downsampling;
-uniform sampler2D LowRes;
-uniform float UpsamplingTolerance;
+// The airlight lattice (vtkPlumeAirlightPass::Downsampling D > 1), four
+// passes per light group (see main): LATTICE_NODES evaluates the airlight on
+// the rays through pixels (i D, j D) (the last node of a row or column at the
+// viewport's last pixel); LATTICE_CLASSIFY marks each cell of D x D pixels
+// between four nodes that must be refined; LATTICE_RESOLVE (no light code)
+// writes the frame with the nodes' bilinear interpolation in the other cells
+// and no airlight in refined ones; LATTICE_REFINE (drawn by the lattice cells'
+// vertex shader over refined cells only) adds their exact airlight.
+uniform int Lattice;               // D
+uniform ivec2 LatticeCellCount;    // cells per row and column (nodes: one more)
+uniform sampler2D LatticeNodes;    // RGB: the nodes' airlight
+uniform sampler2D LatticeCells;    // R: 0 interpolated, 1 refined
+uniform float LatticeTolerance;    // the largest estimated interpolation error (absolute)
+uniform float LatticeDepthTolerance; // relative eye-depth mismatch that marks a surface edge
+//PLUME::IF LATTICE_CLASSIFY
+uniform vec3 LightPixel[NUMBER_OF_LIGHTS]; // the lights' viewport pixel and 1 if in front of the eye
+uniform vec4 LightShaft[NUMBER_OF_LIGHTS]; // a narrow spot's axis on the viewport: pixels (x0, y0), (x1, y1)
+//PLUME::ENDIF
 // 0: the frame (surface attenuated + airlight); 1: the airlight alone, for a
 // light group after the first, blended additively onto the frame.
 uniform int AirlightOnly;
@@ -809,6 +820,140 @@ float viewRay(ivec2 pixel, float depth, out vec3 o, out vec3 r)
   return xs;
 }
 
+// The lattice's node (i, j) is the ray through this pixel.
+ivec2 nodePixel(ivec2 node)
+{
+  return min(node * Lattice, ivec2(ViewportSize) - 1);
+}
+
+// The cell holding viewport pixel `pixel` (the last cell of a row or column
+// also holds the viewport's last pixel).
+ivec2 cellOf(ivec2 pixel)
+{
+  return min(pixel / Lattice, LatticeCellCount - 1);
+}
+
+// The nodes' airlight at `pixel`, bilinear between its cell's four nodes: one
+// filtered fetch at the node coordinate (cell + fraction; the last cell of a
+// row or column is narrower).
+vec3 interpolatedAirlight(ivec2 pixel)
+{
+  ivec2 c = cellOf(pixel);
+  vec2 p0 = vec2(nodePixel(c));
+  vec2 f = (vec2(pixel) - p0) / (vec2(nodePixel(c + 1)) - p0);
+  return textureLod(LatticeNodes, (vec2(c) + f + 0.5) / vec2(LatticeCellCount + 1), 0.0).rgb;
+}
+
+//PLUME::IF LATTICE_CLASSIFY
+// |second difference| of the nodes' airlight along `axis` at node n, centred
+// one node inwards at the lattice's border (the nodes n - axis, n, n + axis).
+vec3 secondDifference(ivec2 n, ivec2 axis)
+{
+  int i = axis.x == 1 ? n.x : n.y;
+  int last = axis.x == 1 ? LatticeCellCount.x : LatticeCellCount.y; // the last node
+  ivec2 c = n + axis * (clamp(i, 1, last - 1) - i);
+  vec3 a = texelFetch(LatticeNodes, c - axis, 0).rgb;
+  vec3 b = texelFetch(LatticeNodes, c, 0).rgb;
+  vec3 d = texelFetch(LatticeNodes, c + axis, 0).rgb;
+  return abs(a - 2.0 * b + d);
+}
+
+// The eye-space z of the point at pixel `pixel` and window depth `depth`.
+float eyeZ(ivec2 pixel, float depth)
+{
+  vec2 ndc = (vec2(pixel) + 0.5) / ViewportSize * 2.0 - 1.0;
+  vec4 p = InverseProjection * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+  return p.z / p.w;
+}
+
+// 1 if cell `cell` must be refined (every pixel evaluated exactly), else 0.
+// Bilinear interpolation errs by about (|f_xx| + |f_yy|) D^2 / 8 inside the
+// cell; the nodes' second differences estimate f_xx D^2 and f_yy D^2 at its
+// corners. The cell is interpolated only if that estimate is within
+// LatticeTolerance in every channel at all four corners, no light projects
+// into the cell or its neighbours (the glow's peak falls between nodes), and
+// every pixel lies on the surface its corners predict: all without a surface,
+// or all on one whose window depth, bilinear between the corners (exact for a
+// plane: window depth is affine in the window's x and y), gives its eye depth
+// within LatticeDepthTolerance (silhouettes, objects smaller than a cell).
+float classifyCell(ivec2 cell)
+{
+  ivec2 p0 = nodePixel(cell);
+  ivec2 p1 = nodePixel(cell + 1);
+  for (int l = 0; l < NumberOfLights; ++l)
+  {
+    vec2 q = LightPixel[l].xy;
+    if (LightPixel[l].z > 0.0 && all(greaterThan(q, vec2(p0 - Lattice))) && all(lessThan(q, vec2(p1 + Lattice))))
+    {
+      return 1.0;
+    }
+    // A narrow spot's shaft can pass between the nodes: the cells along its
+    // axis's image (within 1.5 cells of the cell's centre) are refined.
+    vec2 a = LightShaft[l].xy;
+    vec2 ab = LightShaft[l].zw - a;
+    vec2 centre = 0.5 * vec2(p0 + p1);
+    float t = clamp(dot(centre - a, ab) / max(dot(ab, ab), 1e-12), 0.0, 1.0);
+    if (length(centre - a - t * ab) <= 1.5 * float(Lattice))
+    {
+      return 1.0;
+    }
+  }
+  vec3 e = vec3(0.0);
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 n = cell + ivec2(k & 1, k >> 1);
+    e = max(e, secondDifference(n, ivec2(1, 0)) + secondDifference(n, ivec2(0, 1)));
+  }
+  if (any(greaterThan(e, vec3(8.0 * LatticeTolerance))))
+  {
+    return 1.0;
+  }
+  vec4 z = vec4(texelFetch(SceneDepth, p0, 0).r, texelFetch(SceneDepth, ivec2(p1.x, p0.y), 0).r,
+    texelFetch(SceneDepth, ivec2(p0.x, p1.y), 0).r, texelFetch(SceneDepth, p1, 0).r);
+  bvec4 none = greaterThanEqual(z, vec4(1.0));
+  if (any(none) && !all(none))
+  {
+    return 1.0;
+  }
+  // the cell's pixels (the last cell of a row or column: up to the viewport's edge)
+  ivec2 end = ivec2(cell.x == LatticeCellCount.x - 1 ? int(ViewportSize.x) : p1.x,
+    cell.y == LatticeCellCount.y - 1 ? int(ViewportSize.y) : p1.y);
+  vec2 size = vec2(p1 - p0);
+  for (int j = p0.y; j < end.y; ++j)
+  {
+    for (int i = p0.x; i < end.x; ++i)
+    {
+      ivec2 p = ivec2(i, j);
+      float d = texelFetch(SceneDepth, p, 0).r;
+//PLUME::IF MEDIA
+      // a translucent medium splits the ray: the nodes' airlight is of the whole ray
+      vec4 layer = texelFetch(MediaLayer, p, 0);
+      if (any(greaterThan(layer, vec4(0.0))))
+      {
+        return 1.0;
+      }
+//PLUME::ENDIF
+      if (none.x)
+      {
+        if (d < 1.0)
+        {
+          return 1.0;
+        }
+        continue;
+      }
+      vec2 f = (vec2(p - p0)) / size;
+      float predicted = mix(mix(z.x, z.y, f.x), mix(z.z, z.w, f.x), f.y);
+      float ze = eyeZ(p, d);
+      if (d >= 1.0 || abs(eyeZ(p, predicted) - ze) > LatticeDepthTolerance * abs(ze))
+      {
+        return 1.0;
+      }
+    }
+  }
+  return 0.0;
+}
+//PLUME::ENDIF
+
 void main()
 {
   // (The quad's texCoord is not needed, pixels come from gl_FragCoord; this
@@ -817,18 +962,22 @@ void main()
   {
     discard;
   }
-  ivec2 pixel = ivec2(gl_FragCoord.xy - ViewportOrigin);
   vec3 o, r;
-  if (Mode == 1)
-  {
-    // The low-resolution airlight: the ray of the full-resolution pixel at
-    // this sample's centre; alpha keeps its surface distance (-1: none).
-    ivec2 full = min(ivec2(gl_FragCoord.xy) * Downsampling + Downsampling / 2, ivec2(ViewportSize) - 1);
-    float xsLow = viewRay(full, texelFetch(SceneDepth, full, 0).r, o, r);
-    gl_FragDepth = 1.0;
-    gl_FragData[0] = vec4(airlightOf(o, r, xsLow), isinf(xsLow) ? -1.0 : xsLow);
-    return;
-  }
+#ifdef PLUME_FEATURE_LATTICE_NODES
+  // One lattice node per fragment of the nodes' target: the airlight of its
+  // ray over the whole ray (cells with a translucent medium are refined).
+  ivec2 node = nodePixel(ivec2(gl_FragCoord.xy));
+  float xsNode = viewRay(node, texelFetch(SceneDepth, node, 0).r, o, r);
+  gl_FragDepth = 1.0;
+  gl_FragData[0] = vec4(airlightOf(o, r, xsNode), 1.0);
+  return;
+#endif
+//PLUME::IF LATTICE_CLASSIFY
+  gl_FragDepth = 1.0;
+  gl_FragData[0] = vec4(classifyCell(ivec2(gl_FragCoord.xy)), 0.0, 0.0, 1.0);
+  return;
+//PLUME::ENDIF
+  ivec2 pixel = ivec2(gl_FragCoord.xy - ViewportOrigin);
   vec4 color = texelFetch(SceneColor, pixel, 0);
   float depth = texelFetch(SceneDepth, pixel, 0).r;
   gl_FragDepth = depth;
@@ -837,37 +986,17 @@ void main()
   vec3 transmittance = isinf(xs) ? vec3(0.0) : exp(-KappaT * xs);
   // A channel with kt = 0 keeps its colour even at infinity.
   transmittance = mix(transmittance, vec3(1.0), vec3(equal(KappaT, vec3(0.0))));
-  bool exact = true;
   vec3 airlight = vec3(0.0);
-  if (Mode == 2)
+#ifdef PLUME_FEATURE_LATTICE_RESOLVE
+  // Interpolated cells take the nodes' airlight; refined cells none here
+  // (LATTICE_REFINE adds theirs). Classification refines every cell with a
+  // translucent medium, so an interpolated pixel's ray is whole.
+  bool interpolated = texelFetch(LatticeCells, cellOf(pixel), 0).r == 0.0;
+  if (interpolated)
   {
-    // Joint bilateral upsampling with error control: the four low-resolution
-    // samples around the pixel are interpolated bilinearly only if all lie on
-    // the pixel's surface (distance within 2 %, or all without a surface) and
-    // their airlight differs by at most UpsamplingTolerance of the largest;
-    // otherwise (silhouettes, glows, shadow and cone edges) the pixel is exact.
-    vec2 g = (vec2(pixel) - float(Downsampling / 2)) / float(Downsampling);
-    ivec2 l0 = ivec2(floor(g));
-    vec2 f = g - vec2(l0);
-    ivec2 lmax = textureSize(LowRes, 0) - 1;
-    vec4 s00 = texelFetch(LowRes, clamp(l0, ivec2(0), lmax), 0);
-    vec4 s10 = texelFetch(LowRes, clamp(l0 + ivec2(1, 0), ivec2(0), lmax), 0);
-    vec4 s01 = texelFetch(LowRes, clamp(l0 + ivec2(0, 1), ivec2(0), lmax), 0);
-    vec4 s11 = texelFetch(LowRes, clamp(l0 + ivec2(1, 1), ivec2(0), lmax), 0);
-    vec4 dist = vec4(s00.a, s10.a, s01.a, s11.a);
-    bool sameSurface = isinf(xs) ? all(lessThan(dist, vec4(0.0)))
-                                 : all(lessThanEqual(abs(dist - vec4(xs)), vec4(0.02 * xs)));
-    vec3 hi = max(max(s00.rgb, s10.rgb), max(s01.rgb, s11.rgb));
-    vec3 lo = min(min(s00.rgb, s10.rgb), min(s01.rgb, s11.rgb));
-    if (sameSurface && all(lessThanEqual(hi - lo, UpsamplingTolerance * hi)))
-    {
-      airlight = mix(mix(s00.rgb, s10.rgb, f.x), mix(s01.rgb, s11.rgb, f.x), f.y);
-      exact = false;
-    }
+    airlight = interpolatedAirlight(pixel);
   }
-  // llvmpipe runs both sides of a divergent `if` for every pixel of a SIMD
-  // block (masked), so an `if (exact)` would cost the exact path everywhere;
-  // a loop whose trip count is 0 in every lane is skipped.
+#endif
   // A translucent medium at the pixel: the haze splits at xv (mediaSplit)
   // into the part in front of it (added) and behind it (dimmed by 1 - av).
   float xv = xs;
@@ -885,18 +1014,16 @@ void main()
     vec3 o2, r2;
     bool wroteDepth = HasMediaDepth == 1 && xs < 0.999 * viewRay(pixel, texelFetch(MediaDepth, pixel, 0).r, o2, r2);
     xv = wroteDepth ? xs : mediaSplit(o, r, xs, 1.0 - (tv.r + tv.g + tv.b) / 3.0);
-    exact = true; // the low-resolution airlight is of the whole ray
   }
 //PLUME::ENDIF
 #ifndef PLUME_FEATURE_NO_LIGHTS
-  for (int k = exact ? 0 : 1; k < 1; ++k)
-  {
-    airlight = airlightOf(o, r, xv);
-  }
+  airlight = airlightOf(o, r, xv);
 #endif
   vec3 mediumTransmittance = mix(exp(-KappaT * xv), vec3(1.0), vec3(equal(KappaT, vec3(0.0))));
   vec3 behind = vec3(0.0);
 #ifndef PLUME_FEATURE_NO_LIGHTS
+  // llvmpipe runs both sides of a divergent `if` for every pixel of a SIMD
+  // block (masked); a loop whose trip count is 0 in every lane is skipped.
   for (int k = xv < xs ? 0 : 1; k < 1; ++k)
   {
     // the ray from xv on, seen through the haze in front of xv
@@ -909,6 +1036,11 @@ void main()
   vec3 far = behind + clamp(color.rgb, 0.0, 1.0) * transmittance;
   vec3 result = airlight + clamp(layer.rgb, 0.0, 1.0) * mediumTransmittance + tv * far;
   airlight += tv * behind;
+#ifdef PLUME_FEATURE_LATTICE_REFINE
+  // a refined cell: its exact airlight, added to what LATTICE_RESOLVE wrote
+  gl_FragData[0] = vec4(airlight, 0.0);
+  return;
+#endif
   gl_FragData[0] = AirlightOnly == 1 ? vec4(airlight, 0.0) : vec4(result, 1.0);
 //PLUME::IF SHADOW
   if (ShadowRunStatistics == 1)

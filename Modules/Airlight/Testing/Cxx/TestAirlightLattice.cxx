@@ -1,0 +1,136 @@
+// Numeric test (no baseline) of vtkPlumeAirlightPass's airlight lattice
+// (Downsampling D > 1: the airlight on a node every D pixels, interpolated
+// bilinearly in cells the classification passes, every pixel evaluated in
+// the others) against the independent double-precision
+// vtkPlumeAirlightReference at every pixel: a room with a box and a sphere
+// (depth edges), a point light in view (its glow peaks between nodes) and a
+// spot light with exponent 2 whose cone edges cross the view, coloured haze.
+// At D = 8 (the coarsest) the whole image, the pixels at depth edges and the
+// pixels near the light's image meet the goal (RMS <= 0.5 %, max <=
+// 2 % of the airlight range); the lattice really interpolates (some cells,
+// not all, refined; the image differs from the per-pixel one). With a
+// thin occluder and shadows on, the frame is the per-pixel one.
+#include "plumeAirlightTestUtil.h"
+
+int TestAirlightLattice(int, char*[])
+{
+  int failures = 0;
+  const int W = 160, H = 120;
+  airtest::Scene s(W, H);
+  s.AddRoom();
+  s.AddPointLight(0.6, 2.2, -2.6, 1.0, 0.85, 0.6, 0.6);
+  const double sp[3] = { 2.5, 3.5, -1.5 }, sf[3] = { 0.5, 0.0, -1.5 };
+  s.AddSpotLight(sp, sf, 35.0, 2.0, 0.7, 0.8, 1.0, 1.0);
+  s.Pass->SetScattering(0.25, 0.2, 0.15);
+  s.Pass->SetAbsorption(0.02, 0.04, 0.08);
+  s.Pass->SetIntensityScale(30.0);
+  s.Camera(0.5, 1.6, 6.0, -0.3, 1.2, -2.0);
+
+  const airtest::FloatImage plain = s.RenderFloat(nullptr);
+  airtest::FloatImage air;
+  // Clamped to [0, 1] as the window shows them (the light's glow exceeds 1
+  // nearby: unclamped, the range would be 30 and every error tiny against it).
+  const airtest::FloatImage ref = s.Reference(plain, 1, &air);
+  auto render = [&s, &failures]() {
+    airtest::FloatImage image = s.RenderFloat(s.Pass);
+    PLUME_CHECK(!plume::test::HasNonFinite(image));
+    for (float& v : image.RGBA)
+    {
+      v = std::min(std::max(v, 0.0f), 1.0f);
+    }
+    return image;
+  };
+  s.Pass->SetDownsampling(1);
+  const airtest::FloatImage full = render();
+
+  // Depth-edge pixels: the surface distance (window depth) jumps to a
+  // 4-neighbour, or the surface ends. Near-light pixels: within 12 pixels of
+  // the point light's image.
+  double light[3] = { 0.6, 2.2, -2.6 };
+  s.Renderer->SetWorldPoint(light[0], light[1], light[2], 1.0);
+  s.Renderer->WorldToDisplay();
+  double lightPixel[3];
+  s.Renderer->GetDisplayPoint(lightPixel);
+  airtest::FloatImage edges = ref, nearLight = ref;
+  size_t edgeCount = 0, nearCount = 0;
+  for (int j = 0; j < H; ++j)
+  {
+    for (int i = 0; i < W; ++i)
+    {
+      const size_t p = static_cast<size_t>(j) * W + i;
+      bool edge = false;
+      for (int k = 0; k < 4; ++k)
+      {
+        const int ni = i + (k == 0) - (k == 1), nj = j + (k == 2) - (k == 3);
+        if (ni >= 0 && nj >= 0 && ni < W && nj < H)
+        {
+          const float a = plain.Depth[p], b = plain.Depth[static_cast<size_t>(nj) * W + ni];
+          edge = edge || (a < 1.0f) != (b < 1.0f) || std::fabs(a - b) > 2e-3f;
+        }
+      }
+      const bool near = std::hypot(i + 0.5 - lightPixel[0], j + 0.5 - lightPixel[1]) <= 12.0;
+      edgeCount += edge;
+      nearCount += near;
+      for (int c = 0; c < 4; ++c)
+      {
+        if (!edge)
+        {
+          edges.RGBA[4 * p + c] = NAN;
+        }
+        if (!near)
+        {
+          nearLight.RGBA[4 * p + c] = NAN;
+        }
+      }
+    }
+  }
+  std::cout << edgeCount << " depth-edge pixels, " << nearCount << " pixels near the light at (" << lightPixel[0]
+            << ", " << lightPixel[1] << ")\n";
+  PLUME_CHECK(edgeCount > 200);
+  PLUME_CHECK(nearCount > 300);
+
+  for (int d : { 1, 2, 4, 8 })
+  {
+    s.Pass->SetDownsampling(d);
+    const airtest::FloatImage image = render();
+    PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
+    const airtest::Error all = airtest::Compare(image, ref, air);
+    const airtest::Error edge = airtest::Compare(image, edges, air);
+    const airtest::Error near = airtest::Compare(image, nearLight, air);
+    const airtest::Error vsFull = airtest::Compare(image, full, air);
+    std::cout << "downsampling " << d << ", refined cells " << s.Pass->GetLastRefinedCellFraction() << ":\n";
+    // the subsets' errors in units of the whole image's airlight range
+    const double edgeMax = edge.Max * edge.Range / all.Range, nearMax = near.Max * near.Range / all.Range;
+    airtest::Print("  all pixels", all);
+    std::cout << "  depth edges: max " << 100 * edgeMax << " % (at " << edge.MaxX << ", " << edge.MaxY
+              << "); near the light: max " << 100 * nearMax << " % (at " << near.MaxX << ", " << near.MaxY << ")\n";
+    airtest::Print("  against the per-pixel pass", vsFull);
+    airtest::Dump(image, "lattice " + std::to_string(d));
+    PLUME_CHECK(all.Range > 0.9);
+    PLUME_CHECK(all.RMS <= 0.005);
+    PLUME_CHECK(all.Max <= 0.02);
+    PLUME_CHECK(edgeMax <= 0.02);
+    PLUME_CHECK(nearMax <= 0.02);
+    if (d > 1)
+    {
+      PLUME_CHECK(s.Pass->GetLastRefinedCellFraction() > 0.0);
+      PLUME_CHECK(s.Pass->GetLastRefinedCellFraction() < 0.9);
+      PLUME_CHECK(vsFull.Max > 1e-6); // some pixels really are interpolated
+    }
+  }
+
+  // Shadowed lights stay off the lattice: a thin pole's shadow shaft (about
+  // 2 pixels wide here) can fall between nodes, where no classification rule
+  // would see it. The default frame equals the per-pixel one.
+  s.AddBox(1.4, 1.46, 0.0, 2.4, -1.6, -1.54, 0.5, 0.5, 0.5);
+  s.Pass->ShadowsOn();
+  s.Pass->SetDownsampling(1);
+  const airtest::FloatImage shadowedFull = render();
+  s.Pass->SetDownsampling(8);
+  const airtest::FloatImage shadowed = render();
+  const airtest::Error shadowedVsFull = airtest::Compare(shadowed, shadowedFull, air);
+  airtest::Print("shadowed, default against every pixel", shadowedVsFull);
+  PLUME_CHECK(shadowedVsFull.Max <= 1e-7);
+  PLUME_CHECK(s.Pass->GetLastRefinedCellFraction() == 0.0);
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
