@@ -62,7 +62,10 @@
 #include "vtkFixedPointVolumeRayCastMapper.h"
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -74,6 +77,7 @@
 #include "vtkSphereSource.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,6 +91,24 @@ namespace bench
 {
 namespace
 {
+// the samples per pixel of the framebuffer the window draws into (GL_SAMPLES
+// with it bound: what the frames really paid, whatever was asked for)
+int RenderFramebufferSamples(vtkRenderWindow* window)
+{
+  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!gl || !gl->GetRenderFramebuffer())
+  {
+    return -1;
+  }
+  gl->MakeCurrent();
+  gl->GetState()->PushFramebufferBindings();
+  gl->GetRenderFramebuffer()->Bind();
+  GLint samples = -1;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  gl->GetState()->PopFramebufferBindings();
+  return samples;
+}
+
 int Size(bool quick)
 {
   return quick ? 128 : 512;
@@ -792,6 +814,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   {
     result["image_sample_distance"] = fixedPeer->GetImageSampleDistance();
   }
+  result["multisamples"] = RenderFramebufferSamples(window);
   if (haveReference)
   {
     result["rms_error"] = std::sqrt(sum / (3.0 * compared));
