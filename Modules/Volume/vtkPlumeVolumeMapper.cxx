@@ -46,6 +46,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -143,6 +144,10 @@ public:
   vtkNew<vtkPlumeLightVolume> LightVolume; // smoke: transmittance towards each light per node
   vtkOpenGLRenderWindow* Window = nullptr;
   double AutomaticBudgetMB = 0; // of Window
+  // ProfilePasses: (pass, seconds) of the last render, and when the pass
+  // being timed began
+  std::vector<std::pair<std::string, double>> PassSeconds;
+  std::chrono::steady_clock::time_point PassStart;
   int FrameCount = 0; // frames drawn (animated jitter)
   double TableUnit = 0; // opacity unit distance of the table
   vtkTimeStamp TableUnitTime;
@@ -217,6 +222,27 @@ public:
   void SetUniforms(vtkPlumeVolumeMapper* self, Frame& frame, vtkShaderProgram* program);
   void Draw(vtkPlumeVolumeMapper* self, Frame& frame);
 
+  // ProfilePasses: the GL work so far finished, and the time since the last
+  // mark recorded as `pass` (the first mark of a render only starts the clock)
+  void MarkPass(vtkPlumeVolumeMapper* self, const char* pass)
+  {
+    if (!self->ProfilePasses)
+    {
+      return;
+    }
+    glFinish();
+    const auto now = std::chrono::steady_clock::now();
+    if (pass)
+    {
+      this->PassSeconds.emplace_back(pass, std::chrono::duration<double>(now - this->PassStart).count());
+    }
+    else
+    {
+      this->PassSeconds.clear();
+    }
+    this->PassStart = now;
+  }
+
 
   void ReleaseGraphicsResources(vtkWindow* window)
   {
@@ -267,6 +293,23 @@ int vtkPlumeVolumeMapper::GetLightVolumeUpdateCount()
 vtkTextureObject* vtkPlumeVolumeMapper::GetLightVolumeTexture()
 {
   return this->Impl->LightVolume->GetTextureObject();
+}
+
+int vtkPlumeVolumeMapper::GetNumberOfProfiledPasses()
+{
+  return static_cast<int>(this->Impl->PassSeconds.size());
+}
+
+const char* vtkPlumeVolumeMapper::GetProfiledPassName(int pass)
+{
+  const auto& passes = this->Impl->PassSeconds;
+  return pass >= 0 && pass < static_cast<int>(passes.size()) ? passes[pass].first.c_str() : nullptr;
+}
+
+double vtkPlumeVolumeMapper::GetProfiledPassSeconds(int pass)
+{
+  const auto& passes = this->Impl->PassSeconds;
+  return pass >= 0 && pass < static_cast<int>(passes.size()) ? passes[pass].second : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -589,6 +632,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   plume::ReleaseOnWindowChange(impl, renWin);
 
+  impl.MarkPass(this, nullptr);
   Internals::Frame frame;
   frame.Renderer = ren;
   frame.Volume = vol;
@@ -599,7 +643,9 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
+  impl.MarkPass(this, "resources");
   impl.AcquireDepth(this, frame);
+  impl.MarkPass(this, "depth");
   if (!impl.ComputeFrame(this, frame))
   {
     return;
@@ -613,6 +659,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
+  impl.MarkPass(this, "setup");
   impl.Draw(this, frame);
   ++impl.FrameCount;
 }
@@ -1686,6 +1733,7 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
         state->vtkglViewport(0, y0, latticeSize[0], rows);
         glDrawArrays(GL_TRIANGLES, 0, 36);
       }
+      this->MarkPass(self, "lattice_rays");
       state->vtkglViewport(0, 0, latticeSize[0], latticeSize[1]);
 
       // then classify every cell (one triangle over the whole texture)
@@ -1706,6 +1754,7 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
       glDrawArrays(GL_TRIANGLES, 0, 3);
       state->vtkglEnable(GL_CULL_FACE);
       this->Lattice->Deactivate();
+      this->MarkPass(self, "classify");
       if (self->CountRays)
       {
         // the lattice's rays, plus every pixel of the viewport in a cell that casts its own
@@ -1754,6 +1803,7 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
     refine->SetUniform2f("ClipScale", unitScale);
     refine->SetUniform2f("ClipOffset", noOffset);
     glDrawArrays(GL_TRIANGLES, 0, 36);
+    this->MarkPass(self, "interpolation");
   }
   this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.Features);
   this->SetUniforms(self, frame, program);
@@ -1775,6 +1825,7 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
   {
     glDrawArrays(GL_TRIANGLES, 0, 36);
   }
+  this->MarkPass(self, "rays");
   this->EmptyVAO->Release();
   if (lattice > 1)
   {

@@ -243,6 +243,30 @@ public:
   vtkGetMacro(LastRayCount, double);
 
   ///@{
+  /**
+   * Time each pass of every render (diagnostics for benchmarks: the GL work
+   * is finished after each pass, so passes that would overlap run one after
+   * the other and the frame is slower). Default off.
+   */
+  vtkSetMacro(ProfilePasses, bool);
+  vtkGetMacro(ProfilePasses, bool);
+  vtkBooleanMacro(ProfilePasses, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The passes timed at the last render with ProfilePasses on, in order:
+   * "resources" (uploads, block summaries), "depth" (the opaque depth),
+   * "setup" (matrices, lights, programs, the light volume), then with a ray
+   * lattice "lattice_rays", "classify", "interpolation", and "rays" (the
+   * rays cast per pixel). Seconds of wall time each (CPU and GL).
+   */
+  int GetNumberOfProfiledPasses();
+  const char* GetProfiledPassName(int pass);
+  double GetProfiledPassSeconds(int pass);
+  ///@}
+
+  ///@{
   /** Per-pixel jitter of the first sample (against wood-grain). Default on. */
   vtkSetMacro(Jitter, bool);
   vtkGetMacro(Jitter, bool);
@@ -535,6 +559,7 @@ protected:
   double LatticeTolerance = 0.004;
   int LastImageSampleDistance = 1;
   bool CountRays = false;
+  bool ProfilePasses = false;
   double LastRayCount = 0.0;
   double EffectiveOpacityThreshold = 1.0;
   double IsoValue;

@@ -118,7 +118,18 @@ int Bench(const std::string& name, bool quick, const std::string& job, plume::Ba
     }
     plume::bench::Context context;
     context.Quick = quick;
-    context.MakeWindow = [backend](int w, int h) { return plume::RequireRenderWindow(backend, w, h); };
+    context.MakeWindow = [backend](int w, int h)
+    {
+      auto window = plume::RequireRenderWindow(backend, w, h);
+      // bench only: PLUME_BENCH_MULTISAMPLES=N draws in an N-sample window
+      // (0: none) instead of VTK's default; VTK remakes its render
+      // framebuffer at the next frame when the count changed
+      if (const char* samples = std::getenv("PLUME_BENCH_MULTISAMPLES"))
+      {
+        window->SetMultiSamples(std::atoi(samples));
+      }
+      return window;
+    };
     std::cout << benchmark.Run(context, job).dump() << std::endl;
     return 0;
   }

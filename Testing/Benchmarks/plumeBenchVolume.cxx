@@ -49,6 +49,7 @@
 // steps 1 and 4 (--quick: 4); lightcache lines, ratio = shadow-ray s / ours s.
 // --quick: 32³ only
 // (errors on every 2nd pixel), sparsity for the smoke composite and isosurface.
+#include "plumeBenchFloorMapper.h"
 #include "plumeBenchmarks.h"
 
 #include "vtkPlumeVolumeMapper.h"
@@ -61,7 +62,10 @@
 #include "vtkFixedPointVolumeRayCastMapper.h"
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -73,6 +77,7 @@
 #include "vtkSphereSource.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,6 +91,24 @@ namespace bench
 {
 namespace
 {
+// the samples per pixel of the framebuffer the window draws into (GL_SAMPLES
+// with it bound: what the frames really paid, whatever was asked for)
+int RenderFramebufferSamples(vtkRenderWindow* window)
+{
+  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!gl || !gl->GetRenderFramebuffer())
+  {
+    return -1;
+  }
+  gl->MakeCurrent();
+  gl->GetState()->PushFramebufferBindings();
+  gl->GetRenderFramebuffer()->Bind();
+  GLint samples = -1;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  gl->GetState()->PopFramebufferBindings();
+  return samples;
+}
+
 int Size(bool quick)
 {
   return quick ? 128 : 512;
@@ -364,6 +387,31 @@ std::vector<double> OurSteps(bool quick, int n)
 // bounds the ratio any volume renderer could reach against that peer setting
 const char* const WindowKind = "window";
 
+// The floors of a frame that draws anything (plumeBenchFloorMapper, same
+// window and frame loop): "floor-quad" one screen-filling quad of a constant
+// colour, blended; "floor-latN" an N x N texture filled by a trivial shader,
+// then drawn over the screen rectangle of the volume's bounds by one
+// bilinearly filtered quad, blended (the
+// cheapest conceivable lattice frame: what the fixed-point mapper's
+// ImageSampleDistance > 1 adds to its rays), 8-bit channels as the fixed-point
+// mapper's, "-f16" / "-f32" float channels. Run on the smoke only (they draw
+// no volume).
+const char* const FloorKinds[] = { "floor-quad", "floor-lat64", "floor-lat128", "floor-lat64-f16", "floor-lat64-f32" };
+
+bool IsFloor(const std::string& kind)
+{
+  return kind.compare(0, 6, "floor-") == 0;
+}
+
+// PLUME_BENCH_VOLUME_PROFILE=1: our jobs time each of the mapper's passes
+// (vtkPlumeVolumeMapper::ProfilePasses: the GL work finished after each, so
+// the frames are slower) and report the medians in "pass_ms"
+bool ProfilePasses()
+{
+  const char* profile = std::getenv("PLUME_BENCH_VOLUME_PROFILE");
+  return profile && std::string(profile) == "1";
+}
+
 // every setting of ours that the headlines choose from, (kind, step): every
 // kind at every step, the 100-voxel floor, and InteractiveOurs (full run); only
 // InteractiveOurs with PLUME_BENCH_VOLUME_SET=interactive
@@ -590,6 +638,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   const bool isOurs = kind.compare(0, 4, "ours") == 0;
   vtkSmartPointer<vtkGPUVolumeRayCastMapper> gpuPeer;
   vtkSmartPointer<vtkFixedPointVolumeRayCastMapper> fixedPeer;
+  vtkSmartPointer<plumeBenchFloorMapper> floorMapper;
   if (isOurs)
   {
     ours->SetInputData(image);
@@ -627,6 +676,19 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   {
     // no volume: the frame every renderer pays (clear, the geometry, resolve)
   }
+  else if (IsFloor(kind))
+  {
+    floorMapper = vtkSmartPointer<plumeBenchFloorMapper>::New();
+    plumeBenchFloorMapper* mapper = floorMapper;
+    mapper->SetInputData(image); // (bounds only: nothing of it is drawn)
+    if (kind != "floor-quad")
+    {
+      mapper->SetLatticeSize(std::stoi(kind.substr(9)));
+      const size_t f = kind.find("-f");
+      mapper->SetBits(f == std::string::npos ? 8 : std::stoi(kind.substr(f + 2)));
+    }
+    volume->SetMapper(mapper);
+  }
   else if (IsGPU(kind))
   {
     vtkNew<vtkOpenGLGPUVolumeRayCastMapper> mapper; // what vtkGPUVolumeRayCastMapper::New() gives
@@ -658,6 +720,9 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     window->SetDesiredUpdateRate(15.0); // what vtkRenderWindowInteractor sets while the user interacts
   }
 
+  const bool profile = isOurs && ProfilePasses();
+  ours->SetProfilePasses(profile);
+  std::map<std::string, std::vector<double>> passTimes;
   std::vector<double> times;
   // warm-up frames (texture upload, shader compilation; the auto-adjusting
   // peers settle their sample distances over a few frames)
@@ -682,8 +747,13 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
     if (f >= warmUp)
     {
       times.push_back(Now() - t0);
+      for (int pass = 0; profile && pass < ours->GetNumberOfProfiledPasses(); ++pass)
+      {
+        passTimes[ours->GetProfiledPassName(pass)].push_back(ours->GetProfiledPassSeconds(pass));
+      }
     }
   }
+  ours->SetProfilePasses(false);
   // one more frame of ours, the same image, counting its rays (the count reads
   // the lattice's cells back: not in the timed frames)
   double rays = 0;
@@ -727,6 +797,14 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   {
     result["rays"] = rays;
   }
+  if (floorMapper)
+  {
+    result["coverage"] = floorMapper->GetLastCoverage();
+  }
+  for (const auto& pass : passTimes)
+  {
+    result["pass_ms"][pass.first] = 1e3 * Median(pass.second);
+  }
   // the image sample distance the peer ended on (auto: what it adapted to)
   if (gpuPeer)
   {
@@ -736,6 +814,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   {
     result["image_sample_distance"] = fixedPeer->GetImageSampleDistance();
   }
+  result["multisamples"] = RenderFramebufferSamples(window);
   if (haveReference)
   {
     result["rms_error"] = std::sqrt(sum / (3.0 * compared));
@@ -781,6 +860,13 @@ std::vector<std::string> Jobs(bool quick)
     {
       jobs.push_back(JobId("reference", field, n));
       jobs.push_back(JobId(WindowKind, field, n, 1.0));
+      for (const char* floor : FloorKinds)
+      {
+        if (!quick && std::string(field) == "smoke")
+        {
+          jobs.push_back(JobId(floor, field, n, 1.0));
+        }
+      }
       for (const auto& setting : OurSettings(quick, n))
       {
         jobs.push_back(JobId(setting.first, field, n, setting.second));
@@ -1013,6 +1099,45 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
           }
         }
       }
+    }
+  }
+  // the frame floors against the fastest peer interactive setting at that grid
+  // (any field): ratio = the most any renderer drawing that frame could reach;
+  // "needed_s" = the frame that would be 3x that peer
+  for (int n : Grids(quick))
+  {
+    const nlohmann::json* fastest = nullptr;
+    std::string fastestName;
+    for (const char* field : Fields)
+    {
+      for (const std::string peer : PeerKinds)
+      {
+        for (double peerStep : InteractivePeer(peer) ? PeerSteps(peer, quick, n) : std::vector<double>())
+        {
+          const nlohmann::json* other = find(JobId(peer, field, n, peerStep));
+          if (other && (!fastest || (*other)["render_s"].get<double>() < (*fastest)["render_s"].get<double>()))
+          {
+            fastest = other;
+            fastestName = PeerName(peer) + ", " + CaseName(field, n, size) +
+              (PeerAuto(peer) ? std::string() : ", step " + StepText(peerStep) + " voxel");
+          }
+        }
+      }
+    }
+    for (const std::string floor : FloorKinds)
+    {
+      const nlohmann::json* frame = find(JobId(floor, "smoke", n, 1.0));
+      if (!frame || !fastest)
+      {
+        continue;
+      }
+      const double o = (*frame)["render_s"].get<double>();
+      const double p = (*fastest)["render_s"].get<double>();
+      lines.push_back({ { "bench", "volume" },
+        { "case", "frame floor " + std::to_string(size) + "^2 (" + floor + ") vs the fastest peer interactive setting at " +
+            std::to_string(n) + "^3" },
+        { "frame_floor", floor }, { "ours_s", o }, { "peer", fastestName }, { "peer_s", p }, { "ratio", p / o },
+        { "needed_s", p / 3.0 }, { "grid", n } });
     }
   }
   // pre-integration vs plain sampling at the same step (ratio = plain s / pre-integrated s)

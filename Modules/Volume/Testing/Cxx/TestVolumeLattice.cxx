@@ -23,6 +23,7 @@
 //    the colour criterion off (no opaque geometry);
 //  - no stale frames: after a camera move, a transfer-function change and a
 //    data change, the image equals a fresh mapper's;
+//  - ProfilePasses times every pass in order and leaves the image as it is;
 //  - VTK's interaction convention: the interactive lattice while the window's
 //    DesiredUpdateRate is 15 (the volume's allocated time below 1 s), the still
 //    one at the still rate.
@@ -32,6 +33,8 @@
 #include "vtkCylinderSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkSphereSource.h"
+
+#include <string>
 
 namespace
 {
@@ -236,6 +239,33 @@ int TestVolumeLattice(int, char*[])
     const bool ok = d1.Max == 0 && d2.Max == 0 && d3.Max == 0 && changed.Max > 0.05;
     std::printf("%-40s after camera %.4f, transfer function %.4f, data %.4f (all 0); recolouring shows %.3f%s\n",
       "no stale frames, lattice 4", d1.Max, d2.Max, d3.Max, changed.Max, ok ? "" : "  FAIL");
+    failures += ok ? 0 : 1;
+  }
+  {
+    // ProfilePasses (the benchmark's per-pass times): every pass of the
+    // lattice path timed, in order, and the same image as without it
+    Scene s = MakeScene(field, 200, 160);
+    s.Mapper->SetImageSampleDistance(4);
+    s.Mapper->JitterOff();
+    const FloatImage plain = plume::test::ReadBack(s.Window);
+    s.Mapper->ProfilePassesOn();
+    const FloatImage profiled = plume::test::ReadBack(s.Window);
+    std::string passes;
+    double total = 0;
+    for (int p = 0; p < s.Mapper->GetNumberOfProfiledPasses(); ++p)
+    {
+      passes += std::string(p ? " " : "") + s.Mapper->GetProfiledPassName(p);
+      total += s.Mapper->GetProfiledPassSeconds(p) >= 0 ? s.Mapper->GetProfiledPassSeconds(p) : -1e9;
+    }
+    s.Mapper->SetImageSampleDistance(1);
+    plume::test::ReadBack(s.Window);
+    const int onePass = s.Mapper->GetNumberOfProfiledPasses();
+    const std::string last = onePass > 0 ? s.Mapper->GetProfiledPassName(onePass - 1) : "";
+    const bool ok = passes == "resources depth setup lattice_rays classify interpolation rays" && total > 0 &&
+      Difference(plain, profiled).Max == 0 && onePass == 4 && last == "rays";
+    std::printf("%-40s lattice 4: %s (%.2f ms); same image %d; one ray per pixel: %d passes, last %s%s\n",
+      "pass profile", passes.c_str(), 1e3 * total, int(Difference(plain, profiled).Max == 0), onePass, last.c_str(),
+      ok ? "" : "  FAIL");
     failures += ok ? 0 : 1;
   }
   {
