@@ -17,7 +17,7 @@ namespace
 {
 // Three spot lights and three point lights over the room: each spot's cone holds
 // an occluder, each point light sees all of them.
-void AddLights(airtest::Scene& s, int count)
+void AddShadowedLights(airtest::Scene& s, int count)
 {
   // The last two (beyond the former limit) are the strong ones, straight over
   // the plate: their shafts are what the test sees.
@@ -43,10 +43,10 @@ void AddLights(airtest::Scene& s, int count)
   }
 }
 
-void Setup(airtest::Scene& s, int lights)
+void SetupShadowed(airtest::Scene& s, int lights)
 {
   airtest::PlateRoom(s);
-  AddLights(s, lights);
+  AddShadowedLights(s, lights);
 }
 }
 
@@ -60,7 +60,7 @@ int TestAirlightManyShadows(int, char*[])
   if (!std::getenv("PLUME_AIRLIGHT_WRITE_BASELINE"))
   {
     airtest::Scene s(W, H);
-    Setup(s, 6);
+    SetupShadowed(s, 6);
     const airtest::ShadowComparison r = airtest::CompareShadowed(s, stride, "six shadowed lights");
     failures += airtest::CheckShadowGoal(r);
     std::cout << "6 lights: " << s.Pass->GetNumberOfShadowedLights() << " shadowed, "
@@ -78,7 +78,7 @@ int TestAirlightManyShadows(int, char*[])
   // 2. Four shadowed lights: unchanged against the 4-sampler code's image.
   {
     airtest::Scene s(W, H);
-    Setup(s, 4);
+    SetupShadowed(s, 4);
     s.Pass->ShadowsOn();
     const airtest::FloatImage image = s.RenderFloat(s.Pass);
     PLUME_CHECK(s.Pass->GetNumberOfShadowedLights() == 4);

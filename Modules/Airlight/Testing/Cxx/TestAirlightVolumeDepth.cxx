@@ -60,7 +60,7 @@ vtkSmartPointer<vtkImageData> DistanceField()
 }
 
 // The scene: the room's floor and back wall, a point light and a spot light.
-void Setup(airtest::Scene& s)
+void SetupVolumeDepth(airtest::Scene& s)
 {
   s.AddBox(-5, 5, -0.1, 0, -4, 4, 0.6, 0.6, 0.55);
   s.AddBox(-5, 5, 0, 5, -4.1, -4, 0.5, 0.55, 0.6);
@@ -81,7 +81,7 @@ int TestAirlightVolumeDepth(int, char*[])
 
   // The isosurface sphere (black: no surface term, only airlight).
   airtest::Scene iso(W, H);
-  Setup(iso);
+  SetupVolumeDepth(iso);
   vtkNew<vtkPlumeVolumeMapper> mapper;
   mapper->SetInputData(DistanceField());
   mapper->SetBlendModeToIsoSurface();
@@ -112,7 +112,7 @@ int TestAirlightVolumeDepth(int, char*[])
 
   // The polygonal sphere at the same place, black too.
   airtest::Scene poly(W, H);
-  Setup(poly);
+  SetupVolumeDepth(poly);
   vtkActor* sphere = poly.AddSphere(Centre[0], Centre[1], Centre[2], Radius, 0, 0, 0);
   sphere->GetProperty()->SetAmbient(0.0);
   sphere->GetProperty()->SetDiffuse(0.0);
@@ -226,7 +226,7 @@ int TestAirlightVolumeDepth(int, char*[])
   // What the test tells apart: the airlight run on to the wall behind the
   // sphere (the room without it) differs from the sphere's by far more than the goal.
   airtest::Scene room(W, H);
-  Setup(room);
+  SetupVolumeDepth(room);
   room.Camera(1.0, 1.4, 4.0, 0.0, 1.0, -2.0);
   airtest::FloatImage wall = room.RenderFloat(nullptr);
   std::fill(wall.RGBA.begin(), wall.RGBA.end(), 0.0f);

@@ -15,14 +15,14 @@
 
 namespace
 {
-int failures = 0;
+int tableFailures = 0;
 #define CHECK(cond)                                                                                 \
   do                                                                                                \
   {                                                                                                 \
     if (!(cond))                                                                                    \
     {                                                                                               \
       std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond "\n";                    \
-      ++failures;                                                                                   \
+      ++tableFailures;                                                                                   \
     }                                                                                               \
   } while (false)
 
@@ -162,9 +162,9 @@ int TestPlumeParameterTable(int, char*[])
     CHECK(md.str().find("| `" + p.Key + "` |") != std::string::npos);
   }
   CHECK(md.str().find("(model units)") != std::string::npos);
-  if (failures)
+  if (tableFailures)
   {
-    std::cerr << failures << " check(s) failed\n";
+    std::cerr << tableFailures << " check(s) failed\n";
     return EXIT_FAILURE;
   }
   return EXIT_SUCCESS;

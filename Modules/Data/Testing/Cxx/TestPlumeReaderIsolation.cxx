@@ -23,7 +23,7 @@ using plumetest::Checker;
 
 namespace
 {
-bool Contains(const std::string& text, const std::string& part)
+bool MessageContains(const std::string& text, const std::string& part)
 {
   return text.find(part) != std::string::npos;
 }
@@ -46,14 +46,14 @@ int TestPlumeReaderIsolation(int, char*[])
       return std::string();
     },
     &result);
-  check.True(Contains(why, "crashed (signal " + std::to_string(SIGSEGV)), "a SIGSEGV: '" + why + "'");
+  check.True(MessageContains(why, "crashed (signal " + std::to_string(SIGSEGV)), "a SIGSEGV: '" + why + "'");
   check.True(result.empty(), "no result from a crash");
 
   why = vtkPlumeFormatCheck::RunIsolated([]() {
     std::exit(3); // as the CGNS library does on some files
     return std::string();
   });
-  check.True(Contains(why, "ended the process (exit code 3)"), "an exit(3): '" + why + "'");
+  check.True(MessageContains(why, "ended the process (exit code 3)"), "an exit(3): '" + why + "'");
 
   const auto t0 = std::chrono::steady_clock::now();
   why = vtkPlumeFormatCheck::RunIsolated(
@@ -63,7 +63,7 @@ int TestPlumeReaderIsolation(int, char*[])
     },
     nullptr, 0.5);
   const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  check.True(Contains(why, "did not finish within 0.5 s (PLUME_READER_TIMEOUT)"), "a hang: '" + why + "'");
+  check.True(MessageContains(why, "did not finish within 0.5 s (PLUME_READER_TIMEOUT)"), "a hang: '" + why + "'");
   check.True(waited < 10, "the hang is stopped at the limit (" + std::to_string(waited) + " s)");
 
   // the parent's state is untouched by what the child did
@@ -91,15 +91,15 @@ int TestPlumeReaderIsolation(int, char*[])
     std::ofstream(file, std::ios::binary) << std::string("\x89HDF\r\n\x1a\n", 8) << std::string(512, '\x7f');
     check.True(!vtkPlumeFormatCheck::IsNetCDFClassic(file), "not netCDF classic");
     const std::string message = read(file, true);
-    check.True(Contains(message, "the exodus reader cannot read " + file + ": ") &&
-        !Contains(message, "no details"),
+    check.True(MessageContains(message, "the exodus reader cannot read " + file + ": ") &&
+        !MessageContains(message, "no details"),
       "the Exodus reader's own reason, from the child: '" + message + "'");
   }
   {
     const std::string file = folder + "/broken.wrl";
     std::ofstream(file) << "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 } } }\n";
     const std::string message = read(file, true);
-    check.True(Contains(message, "the VRML importer found no geometry in " + file) && Contains(message, "parse error"),
+    check.True(MessageContains(message, "the VRML importer found no geometry in " + file) && MessageContains(message, "parse error"),
       "VRML: the parser's reason in the one message: '" + message + "'");
   }
   {

@@ -29,24 +29,24 @@
 
 namespace
 {
-constexpr int NX = 40, NY = 30, NZ = 20;
+constexpr int PiecesNX = 40, PiecesNY = 30, PiecesNZ = 20;
 constexpr int Seam = 17; // the last x node of piece 0, the first of piece 1
 
 // a swirl about the z axis in a ball of radius 12 nodes, still air outside
-vtkSmartPointer<vtkImageData> MakeField()
+vtkSmartPointer<vtkImageData> MakePiecesField()
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(NX, NY, NZ);
+  image->SetDimensions(PiecesNX, PiecesNY, PiecesNZ);
   image->SetSpacing(0.1, 0.1, 0.1);
   image->SetOrigin(-2.0, -1.5, -1.0);
   vtkNew<vtkFloatArray> v;
   v->SetName("v");
   v->SetNumberOfComponents(3);
-  for (int k = 0; k < NZ; ++k)
+  for (int k = 0; k < PiecesNZ; ++k)
   {
-    for (int j = 0; j < NY; ++j)
+    for (int j = 0; j < PiecesNY; ++j)
     {
-      for (int i = 0; i < NX; ++i)
+      for (int i = 0; i < PiecesNX; ++i)
       {
         const double x = i - 18.0, y = j - 14.0, z = k - 9.0;
         const double r = std::sqrt(x * x + y * y + z * z);
@@ -59,12 +59,12 @@ vtkSmartPointer<vtkImageData> MakeField()
   return image;
 }
 
-struct Draw
+struct PiecesDraw
 {
   vtkNew<vtkRenderer> Renderer;
   vtkSmartPointer<vtkRenderWindow> Window = plume::test::MakeOffscreenWindow(320, 240);
   vtkNew<vtkLookupTable> Table;
-  Draw()
+  PiecesDraw()
   {
     this->Table->SetRange(0.0, 3.0);
     this->Table->Build();
@@ -115,14 +115,14 @@ double SameShare(const plume::test::FloatImage& a, const plume::test::FloatImage
 int TestVelocityGlyphPieces(int, char*[])
 {
   int failures = 0;
-  auto whole = MakeField();
-  const int wholeExtent[6] = { 0, NX - 1, 0, NY - 1, 0, NZ - 1 };
+  auto whole = MakePiecesField();
+  const int wholeExtent[6] = { 0, PiecesNX - 1, 0, PiecesNY - 1, 0, PiecesNZ - 1 };
   vtkSmartPointer<vtkImageData> pieces[2];
   for (int p = 0; p < 2; ++p)
   {
     vtkNew<vtkExtractVOI> voi;
     voi->SetInputData(whole);
-    voi->SetVOI(p == 0 ? 0 : Seam, p == 0 ? Seam : NX - 1, 0, NY - 1, 0, NZ - 1);
+    voi->SetVOI(p == 0 ? 0 : Seam, p == 0 ? Seam : PiecesNX - 1, 0, PiecesNY - 1, 0, PiecesNZ - 1);
     voi->Update();
     pieces[p] = voi->GetOutput();
     const int* e = pieces[p]->GetExtent();
@@ -132,7 +132,7 @@ int TestVelocityGlyphPieces(int, char*[])
   for (int roots : { vtkPlumeVelocityGlyphMapper::ROOTS_SCREEN_ADAPTIVE, vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE })
   {
     const char* name = roots == vtkPlumeVelocityGlyphMapper::ROOTS_LATTICE ? "lattice stride 3" : "screen";
-    Draw reference;
+    PiecesDraw reference;
     vtkPlumeVelocityGlyphMapper* one = reference.Add(whole, roots);
     const auto wholeImage = plume::test::ReadBack(reference.Window);
     const int wholeStride = one->GetEffectiveStride();
@@ -168,7 +168,7 @@ int TestVelocityGlyphPieces(int, char*[])
       PLUME_CHECK(onceMoving == pieceMoving);
       PLUME_CHECK(sumsOne == sumsTwo);
     }
-    Draw together, alone;
+    PiecesDraw together, alone;
     int strides[2] = { 0, 0 };
     vtkPlumeVelocityGlyphMapper* split[2];
     for (int p = 0; p < 2; ++p)

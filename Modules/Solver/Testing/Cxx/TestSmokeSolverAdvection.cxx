@@ -11,6 +11,7 @@
 //  - vorticity confinement (ε = 0.5) gives back part of the lost energy.
 #include "vtkPlumeSmokeSolver.h"
 
+#include "vtkMath.h"
 #include "vtkNew.h"
 
 #include "plumeSolverTestUtilities.h"
@@ -19,7 +20,6 @@ using namespace plume_solver_test;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 struct Outcome
 {
@@ -31,7 +31,7 @@ struct Outcome
 Outcome Run(int scheme, int n, double dt, int steps, double confinement = 0)
 {
   vtkNew<vtkPlumeSmokeSolver> solver;
-  const double h = Pi / n;
+  const double h = vtkMath::Pi() / n;
   solver->SetDimensions(n, n, 1);
   solver->SetSpacing(h, h, h);
   solver->SetOrigin(0.5 * h, 0.5 * h, 0); // walls at 0 and π
@@ -99,7 +99,7 @@ int TestSmokeSolverAdvection(int, char*[])
   const int n = 32;
   for (double cfl : { 0.5, 4.0 })
   {
-    const double dt = cfl * (Pi / n); // max speed 1
+    const double dt = cfl * (vtkMath::Pi() / n); // max speed 1
     const Outcome sl = Run(vtkPlumeSmokeSolver::SEMI_LAGRANGIAN, n, dt, 100);
     const Outcome mc = Run(vtkPlumeSmokeSolver::MACCORMACK, n, dt, 100);
     std::cout << "Taylor-Green " << n << "^2, CFL " << cfl << ", 100 steps: energy loss per step "
@@ -118,7 +118,7 @@ int TestSmokeSolverAdvection(int, char*[])
   }
   // vorticity confinement puts energy back into the vortex
   {
-    const double dt = 0.5 * (Pi / n);
+    const double dt = 0.5 * (vtkMath::Pi() / n);
     const Outcome plain = Run(vtkPlumeSmokeSolver::SEMI_LAGRANGIAN, n, dt, 100);
     const Outcome confined = Run(vtkPlumeSmokeSolver::SEMI_LAGRANGIAN, n, dt, 100, 0.5);
     std::cout << "Taylor-Green, CFL 0.5, semi-Lagrangian: energy loss per step " << plain.LossPerStep

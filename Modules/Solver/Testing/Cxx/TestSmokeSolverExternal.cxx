@@ -13,6 +13,7 @@
 
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkSignedCharArray.h"
@@ -25,7 +26,6 @@ using namespace plume_solver_test;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 vtkSmartPointer<vtkImageData> Field(const int dims[3], const double origin[3], const double spacing[3],
   const std::function<void(const double*, double*)>& f, const char* name)
@@ -57,8 +57,8 @@ int TestSmokeSolverExternal(int, char*[])
     const int n[3] = { 20, 20, 5 };
     const double h = 1.0 / 20;
     auto cellular = [](const double* x, double* u) {
-      u[0] = std::sin(Pi * x[0]) * std::cos(Pi * x[1]);
-      u[1] = -std::cos(Pi * x[0]) * std::sin(Pi * x[1]);
+      u[0] = std::sin(vtkMath::Pi() * x[0]) * std::cos(vtkMath::Pi() * x[1]);
+      u[1] = -std::cos(vtkMath::Pi() * x[0]) * std::sin(vtkMath::Pi() * x[1]);
       u[2] = 0;
     };
     const int dims[3] = { 61, 63, 9 };

@@ -12,6 +12,7 @@
 #include "vtkPlumePressureSolver.h"
 #include "vtkPlumeSmokeSolver.h"
 
+#include "vtkMath.h"
 #include "vtkNew.h"
 
 #include "plumeSolverTestUtilities.h"
@@ -22,7 +23,6 @@ using namespace plume_solver_test;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 size_t Index(const int m[3], int i, int j, int k)
 {
@@ -73,7 +73,7 @@ void TestCurlRecovered()
 
   // Edge potential in index coordinates; s_a vanishes on the walls of axis a
   // (at −1/2 and n − 1/2), so the tangential components vanish on every wall.
-  auto s = [&](int a, double x) { return std::sin(Pi * (x + 0.5) / n[a]); };
+  auto s = [&](int a, double x) { return std::sin(vtkMath::Pi() * (x + 0.5) / n[a]); };
   auto Ax = [&](double x, double y, double z) { return std::cos(0.3 * x + 0.2 * z) * s(1, y) * s(2, z); };
   auto Ay = [&](double x, double y, double z) { return (1 + 0.1 * x * y / n[0]) * s(0, x) * s(2, z); };
   auto Az = [&](double x, double y, double z) { return std::sin(0.4 * y + 0.1 * x + z) * s(0, x) * s(1, y); };
