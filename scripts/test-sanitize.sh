@@ -30,11 +30,9 @@ if [ -n "${PLUME_DATA_DIR:-}" ]; then
   data=(-DPLUME_DATA_DIR="$PLUME_DATA_DIR")
 fi
 t0=$SECONDS
-# -O1 -g1: fast enough to run the suite, line numbers in reports; the test
-# programs' own sources at -O0 (PLUME_TEST_COMPILE_OPTIONS): they compile in
-# less time and the code under test keeps -O1
+# -O1 -g1: fast enough to run the suite, line numbers in reports
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O1 -DNDEBUG" -DPLUME_TEST_COMPILE_OPTIONS=-O0 \
+  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O1 -DNDEBUG" \
   -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 -DPLUME_FUZZ=ON \
   -DPLUME_WRAP_PYTHON=OFF -DPLUME_BUILD_BENCHMARKS=OFF -DPLUME_GL_IMAGE_TESTS=OFF \
   -DPython3_EXECUTABLE=/usr/bin/python3 "${launcher[@]}" "${data[@]}"
