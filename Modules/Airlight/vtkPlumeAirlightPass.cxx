@@ -1771,19 +1771,26 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
   latticeUniforms(quad->Program);
   quad->Program->SetUniformf("LatticeTolerance", static_cast<float>(this->UpsamplingTolerance * range));
   quad->Program->SetUniformf("LatticeDepthTolerance", static_cast<float>(LatticeDepthTolerance));
+  // An eye-space point's viewport pixel (index units, clamped to +-1e6),
+  // written to out[0..1]; its clip w (> 0: in front of the eye) returned.
+  auto toPixel = [&](double x, double y, double z, float out[2]) {
+    double p[4] = { x, y, z, 1.0 };
+    projection->MultiplyPoint(p, p);
+    for (int k = 0; k < 2; ++k)
+    {
+      const double q = (p[k] / p[3] * 0.5 + 0.5) * (k == 0 ? w : h) - 0.5;
+      out[k] = static_cast<float>(std::max(-1e6, std::min(q, 1e6)));
+    }
+    return p[3];
+  };
   std::vector<float> pixels(3 * std::max(count, 1), 0.0f);
   for (int l = 0; l < count; ++l)
   {
-    // the light's viewport pixel (index units), and whether it is in front of the eye
-    double p[4] = { lights[3 * l], lights[3 * l + 1], lights[3 * l + 2], 1.0 };
-    projection->MultiplyPoint(p, p);
-    if (p[3] > 0.0 && lights[3 * l + 2] < 0.0)
+    // the light's viewport pixel, and whether it is in front of the eye
+    float pixel[2];
+    if (toPixel(lights[3 * l], lights[3 * l + 1], lights[3 * l + 2], pixel) > 0.0 && lights[3 * l + 2] < 0.0)
     {
-      for (int k = 0; k < 2; ++k)
-      {
-        const double q = (p[k] / p[3] * 0.5 + 0.5) * (k == 0 ? w : h) - 0.5;
-        pixels[3 * l + k] = static_cast<float>(std::max(-1e6, std::min(q, 1e6)));
-      }
+      std::copy(pixel, pixel + 2, &pixels[3 * l]);
       pixels[3 * l + 2] = 1.0f;
     }
   }
@@ -1813,17 +1820,8 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     {
       b += (a - b) * ((b.z - zMax) / (b.z - a.z));
     }
-    for (int e = 0; e < 2; ++e)
-    {
-      const glm::dvec3& q = e == 0 ? a : b;
-      double p[4] = { q.x, q.y, q.z, 1.0 };
-      projection->MultiplyPoint(p, p);
-      for (int k = 0; k < 2; ++k)
-      {
-        const double v = (p[k] / p[3] * 0.5 + 0.5) * (k == 0 ? w : h) - 0.5;
-        shafts[4 * l + 2 * e + k] = static_cast<float>(std::max(-1e6, std::min(v, 1e6)));
-      }
-    }
+    toPixel(a.x, a.y, a.z, &shafts[4 * l]);
+    toPixel(b.x, b.y, b.z, &shafts[4 * l + 2]);
   }
   quad->Program->SetUniform4fv("LightShaft", std::max(count, 1), reinterpret_cast<const float(*)[4]>(shafts.data()));
   into(this->CellTexture, cells);
