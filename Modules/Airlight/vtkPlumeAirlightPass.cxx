@@ -33,10 +33,12 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPixelBufferObject.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkVolume.h"
 #include "vtk_glew.h"
@@ -1463,7 +1465,9 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       mediaDepthTexture->Activate();
     }
   }
-  this->LastRefinedCellFraction = 0.0; // stays 0 unless a group uses the lattice
+  // stays 0 unless a group uses the lattice
+  this->LastRefinedCellFraction = 0.0;
+  this->LatticeFlagsPending = false;
   for (size_t gi = 0; gi < groups.size(); ++gi)
   {
     const Group& group = groups[gi];
@@ -1826,10 +1830,9 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
   quad->Program->SetUniform4fv("LightShaft", std::max(count, 1), reinterpret_cast<const float(*)[4]>(shafts.data()));
   into(this->CellTexture, cells);
   quad->Render();
-  std::vector<float> refined(static_cast<size_t>(cells[0]) * cells[1]);
-  glReadPixels(0, 0, cells[0], cells[1], GL_RED, GL_FLOAT, refined.data());
-  this->LastRefinedCellFraction =
-    std::count_if(refined.begin(), refined.end(), [](float v) { return v != 0.0f; }) / double(refined.size());
+  // counted only if asked (GetLastRefinedCellFraction): no wait here
+  this->LatticeFlagsPending = true;
+  this->LatticeWindow = renWin;
   this->LowFrameBuffer->RemoveColorAttachments(1);
   ostate->PopFramebufferBindings();
 
@@ -1870,8 +1873,32 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
 }
 
 //------------------------------------------------------------------------------
+double vtkPlumeAirlightPass::GetLastRefinedCellFraction()
+{
+  if (this->LatticeFlagsPending && this->LatticeWindow && this->CellTexture)
+  {
+    this->LatticeFlagsPending = false;
+    this->LatticeWindow->MakeCurrent();
+    vtkSmartPointer<vtkPixelBufferObject> pbo = vtkSmartPointer<vtkPixelBufferObject>::Take(this->CellTexture->Download());
+    const size_t n = static_cast<size_t>(this->CellTexture->GetWidth()) * this->CellTexture->GetHeight();
+    const float* flags = static_cast<const float*>(pbo->MapPackedBuffer());
+    if (flags && n > 0)
+    {
+      this->LastRefinedCellFraction = std::count_if(flags, flags + n, [](float v) { return v != 0.0f; }) / double(n);
+    }
+    pbo->UnmapPackedBuffer();
+  }
+  return this->LastRefinedCellFraction;
+}
+
+//------------------------------------------------------------------------------
 void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
 {
+  if (w && w == this->LatticeWindow)
+  {
+    this->GetLastRefinedCellFraction(); // counted before the flags' textures go
+  }
+  this->LatticeFlagsPending = false;
   this->Superclass::ReleaseGraphicsResources(w);
   this->Programs->ReleaseGraphicsResources(w);
   for (vtkTextureObject** t :

@@ -104,6 +104,7 @@
 #include "vtkImageProcessingPass.h"
 #include "vtkNew.h"                      // For vtkNew
 #include "vtkTimeStamp.h"                // For vtkTimeStamp
+#include "vtkWeakPointer.h"              // For LatticeWindow
 #include "vtkPlumeShaderProgramCache.h" // For Programs
 
 #include <functional> // For std::function
@@ -249,9 +250,12 @@ public:
 
   /**
    * The fraction of the airlight lattice's cells refined (evaluated at every
-   * pixel) in the last frame's last light group; 0 without a lattice.
+   * pixel) in the last frame's last light group on the lattice; 0 without a
+   * lattice. A diagnostic, computed when asked: it reads the cell flags back
+   * from the GPU (a wait for the frame, which the frames themselves no longer
+   * pay); ReleaseGraphicsResources counts them before their textures go.
    */
-  vtkGetMacro(LastRefinedCellFraction, double);
+  double GetLastRefinedCellFraction();
 
   ///@{
   /**
@@ -521,6 +525,10 @@ protected:
   vtkTextureObject* CellTexture = nullptr; // per lattice cell: 1 refined, 0 interpolated (R32F)
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO; // the refined cells' quads come from gl_VertexID
   double LastRefinedCellFraction = 0.0;
+  // The last frame's lattice flags are in CellTexture, not yet counted
+  // (GetLastRefinedCellFraction reads them back on LatticeWindow).
+  bool LatticeFlagsPending = false;
+  vtkWeakPointer<vtkOpenGLRenderWindow> LatticeWindow;
   // One light group's airlight on the lattice (Downsampling > 1): nodes, cell
   // classification, the frame with the interpolated airlight, the refined
   // cells' exact airlight. `lights`, `axes`, `cosCones`: the group's eye
