@@ -239,6 +239,22 @@ public:
 
   ///@{
   /**
+   * Levels of the airlight lattice (with Downsampling > 1). Level 0 is the
+   * lattice of Downsampling; each further level halves the spacing (while
+   * the spacing is even and its half at least 2: 8, 4, 2) inside the cells
+   * the level before refined: its 3 x 3 nodes in each such cell are
+   * evaluated, its 2 x 2 cells there classified by the same four rules at
+   * their own size (the second differences from the parent's middle row and
+   * column) and interpolated where they pass, and only the last level's
+   * refined cells are evaluated at every pixel. 1: one level. Clamped to
+   * 1..3. Default 2.
+   */
+  vtkSetClampMacro(LatticeLevels, int, 1, 3);
+  vtkGetMacro(LatticeLevels, int);
+  ///@}
+
+  ///@{
+  /**
    * With Downsampling > 1: the largest estimated interpolation error the
    * lattice accepts in a cell, as a fraction of the frame's airlight range
    * (clamped to 1, what an 8-bit window shows); 0 evaluates every pixel.
@@ -256,6 +272,40 @@ public:
    * pay); ReleaseGraphicsResources counts them before their textures go.
    */
   double GetLastRefinedCellFraction();
+
+  /**
+   * The fraction of the viewport's pixels evaluated exactly in the last
+   * frame's last light group on the lattice (the last level's refined
+   * cells); 0 without a lattice. Computed when asked, as
+   * GetLastRefinedCellFraction.
+   */
+  double GetLastRefinedPixelFraction();
+
+  ///@{
+  /**
+   * Time each pass of every frame (diagnostics for benchmarks: the GL work is
+   * finished after each pass, so the frame is slower). Default off.
+   */
+  vtkSetMacro(ProfilePasses, bool);
+  vtkGetMacro(ProfilePasses, bool);
+  vtkBooleanMacro(ProfilePasses, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The passes timed in the last frame with ProfilePasses on, in order:
+   * "scene" (the delegate), then per light group either "pixels" (every
+   * pixel) or the lattice's "nodes", "classify" (level 0), "nodes L",
+   * "classify L" (finer level L), "resolve", "interpolate L" and "refine".
+   * Seconds of wall time each (CPU and GL).
+   */
+  int GetNumberOfProfiledPasses() { return static_cast<int>(this->PassSeconds.size()); }
+  const char* GetProfiledPassName(int pass);
+  double GetProfiledPassSeconds(int pass);
+  ///@}
+
+  /** At most this many lattice levels (LatticeLevels). */
+  static constexpr int MaximumLatticeLevels = 3;
 
   ///@{
   /**
@@ -468,6 +518,7 @@ protected:
   double ScatteringAnisotropy = 0.0;
   int SpotSteps = 8;
   int Downsampling = 8;
+  int LatticeLevels = 2;
   double UpsamplingTolerance = 0.005;
   int TableResolution = 64;
   int MarchSteps = 0;
@@ -521,14 +572,28 @@ protected:
   vtkTextureObject* DepthTexture = nullptr;
   vtkTextureObject* TableTexture = nullptr;
   vtkOpenGLFramebufferObject* LowFrameBuffer = nullptr; // Downsampling > 1
-  vtkTextureObject* LowTexture = nullptr;  // the lattice nodes' airlight (RGBA32F)
-  vtkTextureObject* CellTexture = nullptr; // per lattice cell: 1 refined, 0 interpolated (R32F)
+  // Per lattice level: the nodes' airlight (RGBA32F) and per cell 1 refined,
+  // 0 interpolated (R32F; a finer level's cells outside its parent's refined
+  // cells are 0).
+  vtkTextureObject* LatticeNodes[MaximumLatticeLevels] = {};
+  vtkTextureObject* LatticeCells[MaximumLatticeLevels] = {};
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO; // the refined cells' quads come from gl_VertexID
   double LastRefinedCellFraction = 0.0;
-  // The last frame's lattice flags are in CellTexture, not yet counted
-  // (GetLastRefinedCellFraction reads them back on LatticeWindow).
+  double LastRefinedPixelFraction = 0.0;
+  // The last lattice frame's flags are in LatticeCells, not yet counted
+  // (CountLatticeFlags reads them back on LatticeWindow): its levels and
+  // viewport width and height.
   bool LatticeFlagsPending = false;
+  int LatticeFrame[3] = { 0, 0, 0 };
   vtkWeakPointer<vtkOpenGLRenderWindow> LatticeWindow;
+  void CountLatticeFlags();
+  // ProfilePasses: (pass, seconds) of the last frame, and when the pass being
+  // timed began. MarkPass finishes the GL work so far and records the time
+  // since the last mark as `pass` (nullptr: starts the clock, a new frame).
+  bool ProfilePasses = false;
+  std::vector<std::pair<std::string, double>> PassSeconds;
+  double PassStart = 0.0;
+  void MarkPass(const char* pass);
   // One light group's airlight on the lattice (Downsampling > 1): nodes, cell
   // classification, the frame with the interpolated airlight, the refined
   // cells' exact airlight. `lights`, `axes`, `cosCones`: the group's eye
@@ -536,7 +601,7 @@ protected:
   // program does not build.
   bool RenderLattice(vtkOpenGLRenderWindow* renWin, const vtkPlumeShaderFeatures& base,
     const std::function<void(vtkShaderProgram*)>& setUniforms, const std::function<void()>& blendGroup,
-    const int cells[2], int x, int y, int w, int h, vtkMatrix4x4* projection, const float* lights,
+    int x, int y, int w, int h, vtkMatrix4x4* projection, const float* lights,
     const float* axes, const float* cosCones, int count);
   vtkTextureObject* MediaTexture = nullptr; // translucent media's premultiplied layer
   vtkTextureObject* MediaTransmittanceTexture = nullptr; // the media over 1: minus the layer, their RGB transmittance
