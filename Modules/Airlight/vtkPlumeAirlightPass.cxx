@@ -250,11 +250,11 @@ int LatticeGeometry(int D, int wanted, int w, int h, int spacing[], int count[][
 }
 
 // The size of lattice level l's nodes texture along `axis`: level 0 its
-// nodes in order (cells + 1); a finer level a 4 x 4 block per cell of its
-// parent level (the parent's refined cells' 3 x 3 nodes, aligned blocks).
+// nodes in order (cells + 1); level 1 those it evaluates, 64 a row (at most
+// all of its nodes).
 int LatticeNodesSize(const int count[][2], int l, int axis)
 {
-  return l == 0 ? count[0][axis] + 1 : 4 * count[l - 1][axis];
+  return l == 0 ? count[0][axis] + 1 : axis == 0 ? 64 : ((count[l][0] + 1) * (count[l][1] + 1) + 63) / 64;
 }
 
 // The airlight's fragment shader with the textured lights' shared GLSL in it
@@ -474,10 +474,10 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Doc("Airlight lattice: evaluated every D pixels, interpolated in cells whose estimated error is within upsampling_tolerance and which hold no surface edge, light or translucent medium, every pixel of the other cells evaluated; 1: every pixel.")
       .Bind(&T::SetDownsampling, &T::GetDownsampling);
     t.Integer("lattice_levels", "LatticeLevels", 2)
-      .Between(1, 3)
+      .Between(1, 2)
       .Panel("Medium")
       .Advanced()
-      .Doc("With downsampling: levels of the airlight lattice; each further level halves the spacing (8, 4, 2) inside the cells the level before refined, and only the last level's refined cells are evaluated at every pixel.")
+      .Doc("With downsampling: levels of the airlight lattice; level 2 halves the spacing (8 to 4) inside the cells level 1 refined, and only the last level's refined cells are evaluated at every pixel.")
       .Bind(&T::SetLatticeLevels, &T::GetLatticeLevels);
     t.Real("upsampling_tolerance", "UpsamplingTolerance", 0.005)
       .Between(0.0, 1.0)
@@ -674,6 +674,18 @@ bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w,
           (*t)->Allocate2D(tw, th, nodes ? 4 : 1, VTK_FLOAT);
         }
         (*t)->Resize(tw, th);
+      }
+    }
+    for (vtkTextureObject** t : { &this->LatticeNodeMap, &this->LatticeNodeList })
+    {
+      if (levels > 1 && !*t)
+      {
+        *t = vtkTextureObject::New();
+        (*t)->SetContext(renWin);
+        (*t)->SetMinificationFilter(vtkTextureObject::Nearest);
+        (*t)->SetMagnificationFilter(vtkTextureObject::Nearest);
+        (*t)->SetWrapS(vtkTextureObject::ClampToEdge);
+        (*t)->SetWrapT(vtkTextureObject::ClampToEdge);
       }
     }
     if (!this->LowFrameBuffer)
@@ -1771,6 +1783,10 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     program->SetUniformi("LatticeNodes", this->LatticeNodes[l]->GetTextureUnit());
     program->SetUniformi("LatticeCells", this->LatticeCells[l]->GetTextureUnit());
     program->SetUniformi("LatticeParentBlock", l == 0 ? 0 : 2);
+    // (level 0 reads none of these; its samplers still need a valid unit)
+    program->SetUniformi("LatticeCoarseNodes", this->LatticeNodes[0]->GetTextureUnit());
+    program->SetUniformi("LatticeNodeMap", (l == 0 ? this->LatticeNodes[0] : this->LatticeNodeMap)->GetTextureUnit());
+    program->SetUniformi("LatticeNodeList", (l == 0 ? this->LatticeNodes[0] : this->LatticeNodeList)->GetTextureUnit());
   };
   // Level l's refined cells drawn by the lattice cells' vertex shader on a
   // target of `size` pixels, `scale` pixels per cell, widened by `before`
@@ -1803,6 +1819,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     this->LatticeCells[l]->Activate();
   }
   ostate->PushFramebufferBindings();
+  int fineRows = 1; // level 1: rows of LatticeNodes[1] in use
 
   // The classification's uniforms. An eye-space point's viewport pixel
   // (index units, clamped to +-1e6), written to out[0..1]; its clip w (> 0:
@@ -1860,33 +1877,25 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
 
   // Per level: 1. the nodes' airlight (light code); 2. the cells to refine
   // (no light code). Level 0 covers the viewport; a finer level only its
-  // parent's refined cells (3 x 3 nodes each, in 4 x 4 blocks, its second
-  // differences taken among them; its other cells cleared to 0).
+  // parent's refined cells (3 x 3 nodes each, the five not its parent's
+  // listed on the CPU and evaluated densely; its second differences taken
+  // among them; its other cells cleared to 0).
   for (int l = 0; l < levels; ++l)
   {
     const int nodes[2] = { LatticeNodesSize(cells, l, 0), LatticeNodesSize(cells, l, 1) };
     vtkPlumeShaderFeatures f = base;
     f.Enable("LATTICE_NODES");
-    vtkOpenGLQuadHelper* quad = nullptr;
-    vtkShaderProgram* program = nullptr;
-    if (l == 0)
-    {
-      quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
-      program = quad ? quad->Program : nullptr;
-    }
-    else
-    {
-      program = this->Programs->Ready(renWin, vtkPlumeLatticeCellsVS, nullptr, AirlightSource(), f);
-    }
+    vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
+    vtkShaderProgram* program = quad ? quad->Program : nullptr;
     if (!program)
     {
       ostate->PopFramebufferBindings();
       return false;
     }
     levelUniforms(program, l);
-    into(this->LatticeNodes[l], nodes);
     if (l == 0)
     {
+      into(this->LatticeNodes[l], nodes);
       quad->Render();
       // read back for the frame's airlight range
       std::vector<float> values(static_cast<size_t>(nodes[0]) * nodes[1] * 4);
@@ -1906,7 +1915,10 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     }
     else
     {
-      drawCells(program, l - 1, 4, 0, 0, nodes);
+      // the listed nodes only, 64 a row
+      const int used[2] = { nodes[0], fineRows };
+      into(this->LatticeNodes[l], used);
+      quad->Render();
     }
     this->MarkPass(l == 0 ? "nodes" : ("nodes " + std::to_string(l)).c_str());
 
@@ -1935,6 +1947,10 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     if (l == 0)
     {
       quad->Render();
+      if (levels > 1)
+      {
+        fineRows = this->ListLatticeNodes(cells);
+      }
     }
     else
     {
@@ -2002,7 +2018,58 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     this->LatticeNodes[l]->Deactivate();
     this->LatticeCells[l]->Deactivate();
   }
+  if (levels > 1)
+  {
+    this->LatticeNodeMap->Deactivate();
+    this->LatticeNodeList->Deactivate();
+  }
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkPlumeAirlightPass::ListLatticeNodes(const int cells[][2])
+{
+  // Level 0's flags, from the bound cell target.
+  std::vector<float> flags(static_cast<size_t>(cells[0][0]) * cells[0][1]);
+  glReadPixels(0, 0, cells[0][0], cells[0][1], GL_RED, GL_FLOAT, flags.data());
+  // Level 1's nodes in refined parents that are not level 0's (both indices
+  // even), each once; parents one level-1 cell wide (the viewport's edge)
+  // are refined whole and need none.
+  const int mw = cells[1][0] + 1, mh = cells[1][1] + 1;
+  std::vector<float> map(static_cast<size_t>(mw) * mh, -1.0f);
+  std::vector<float> list;
+  for (int j = 0; j < cells[0][1]; ++j)
+  {
+    for (int i = 0; i < cells[0][0]; ++i)
+    {
+      if (flags[static_cast<size_t>(j) * cells[0][0] + i] == 0.0f || 2 * i + 2 > cells[1][0] ||
+        2 * j + 2 > cells[1][1])
+      {
+        continue;
+      }
+      for (int b = 0; b < 3; ++b)
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          const int nx = 2 * i + a, ny = 2 * j + b;
+          float& k = map[static_cast<size_t>(ny) * mw + nx];
+          if ((nx % 2 != 0 || ny % 2 != 0) && k < 0.0f)
+          {
+            k = static_cast<float>(list.size() / 2);
+            list.push_back(static_cast<float>(nx));
+            list.push_back(static_cast<float>(ny));
+          }
+        }
+      }
+    }
+  }
+  const int rows = std::max(1, static_cast<int>((list.size() / 2 + 63) / 64));
+  list.resize(static_cast<size_t>(64) * rows * 2, 0.0f);
+  this->LatticeNodeMap->Create2DFromRaw(mw, mh, 1, VTK_FLOAT, map.data());
+  this->LatticeNodeList->Create2DFromRaw(64, rows, 2, VTK_FLOAT, list.data());
+  this->LatticeNodeMap->Activate();
+  this->LatticeNodeList->Activate();
+  return rows;
 }
 
 //------------------------------------------------------------------------------
@@ -2117,6 +2184,14 @@ void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
   for (vtkTextureObject** t :
     { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->MediaTexture,
       &this->MediaTransmittanceTexture, &this->TextureAtlas })
+  {
+    if (*t)
+    {
+      (*t)->Delete();
+      *t = nullptr;
+    }
+  }
+  for (vtkTextureObject** t : { &this->LatticeNodeMap, &this->LatticeNodeList })
   {
     if (*t)
     {

@@ -240,16 +240,16 @@ public:
   ///@{
   /**
    * Levels of the airlight lattice (with Downsampling > 1). Level 0 is the
-   * lattice of Downsampling; each further level halves the spacing (while
-   * the spacing is even and its half at least 2: 8, 4, 2) inside the cells
-   * the level before refined: its 3 x 3 nodes in each such cell are
-   * evaluated, its 2 x 2 cells there classified by the same four rules at
-   * their own size (the second differences from the parent's middle row and
-   * column) and interpolated where they pass, and only the last level's
-   * refined cells are evaluated at every pixel. 1: one level. Clamped to
-   * 1..3. Default 2.
+   * lattice of Downsampling; level 1 (with an even Downsampling of at least
+   * 4) halves the spacing inside the cells level 0 refined: their 3 x 3
+   * nodes are known (the parent's four corners) or evaluated (the other
+   * five, listed on the CPU from the parent's flags and evaluated densely),
+   * their 2 x 2 cells classified by the same four rules at their own size
+   * (the second differences from the parent's middle row and column) and
+   * interpolated where they pass; only the last level's refined cells are
+   * evaluated at every pixel. 1: one level. Clamped to 1..2. Default 2.
    */
-  vtkSetClampMacro(LatticeLevels, int, 1, 3);
+  vtkSetClampMacro(LatticeLevels, int, 1, 2);
   vtkGetMacro(LatticeLevels, int);
   ///@}
 
@@ -305,7 +305,7 @@ public:
   ///@}
 
   /** At most this many lattice levels (LatticeLevels). */
-  static constexpr int MaximumLatticeLevels = 3;
+  static constexpr int MaximumLatticeLevels = 2;
 
   ///@{
   /**
@@ -577,6 +577,10 @@ protected:
   // cells are 0).
   vtkTextureObject* LatticeNodes[MaximumLatticeLevels] = {};
   vtkTextureObject* LatticeCells[MaximumLatticeLevels] = {};
+  // Level 1: per node its texel index in LatticeNodes[1] or -1 (R32F), and
+  // per texel of LatticeNodes[1] its node (RG32F), uploaded every frame.
+  vtkTextureObject* LatticeNodeMap = nullptr;
+  vtkTextureObject* LatticeNodeList = nullptr;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO; // the refined cells' quads come from gl_VertexID
   double LastRefinedCellFraction = 0.0;
   double LastRefinedPixelFraction = 0.0;
@@ -587,6 +591,10 @@ protected:
   int LatticeFrame[3] = { 0, 0, 0 };
   vtkWeakPointer<vtkOpenGLRenderWindow> LatticeWindow;
   void CountLatticeFlags();
+  // Reads level 0's cell flags back (their target bound), lists the level-1
+  // nodes to evaluate into LatticeNodeMap/LatticeNodeList (activated) and
+  // returns the rows of LatticeNodes[1] they fill.
+  int ListLatticeNodes(const int cells[][2]);
   // ProfilePasses: (pass, seconds) of the last frame, and when the pass being
   // timed began. MarkPass finishes the GL work so far and records the time
   // since the last mark as `pass` (nullptr: starts the clock, a new frame).

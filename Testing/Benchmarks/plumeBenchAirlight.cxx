@@ -554,7 +554,7 @@ std::vector<std::string> Jobs(bool quick)
   const std::string half = quick ? "@64" : "@256";
   std::vector<std::string> jobs = { "opaque", "ours", "grey", "shadow", "shadow_rebake", "opaque" + half,
     "ours" + half, "floor", "copy", "down:1", "down:2", "down:4", "down:8", "down:8:0.01", "down:8:0", "grey_down:8",
-    "down:8:0.005:1", "down:8:0.005:2", "down:8:0.005:3", "points_down:1",
+    "down:8:0.005:1", "down:8:0.005:2", "points_down:1", "points_down:8", "spot4_down:8", "spot2_down:8",
     "lights:7", "lights:8", "lights:9", "lights:16", "lights:17" };
   for (int n : MarchSteps(quick))
   {
@@ -704,7 +704,7 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
   // The airlight lattice (Downsampling D) against the full resolution,
   // and the floor of any full-screen pass on this renderer.
   for (const std::string d :
-    { "1", "2", "4", "8", "8:0.01", "8:0", "8:0.005:1", "8:0.005:2", "8:0.005:3" })
+    { "1", "2", "4", "8", "8:0.01", "8:0", "8:0.005:1", "8:0.005:2" })
   {
     const auto down = results.find("down:" + d);
     if (down == results.end())

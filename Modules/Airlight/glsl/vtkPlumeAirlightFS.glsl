@@ -46,6 +46,9 @@ uniform sampler2D LatticeCells;    // R: 0 interpolated, 1 refined
 uniform float LatticeTolerance;    // the largest estimated interpolation error (absolute)
 uniform float LatticeDepthTolerance; // relative eye-depth mismatch that marks a surface edge
 uniform int LatticeParentBlock;    // a finer level: its cells per parent cell side (2); 0 on level 0
+uniform sampler2D LatticeCoarseNodes; // a finer level: its parent level's nodes
+uniform sampler2D LatticeNodeMap;  // a finer level: per node, its texel index in LatticeNodes (see nodeAirlight)
+uniform sampler2D LatticeNodeList; // a finer level's nodes pass: per texel of LatticeNodes, its node (RG)
 //PLUME::IF LATTICE_CLASSIFY
 uniform vec3 LightPixel[NUMBER_OF_LIGHTS]; // the lights' viewport pixel and 1 if in front of the eye
 uniform vec4 LightShaft[NUMBER_OF_LIGHTS]; // a narrow spot's axis on the viewport: pixels (x0, y0), (x1, y1)
@@ -832,21 +835,24 @@ ivec2 nodePixel(ivec2 node)
   return min(node * Lattice, ivec2(ViewportSize) - 1);
 }
 
-// The texel of node n, for cell `cell`, in the nodes' texture: level 0 stores
-// them in order; a finer level stores the 3 x 3 nodes of each refined parent
-// cell in a 4 x 4 block of its own (blocks aligned to 4 texels: llvmpipe
-// shades 4 x 4 blocks, and 3 x 3 quads straddling them cost up to 4 blocks),
-// so node n of a cell in parent p sits at n + 2 p.
-ivec2 nodeTexel(ivec2 n, ivec2 cell)
+// Node n's airlight. Level 0 stores its nodes in order. A finer level
+// (spacing halved) evaluates only the nodes of its parent's refined cells
+// that are not the parent's own nodes, packed densely 64 a row as the CPU
+// listed them (llvmpipe shades 4 x 4 blocks: a block per parent cell would
+// run 16 lanes for its 5 new nodes); its nodes with both indices even are
+// the parent's.
+vec3 nodeAirlight(ivec2 n)
 {
-  return LatticeParentBlock > 0 ? n + cell / LatticeParentBlock * (4 - LatticeParentBlock) : n;
-}
-
-// The node a fragment of the nodes' target evaluates (the inverse of
-// nodeTexel; a block's fourth row and column repeat its third).
-ivec2 texelNode(ivec2 t)
-{
-  return LatticeParentBlock > 0 ? t / 4 * LatticeParentBlock + min(t % 4, LatticeParentBlock) : t;
+  if (LatticeParentBlock == 0)
+  {
+    return texelFetch(LatticeNodes, n, 0).rgb;
+  }
+  if (all(equal(n % 2, ivec2(0))))
+  {
+    return texelFetch(LatticeCoarseNodes, n / 2, 0).rgb;
+  }
+  int k = int(texelFetch(LatticeNodeMap, n, 0).r);
+  return texelFetch(LatticeNodes, ivec2(k % 64, k / 64), 0).rgb;
 }
 
 // The cell holding viewport pixel `pixel` (the last cell of a row or column
@@ -864,7 +870,13 @@ vec3 interpolatedAirlight(ivec2 pixel)
   ivec2 c = cellOf(pixel);
   vec2 p0 = vec2(nodePixel(c));
   vec2 f = (vec2(pixel) - p0) / (vec2(nodePixel(c + 1)) - p0);
-  return textureLod(LatticeNodes, (vec2(nodeTexel(c, c)) + f + 0.5) / vec2(textureSize(LatticeNodes, 0)), 0.0).rgb;
+  if (LatticeParentBlock > 0)
+  {
+    vec3 a = mix(nodeAirlight(c), nodeAirlight(c + ivec2(1, 0)), f.x);
+    vec3 b = mix(nodeAirlight(c + ivec2(0, 1)), nodeAirlight(c + 1), f.x);
+    return mix(a, b, f.y);
+  }
+  return textureLod(LatticeNodes, (vec2(c) + f + 0.5) / vec2(LatticeCellCount + 1), 0.0).rgb;
 }
 
 //PLUME::IF LATTICE_CLASSIFY
@@ -875,10 +887,10 @@ vec3 secondDifference(ivec2 n, ivec2 axis, ivec2 lo, ivec2 hi)
 {
   int i = axis.x == 1 ? n.x : n.y;
   ivec2 range = axis.x == 1 ? ivec2(lo.x, hi.x) : ivec2(lo.y, hi.y);
-  ivec2 c = nodeTexel(n + axis * (clamp(i, range.x + 1, range.y - 1) - i), lo);
-  vec3 a = texelFetch(LatticeNodes, c - axis, 0).rgb;
-  vec3 b = texelFetch(LatticeNodes, c, 0).rgb;
-  vec3 d = texelFetch(LatticeNodes, c + axis, 0).rgb;
+  ivec2 c = n + axis * (clamp(i, range.x + 1, range.y - 1) - i);
+  vec3 a = nodeAirlight(c - axis);
+  vec3 b = nodeAirlight(c);
+  vec3 d = nodeAirlight(c + axis);
   return abs(a - 2.0 * b + d);
 }
 
@@ -1003,7 +1015,8 @@ void main()
 #ifdef PLUME_FEATURE_LATTICE_NODES
   // One lattice node per fragment of the nodes' target: the airlight of its
   // ray over the whole ray (cells with a translucent medium are refined).
-  ivec2 node = nodePixel(texelNode(ivec2(gl_FragCoord.xy)));
+  ivec2 t = ivec2(gl_FragCoord.xy);
+  ivec2 node = nodePixel(LatticeParentBlock > 0 ? ivec2(texelFetch(LatticeNodeList, t, 0).rg) : t);
   float xsNode = viewRay(node, texelFetch(SceneDepth, node, 0).r, o, r);
   gl_FragDepth = 1.0;
   gl_FragData[0] = vec4(airlightOf(o, r, xsNode), 1.0);

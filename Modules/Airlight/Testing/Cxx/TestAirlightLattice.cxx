@@ -91,11 +91,11 @@ int TestAirlightLattice(int, char*[])
   PLUME_CHECK(edgeCount > 200);
   PLUME_CHECK(nearCount > 300);
 
-  // Every spacing with one level, and the finer levels (spacing halved inside
-  // refined cells: 8 -> 4 -> 2, 4 -> 2).
+  // Every spacing with one level, and the second level (spacing halved
+  // inside refined cells: 8 -> 4, 4 -> 2).
   double onePixels = 0.0; // the refined pixels with one level, at this spacing
   for (const std::pair<int, int> dl : std::vector<std::pair<int, int>>{
-         { 1, 1 }, { 2, 1 }, { 4, 1 }, { 4, 2 }, { 8, 1 }, { 8, 2 }, { 8, 3 } })
+         { 1, 1 }, { 2, 1 }, { 4, 1 }, { 4, 2 }, { 8, 1 }, { 8, 2 } })
   {
     const int d = dl.first, levels = dl.second;
     s.Pass->SetDownsampling(d);
@@ -134,8 +134,10 @@ int TestAirlightLattice(int, char*[])
     }
     else
     {
-      // the finer levels interpolate a good part of the coarse refined cells
-      PLUME_CHECK(pixels < 0.8 * onePixels);
+      // The second level interpolates a good part of the coarse refined cells
+      // (here 49-54 % of their pixels; wrong level-1 nodes, e.g. another
+      // node's value, leave 31-35 %: their second differences refine more).
+      PLUME_CHECK(pixels < 0.6 * onePixels);
     }
   }
 
