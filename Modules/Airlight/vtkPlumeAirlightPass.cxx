@@ -47,6 +47,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -473,7 +474,7 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Advanced()
       .Doc("Airlight lattice: evaluated every D pixels, interpolated in cells whose estimated error is within upsampling_tolerance and which hold no surface edge, light or translucent medium, every pixel of the other cells evaluated; 1: every pixel.")
       .Bind(&T::SetDownsampling, &T::GetDownsampling);
-    t.Integer("lattice_levels", "LatticeLevels", 2)
+    t.Integer("lattice_levels", "LatticeLevels", 1)
       .Between(1, 2)
       .Panel("Medium")
       .Advanced()
@@ -1789,15 +1790,13 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     program->SetUniformi("LatticeNodeList", (l == 0 ? this->LatticeNodes[0] : this->LatticeNodeList)->GetTextureUnit());
   };
   // Level l's refined cells drawn by the lattice cells' vertex shader on a
-  // target of `size` pixels, `scale` pixels per cell, widened by `before`
-  // and `after` pixels: the viewport (scale: the level's spacing) or the next
-  // level's nodes or cells (scale 2: each cell holds 2 x 2 of the next level's).
-  auto drawCells = [&](vtkShaderProgram* program, int l, int scale, int before, int after, const int size[2]) {
+  // target of `size` pixels, `scale` pixels per cell: the viewport (scale:
+  // the level's spacing) or the next level's cells (scale 2: each cell holds
+  // 2 x 2 of the next level's).
+  auto drawCells = [&](vtkShaderProgram* program, int l, int scale, const int size[2]) {
     program->SetUniformi("DrawCells", this->LatticeCells[l]->GetTextureUnit());
     program->SetUniformi("DrawCellSize", scale);
     program->SetUniform2i("DrawCellCount", cells[l]);
-    const int margin[2] = { before, after };
-    program->SetUniform2i("DrawCellMargin", margin);
     const float target[2] = { static_cast<float>(size[0]), static_cast<float>(size[1]) };
     program->SetUniform2f("DrawTargetSize", target);
     this->EmptyVAO->Bind();
@@ -1956,7 +1955,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     {
       ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-      drawCells(program, l - 1, 2, 0, 0, cells[l]);
+      drawCells(program, l - 1, 2, cells[l]);
     }
     this->MarkPass(l == 0 ? "classify" : ("classify " + std::to_string(l)).c_str());
   }
@@ -2010,7 +2009,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
       return false;
     }
     levelUniforms(program, refine ? l - 1 : l);
-    drawCells(program, l - 1, spacing[l - 1], 0, 0, viewport);
+    drawCells(program, l - 1, spacing[l - 1], viewport);
     this->MarkPass(refine ? "refine" : ("interpolate " + std::to_string(l)).c_str());
   }
   for (int l = 0; l < levels; ++l)
@@ -2134,27 +2133,35 @@ void vtkPlumeAirlightPass::MarkPass(const char* pass)
   glFinish();
   const double now =
     std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  const double cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC; // all the process's threads
   if (pass)
   {
-    this->PassSeconds.emplace_back(pass, now - this->PassStart);
+    this->PassSeconds.push_back({ pass, now - this->PassStart, cpu - this->PassStartCPU });
   }
   else
   {
     this->PassSeconds.clear();
   }
   this->PassStart = now;
+  this->PassStartCPU = cpu;
 }
 
 //------------------------------------------------------------------------------
 const char* vtkPlumeAirlightPass::GetProfiledPassName(int pass)
 {
-  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].first.c_str() : nullptr;
+  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].Name.c_str() : nullptr;
 }
 
 //------------------------------------------------------------------------------
 double vtkPlumeAirlightPass::GetProfiledPassSeconds(int pass)
 {
-  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].second : 0.0;
+  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].Seconds : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeAirlightPass::GetProfiledPassCPUSeconds(int pass)
+{
+  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].CPUSeconds : 0.0;
 }
 
 //------------------------------------------------------------------------------

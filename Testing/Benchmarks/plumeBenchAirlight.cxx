@@ -50,6 +50,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <functional>
 #include <map>
 
@@ -228,10 +229,13 @@ nlohmann::json ErrorAgainst(const test::FloatImage& image, const Expected& expec
 
 // Median time of `frames` renders after `warmups`; the camera turns by half
 // a degree each frame (a real re-render); `beforeFrame(f)` may change the scene.
+// `cpu` (optional): the median CPU time of the process per frame (all its
+// threads, llvmpipe's included: less sensitive to the machine's load than
+// wall time).
 double TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, int frames, int warmups = 2,
-  const std::function<void(int)>& beforeFrame = nullptr)
+  const std::function<void(int)>& beforeFrame = nullptr, double* cpu = nullptr)
 {
-  std::vector<double> times;
+  std::vector<double> times, cpuTimes;
   for (int f = 0; f < frames + warmups; ++f)
   {
     renderer->GetActiveCamera()->Azimuth(f % 2 ? 0.5 : -0.5);
@@ -240,12 +244,18 @@ double TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, int frames, in
       beforeFrame(f);
     }
     const double t0 = Now();
+    const std::clock_t c0 = std::clock();
     window->Render();
     window->WaitForCompletion();
     if (f >= warmups)
     {
       times.push_back(Now() - t0);
+      cpuTimes.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
     }
+  }
+  if (cpu)
+  {
+    *cpu = Median(cpuTimes);
   }
   return Median(times);
 }
@@ -498,13 +508,17 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
     renderer->SetPass(copy);
   }
   vtkLight* spot = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(1));
-  const double frameTime = TimeFrames(window, renderer, frames, 2, [&](int f) {
-    if (job == "shadow_rebake")
-    {
-      spot->SetPosition(2.5, 3.5, f % 2 ? -1.5 : -1.500001); // a changed light: its map is rebuilt
-    }
-  });
-  nlohmann::json result = { { "frame_s", frameTime }, { "peak_rss_mb", PeakRSSMB() },
+  double frameCPU = 0.0;
+  const double frameTime = TimeFrames(
+    window, renderer, frames, 2,
+    [&](int f) {
+      if (job == "shadow_rebake")
+      {
+        spot->SetPosition(2.5, 3.5, f % 2 ? -1.5 : -1.500001); // a changed light: its map is rebuilt
+      }
+    },
+    &frameCPU);
+  nlohmann::json result = { { "frame_s", frameTime }, { "frame_cpu_s", frameCPU }, { "peak_rss_mb", PeakRSSMB() },
     { "shadowed_lights", pass->GetNumberOfShadowedLights() }, { "bakes", pass->GetNumberOfShadowMapBakes() },
     { "light_groups", pass->GetNumberOfLightGroups() }, { "downsampling", pass->GetDownsampling() },
     { "tolerance", pass->GetUpsamplingTolerance() }, { "lattice_levels", pass->GetLatticeLevels() },
@@ -515,20 +529,23 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
     // Per-pass times (the pass's ProfilePasses: the GL work finished after
     // each pass), medians of `frames` more frames, ms.
     pass->ProfilePassesOn();
-    std::map<std::string, std::vector<double>> passes;
+    std::map<std::string, std::vector<double>> passes, passesCPU;
     TimeFrames(window, renderer, frames, 1, [&](int f) {
       for (int k = 0; f > 1 && k < pass->GetNumberOfProfiledPasses(); ++k)
       {
         passes[pass->GetProfiledPassName(k)].push_back(1e3 * pass->GetProfiledPassSeconds(k));
+        passesCPU[pass->GetProfiledPassName(k)].push_back(1e3 * pass->GetProfiledPassCPUSeconds(k));
       }
     });
     pass->ProfilePassesOff();
-    nlohmann::json times;
+    nlohmann::json times, cpuTimes;
     for (auto& p : passes)
     {
       times[p.first] = Median(p.second);
+      cpuTimes[p.first] = Median(passesCPU[p.first]);
     }
     result["passes_ms"] = times;
+    result["passes_cpu_ms"] = cpuTimes;
   }
   if (job == "opaque" || job == "shadow_rebake" || job == "floor" || job == "copy")
   {

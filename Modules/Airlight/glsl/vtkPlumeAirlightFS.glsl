@@ -33,12 +33,12 @@ uniform vec2 ViewportSize;    // w, h of the full-resolution viewport
 // between four nodes that must be refined; LATTICE_RESOLVE (no light code)
 // writes the frame with the nodes' bilinear interpolation in the other cells
 // and no airlight in refined ones; LATTICE_REFINE (drawn by the lattice cells'
-// vertex shader over refined cells only) adds their exact airlight. A finer
-// level (spacing D/2, vtkPlumeAirlightPass::LatticeLevels) runs NODES and
-// CLASSIFY again inside the coarser level's refined cells (drawn there by the
-// same vertex shader), LATTICE_INTERPOLATE adds its interpolation in its
-// interpolated cells, and LATTICE_REFINE runs in the finest level's refined
-// cells only. The uniforms below describe the level being drawn.
+// vertex shader over refined cells only) adds their exact airlight. The
+// second level (spacing D/2, vtkPlumeAirlightPass::LatticeLevels) runs NODES
+// on its listed nodes (see nodeAirlight) and CLASSIFY inside level 0's
+// refined cells (drawn there by the same vertex shader), LATTICE_INTERPOLATE
+// adds its interpolation in its interpolated cells, and LATTICE_REFINE runs
+// in its refined cells only. The uniforms below describe the level drawn.
 uniform int Lattice;               // D
 uniform ivec2 LatticeCellCount;    // cells per row and column (nodes: one more)
 uniform sampler2D LatticeNodes;    // RGB: the nodes' airlight

@@ -3,19 +3,17 @@
 // A lattice's refined cells as quads (no vertex buffer: draw 6 vertices per
 // cell, DrawCellCount.x * DrawCellCount.y cells) on a target of
 // DrawTargetSize pixels: the viewport (the cells' pixels) or a finer
-// lattice's node or cell texture (the finer level inside refined cells).
-// Cell (i, j) covers the target's pixels [i S, (i + 1) S) x [j S, (j + 1) S)
-// (S = DrawCellSize), widened by DrawCellMargin (pixels before, after), the
-// last cell of a row or column up to the target's edge. A cell whose
-// DrawCells texel is 0 (interpolated) collapses to a point outside the view,
-// so its pixels never run the fragment shader; llvmpipe would run it for the
-// whole quad otherwise. (Own uniform names: the fragment shader may describe
-// another level of the same lattice.)
+// lattice level's cell texture (its cells inside the refined ones). Cell
+// (i, j) covers the target's pixels [i S, (i + 1) S) x [j S, (j + 1) S)
+// (S = DrawCellSize), the last cell of a row or column up to the target's
+// edge. A cell whose DrawCells texel is 0 (interpolated) collapses to a
+// point outside the view, so its pixels never run the fragment shader;
+// llvmpipe would run it for the whole quad otherwise. (Uniform names of its
+// own: the fragment shader may describe another level of the same lattice.)
 
 uniform sampler2D DrawCells; // per cell: 0 interpolated, else refined
 uniform int DrawCellSize;    // S, target pixels per cell side
 uniform ivec2 DrawCellCount;
-uniform ivec2 DrawCellMargin; // target pixels added before and after each cell
 uniform vec2 DrawTargetSize;
 
 out vec2 texCoord; // (0, 0): for fragment shaders written for VTK's full-screen quad
@@ -32,9 +30,7 @@ void main()
     gl_Position = vec4(2.0, 2.0, 0.0, 1.0);
     return;
   }
-  ivec2 q = QuadCorners[gl_VertexID % 6];
-  ivec2 c = cell + q;
-  vec2 corner = vec2(c * DrawCellSize) + mix(vec2(-DrawCellMargin.x), vec2(DrawCellMargin.y), bvec2(q));
-  corner = mix(corner, DrawTargetSize, bvec2(equal(c, DrawCellCount)));
-  gl_Position = vec4(2.0 * clamp(corner, vec2(0.0), DrawTargetSize) / DrawTargetSize - 1.0, 0.0, 1.0);
+  ivec2 c = cell + QuadCorners[gl_VertexID % 6];
+  vec2 corner = mix(vec2(c * DrawCellSize), DrawTargetSize, bvec2(equal(c, DrawCellCount)));
+  gl_Position = vec4(2.0 * min(corner, DrawTargetSize) / DrawTargetSize - 1.0, 0.0, 1.0);
 }

@@ -136,7 +136,7 @@ int TestAirlightLattice(int, char*[])
     {
       // The second level interpolates a good part of the coarse refined cells
       // (here 49-54 % of their pixels; wrong level-1 nodes, e.g. another
-      // node's value, leave 31-35 %: their second differences refine more).
+      // node's value, only 23-31 %: their second differences refine more).
       PLUME_CHECK(pixels < 0.6 * onePixels);
     }
   }
