@@ -33,10 +33,12 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPixelBufferObject.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkVolume.h"
 #include "vtk_glew.h"
@@ -44,6 +46,8 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -224,6 +228,35 @@ constexpr double LatticeDepthTolerance = 1e-3;
 // Spots narrower than this (cone half-angle, degrees) can make a shaft
 // thinner than a lattice cell: the cells along their axis are refined.
 constexpr double NarrowSpotAngle = 10.0;
+
+// The airlight lattice's levels for downsampling D, at most `wanted` of them,
+// on a w x h viewport (w, h >= 2): each level's node spacing (D, then halved
+// while it is even and its half at least 2) and cells per row and column;
+// returns how many levels.
+int LatticeGeometry(int D, int wanted, int w, int h, int spacing[], int count[][2])
+{
+  int levels = 0;
+  for (int s = D; levels < wanted; s /= 2)
+  {
+    spacing[levels] = s;
+    count[levels][0] = (w - 2) / s + 1;
+    count[levels][1] = (h - 2) / s + 1;
+    ++levels;
+    if (s % 2 != 0 || s / 2 < 2)
+    {
+      break;
+    }
+  }
+  return levels;
+}
+
+// The size of lattice level l's nodes texture along `axis`: level 0 its
+// nodes in order (cells + 1); level 1 those it evaluates, 64 a row (at most
+// all of its nodes).
+int LatticeNodesSize(const int count[][2], int l, int axis)
+{
+  return l == 0 ? count[0][axis] + 1 : axis == 0 ? 64 : ((count[l][0] + 1) * (count[l][1] + 1) + 63) / 64;
+}
 
 // The airlight's fragment shader with the textured lights' shared GLSL in it
 // (one string for the process: the program cache knows templates by address).
@@ -441,6 +474,12 @@ const vtkPlumeParameterTable& vtkPlumeAirlightPass::GetParameterTable()
       .Advanced()
       .Doc("Airlight lattice: evaluated every D pixels, interpolated in cells whose estimated error is within upsampling_tolerance and which hold no surface edge, light or translucent medium, every pixel of the other cells evaluated; 1: every pixel.")
       .Bind(&T::SetDownsampling, &T::GetDownsampling);
+    t.Integer("lattice_levels", "LatticeLevels", 1)
+      .Between(1, 2)
+      .Panel("Medium")
+      .Advanced()
+      .Doc("With downsampling: levels of the airlight lattice; level 2 halves the spacing (8 to 4) inside the cells level 1 refined, and only the last level's refined cells are evaluated at every pixel.")
+      .Bind(&T::SetLatticeLevels, &T::GetLatticeLevels);
     t.Real("upsampling_tolerance", "UpsamplingTolerance", 0.005)
       .Between(0.0, 1.0)
       .Panel("Medium")
@@ -520,6 +559,7 @@ void vtkPlumeAirlightPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
   os << indent << "SpotSteps: " << this->SpotSteps << "\n";
   os << indent << "Downsampling: " << this->Downsampling << "\n";
+  os << indent << "LatticeLevels: " << this->LatticeLevels << "\n";
   os << indent << "UpsamplingTolerance: " << this->UpsamplingTolerance << "\n";
   os << indent << "TableResolution: " << this->TableResolution << "\n";
   os << indent << "MarchSteps: " << this->MarchSteps << "\n";
@@ -613,24 +653,41 @@ bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w,
   }
   if (this->Downsampling > 1 && w >= 2 && h >= 2)
   {
-    // the lattice: (cells + 1)^2 nodes' airlight (bilinear filtering: the
-    // interpolated cells' one fetch), one refinement flag per cell
-    const int cw = (w - 2) / this->Downsampling + 1;
-    const int ch = (h - 2) / this->Downsampling + 1;
-    for (vtkTextureObject** t : { &this->LowTexture, &this->CellTexture })
+    // each lattice level: (cells + 1)^2 nodes' airlight (bilinear filtering:
+    // the interpolated cells' one fetch), one refinement flag per cell
+    int spacing[MaximumLatticeLevels], count[MaximumLatticeLevels][2];
+    const int levels = LatticeGeometry(this->Downsampling, this->LatticeLevels, w, h, spacing, count);
+    for (int l = 0; l < levels; ++l)
     {
-      const bool nodes = t == &this->LowTexture;
-      if (!*t)
+      for (vtkTextureObject** t : { &this->LatticeNodes[l], &this->LatticeCells[l] })
+      {
+        const bool nodes = t == &this->LatticeNodes[l];
+        const int tw = nodes ? LatticeNodesSize(count, l, 0) : count[l][0];
+        const int th = nodes ? LatticeNodesSize(count, l, 1) : count[l][1];
+        if (!*t)
+        {
+          *t = vtkTextureObject::New();
+          (*t)->SetContext(renWin);
+          (*t)->SetMinificationFilter(nodes ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+          (*t)->SetMagnificationFilter(nodes ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+          (*t)->SetWrapS(vtkTextureObject::ClampToEdge);
+          (*t)->SetWrapT(vtkTextureObject::ClampToEdge);
+          (*t)->Allocate2D(tw, th, nodes ? 4 : 1, VTK_FLOAT);
+        }
+        (*t)->Resize(tw, th);
+      }
+    }
+    for (vtkTextureObject** t : { &this->LatticeNodeMap, &this->LatticeNodeList })
+    {
+      if (levels > 1 && !*t)
       {
         *t = vtkTextureObject::New();
         (*t)->SetContext(renWin);
-        (*t)->SetMinificationFilter(nodes ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
-        (*t)->SetMagnificationFilter(nodes ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+        (*t)->SetMinificationFilter(vtkTextureObject::Nearest);
+        (*t)->SetMagnificationFilter(vtkTextureObject::Nearest);
         (*t)->SetWrapS(vtkTextureObject::ClampToEdge);
         (*t)->SetWrapT(vtkTextureObject::ClampToEdge);
-        (*t)->Allocate2D(nodes ? cw + 1 : cw, nodes ? ch + 1 : ch, nodes ? 4 : 1, VTK_FLOAT);
       }
-      (*t)->Resize(nodes ? cw + 1 : cw, nodes ? ch + 1 : ch);
     }
     if (!this->LowFrameBuffer)
     {
@@ -1210,6 +1267,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   }
 
   // 1. The scene into our float colour + depth targets.
+  this->MarkPass(nullptr);
   ostate->PushFramebufferBindings();
   this->FrameBuffer->Bind();
   this->FrameBuffer->AddColorAttachment(0, this->ColorTexture);
@@ -1222,6 +1280,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   inner.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
   inner.SetFrameBuffer(this->FrameBuffer);
   this->RenderDelegate(&inner, anyTexture);
+  this->MarkPass("scene");
   this->FrameBuffer->RemoveColorAttachments(1);
   this->FrameBuffer->RemoveDepthAttachment();
   ostate->PopFramebufferBindings();
@@ -1463,7 +1522,10 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       mediaDepthTexture->Activate();
     }
   }
-  this->LastRefinedCellFraction = 0.0; // stays 0 unless a group uses the lattice
+  // stays 0 unless a group uses the lattice
+  this->LastRefinedCellFraction = 0.0;
+  this->LastRefinedPixelFraction = 0.0;
+  this->LatticeFlagsPending = false;
   for (size_t gi = 0; gi < groups.size(); ++gi)
   {
     const Group& group = groups[gi];
@@ -1668,8 +1730,9 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       ostate->vtkglViewport(x, y, w, h);
       ostate->vtkglScissor(x, y, w, h);
       quad->Render();
+      this->MarkPass("pixels");
     }
-    else if (!this->RenderLattice(renWin, features, setUniforms, blendGroup, cells, x, y, w, h,
+    else if (!this->RenderLattice(renWin, features, setUniforms, blendGroup, x, y, w, h,
                camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0),
                &positions[3 * group.First], &axes[3 * group.First], &cosCones[group.First], group.Count))
     {
@@ -1706,18 +1769,39 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vtkPlumeShaderFeatures& base,
   const std::function<void(vtkShaderProgram*)>& setUniforms, const std::function<void()>& blendGroup,
-  const int cells[2], int x, int y, int w, int h, vtkMatrix4x4* projection, const float* lights,
+  int x, int y, int w, int h, vtkMatrix4x4* projection, const float* lights,
   const float* axes, const float* cosCones, int count)
 {
   vtkOpenGLState* ostate = renWin->GetState();
-  const int D = this->Downsampling;
-  const int nodes[2] = { cells[0] + 1, cells[1] + 1 };
-  auto latticeUniforms = [&](vtkShaderProgram* program) {
+  int spacing[MaximumLatticeLevels], cells[MaximumLatticeLevels][2];
+  const int levels = LatticeGeometry(this->Downsampling, this->LatticeLevels, w, h, spacing, cells);
+  const int viewport[2] = { w, h };
+  // level l's spacing, cells and textures, for the fragment shader
+  auto levelUniforms = [&](vtkShaderProgram* program, int l) {
     setUniforms(program);
-    program->SetUniformi("Lattice", D);
-    program->SetUniform2i("LatticeCellCount", cells);
-    program->SetUniformi("LatticeNodes", this->LowTexture->GetTextureUnit());
-    program->SetUniformi("LatticeCells", this->CellTexture->GetTextureUnit());
+    program->SetUniformi("Lattice", spacing[l]);
+    program->SetUniform2i("LatticeCellCount", cells[l]);
+    program->SetUniformi("LatticeNodes", this->LatticeNodes[l]->GetTextureUnit());
+    program->SetUniformi("LatticeCells", this->LatticeCells[l]->GetTextureUnit());
+    program->SetUniformi("LatticeParentBlock", l == 0 ? 0 : 2);
+    // (level 0 reads none of these; its samplers still need a valid unit)
+    program->SetUniformi("LatticeCoarseNodes", this->LatticeNodes[0]->GetTextureUnit());
+    program->SetUniformi("LatticeNodeMap", (l == 0 ? this->LatticeNodes[0] : this->LatticeNodeMap)->GetTextureUnit());
+    program->SetUniformi("LatticeNodeList", (l == 0 ? this->LatticeNodes[0] : this->LatticeNodeList)->GetTextureUnit());
+  };
+  // Level l's refined cells drawn by the lattice cells' vertex shader on a
+  // target of `size` pixels, `scale` pixels per cell: the viewport (scale:
+  // the level's spacing) or the next level's cells (scale 2: each cell holds
+  // 2 x 2 of the next level's).
+  auto drawCells = [&](vtkShaderProgram* program, int l, int scale, const int size[2]) {
+    program->SetUniformi("DrawCells", this->LatticeCells[l]->GetTextureUnit());
+    program->SetUniformi("DrawCellSize", scale);
+    program->SetUniform2i("DrawCellCount", cells[l]);
+    const float target[2] = { static_cast<float>(size[0]), static_cast<float>(size[1]) };
+    program->SetUniform2f("DrawTargetSize", target);
+    this->EmptyVAO->Bind();
+    glDrawArrays(GL_TRIANGLES, 0, 6 * cells[l][0] * cells[l][1]);
+    this->EmptyVAO->Release();
   };
   auto into = [&](vtkTextureObject* target, const int size[2]) {
     this->LowFrameBuffer->Bind();
@@ -1728,51 +1812,17 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     ostate->vtkglScissor(0, 0, size[0], size[1]);
   };
   ostate->vtkglDisable(GL_BLEND);
-  this->LowTexture->Activate();
-  this->CellTexture->Activate();
+  for (int l = 0; l < levels; ++l)
+  {
+    this->LatticeNodes[l]->Activate();
+    this->LatticeCells[l]->Activate();
+  }
   ostate->PushFramebufferBindings();
+  int fineRows = 1; // level 1: rows of LatticeNodes[1] in use
 
-  // 1. The nodes' airlight (light code), read back for the frame's airlight range.
-  vtkPlumeShaderFeatures f = base;
-  f.Enable("LATTICE_NODES");
-  vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
-  if (!quad)
-  {
-    ostate->PopFramebufferBindings();
-    return false;
-  }
-  latticeUniforms(quad->Program);
-  into(this->LowTexture, nodes);
-  quad->Render();
-  std::vector<float> values(static_cast<size_t>(nodes[0]) * nodes[1] * 4);
-  glReadPixels(0, 0, nodes[0], nodes[1], GL_RGBA, GL_FLOAT, values.data());
-  float lo = HUGE_VALF, hi = -HUGE_VALF;
-  for (size_t k = 0; k < values.size(); ++k)
-  {
-    if (k % 4 != 3 && std::isfinite(values[k]))
-    {
-      lo = std::min(lo, values[k]);
-      hi = std::max(hi, values[k]);
-    }
-  }
-  // The error goal is relative to the airlight image's range; an 8-bit window
-  // shows at most 1 of it (a light in view can make the range huge).
-  const double range = hi > lo ? std::min(static_cast<double>(hi - lo), 1.0) : 0.0;
-
-  // 2. The cells to refine (no light code).
-  f = base;
-  f.Enable("LATTICE_CLASSIFY").Enable("NO_LIGHTS");
-  quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
-  if (!quad)
-  {
-    ostate->PopFramebufferBindings();
-    return false;
-  }
-  latticeUniforms(quad->Program);
-  quad->Program->SetUniformf("LatticeTolerance", static_cast<float>(this->UpsamplingTolerance * range));
-  quad->Program->SetUniformf("LatticeDepthTolerance", static_cast<float>(LatticeDepthTolerance));
-  // An eye-space point's viewport pixel (index units, clamped to +-1e6),
-  // written to out[0..1]; its clip w (> 0: in front of the eye) returned.
+  // The classification's uniforms. An eye-space point's viewport pixel
+  // (index units, clamped to +-1e6), written to out[0..1]; its clip w (> 0:
+  // in front of the eye) returned.
   auto toPixel = [&](double x, double y, double z, float out[2]) {
     double p[4] = { x, y, z, 1.0 };
     projection->MultiplyPoint(p, p);
@@ -1794,7 +1844,6 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
       pixels[3 * l + 2] = 1.0f;
     }
   }
-  quad->Program->SetUniform3fv("LightPixel", std::max(count, 1), reinterpret_cast<const float(*)[3]>(pixels.data()));
   // Narrow spots (cone below NarrowSpotAngle): the image of their axis from
   // the apex to the far plane, clipped to the near plane (far away: none).
   std::vector<float> shafts(4 * std::max(count, 1), 1e6f);
@@ -1823,66 +1872,349 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     toPixel(a.x, a.y, a.z, &shafts[4 * l]);
     toPixel(b.x, b.y, b.z, &shafts[4 * l + 2]);
   }
-  quad->Program->SetUniform4fv("LightShaft", std::max(count, 1), reinterpret_cast<const float(*)[4]>(shafts.data()));
-  into(this->CellTexture, cells);
-  quad->Render();
-  std::vector<float> refined(static_cast<size_t>(cells[0]) * cells[1]);
-  glReadPixels(0, 0, cells[0], cells[1], GL_RED, GL_FLOAT, refined.data());
-  this->LastRefinedCellFraction =
-    std::count_if(refined.begin(), refined.end(), [](float v) { return v != 0.0f; }) / double(refined.size());
+  double range = 0.0; // the frame's airlight range, from level 0's nodes
+
+  // Per level: 1. the nodes' airlight (light code); 2. the cells to refine
+  // (no light code). Level 0 covers the viewport; a finer level only its
+  // parent's refined cells (3 x 3 nodes each, the five not its parent's
+  // listed on the CPU and evaluated densely; its second differences taken
+  // among them; its other cells cleared to 0).
+  for (int l = 0; l < levels; ++l)
+  {
+    const int nodes[2] = { LatticeNodesSize(cells, l, 0), LatticeNodesSize(cells, l, 1) };
+    vtkPlumeShaderFeatures f = base;
+    f.Enable("LATTICE_NODES");
+    vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
+    vtkShaderProgram* program = quad ? quad->Program : nullptr;
+    if (!program)
+    {
+      ostate->PopFramebufferBindings();
+      return false;
+    }
+    levelUniforms(program, l);
+    if (l == 0)
+    {
+      into(this->LatticeNodes[l], nodes);
+      quad->Render();
+      // read back for the frame's airlight range
+      std::vector<float> values(static_cast<size_t>(nodes[0]) * nodes[1] * 4);
+      glReadPixels(0, 0, nodes[0], nodes[1], GL_RGBA, GL_FLOAT, values.data());
+      float lo = HUGE_VALF, hi = -HUGE_VALF;
+      for (size_t k = 0; k < values.size(); ++k)
+      {
+        if (k % 4 != 3 && std::isfinite(values[k]))
+        {
+          lo = std::min(lo, values[k]);
+          hi = std::max(hi, values[k]);
+        }
+      }
+      // The error goal is relative to the airlight image's range; an 8-bit
+      // window shows at most 1 of it (a light in view can make the range huge).
+      range = hi > lo ? std::min(static_cast<double>(hi - lo), 1.0) : 0.0;
+    }
+    else
+    {
+      // the listed nodes only, 64 a row
+      const int used[2] = { nodes[0], fineRows };
+      into(this->LatticeNodes[l], used);
+      quad->Render();
+    }
+    this->MarkPass(l == 0 ? "nodes" : ("nodes " + std::to_string(l)).c_str());
+
+    f = base;
+    f.Enable("LATTICE_CLASSIFY").Enable("NO_LIGHTS");
+    if (l == 0)
+    {
+      quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
+      program = quad ? quad->Program : nullptr;
+    }
+    else
+    {
+      program = this->Programs->Ready(renWin, vtkPlumeLatticeCellsVS, nullptr, AirlightSource(), f);
+    }
+    if (!program)
+    {
+      ostate->PopFramebufferBindings();
+      return false;
+    }
+    levelUniforms(program, l);
+    program->SetUniformf("LatticeTolerance", static_cast<float>(this->UpsamplingTolerance * range));
+    program->SetUniformf("LatticeDepthTolerance", static_cast<float>(LatticeDepthTolerance));
+    program->SetUniform3fv("LightPixel", std::max(count, 1), reinterpret_cast<const float(*)[3]>(pixels.data()));
+    program->SetUniform4fv("LightShaft", std::max(count, 1), reinterpret_cast<const float(*)[4]>(shafts.data()));
+    into(this->LatticeCells[l], cells[l]);
+    if (l == 0)
+    {
+      quad->Render();
+      if (levels > 1)
+      {
+        fineRows = this->ListLatticeNodes(cells);
+      }
+    }
+    else
+    {
+      ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+      drawCells(program, l - 1, 2, cells[l]);
+    }
+    this->MarkPass(l == 0 ? "classify" : ("classify " + std::to_string(l)).c_str());
+  }
+  // counted only if asked (GetLastRefinedCellFraction): no wait here
+  this->LatticeFlagsPending = true;
+  this->LatticeFrame[0] = levels;
+  this->LatticeFrame[1] = w;
+  this->LatticeFrame[2] = h;
+  this->LatticeWindow = renWin;
   this->LowFrameBuffer->RemoveColorAttachments(1);
   ostate->PopFramebufferBindings();
 
-  // 3. The frame: interpolated airlight, none in refined cells (no light code).
-  f = base;
+  // 3. The frame: level 0's interpolated airlight, none in its refined cells
+  // (no light code).
+  vtkPlumeShaderFeatures f = base;
   f.Enable("LATTICE_RESOLVE").Enable("NO_LIGHTS");
-  quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
+  vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
   if (!quad)
   {
     return false;
   }
-  latticeUniforms(quad->Program);
+  levelUniforms(quad->Program, 0);
   blendGroup();
   ostate->vtkglViewport(x, y, w, h);
   ostate->vtkglScissor(x, y, w, h);
   quad->Render();
+  this->MarkPass("resolve");
 
-  // 4. The refined cells' exact airlight, added (one quad per cell, the
-  // interpolated ones collapsed by the vertex shader).
-  f = base;
-  f.Enable("LATTICE_REFINE");
-  vtkShaderProgram* program = this->Programs->Ready(renWin, vtkPlumeLatticeCellsVS, nullptr, AirlightSource(), f);
-  if (!program)
-  {
-    return false;
-  }
-  latticeUniforms(program);
+  // 4. Added in the parent's refined cells: each finer level's interpolated
+  // airlight (no light code), then the last level's refined cells' exact
+  // airlight.
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
   ostate->vtkglDepthMask(GL_FALSE);
-  this->EmptyVAO->Bind();
-  glDrawArrays(GL_TRIANGLES, 0, 6 * cells[0] * cells[1]);
-  this->EmptyVAO->Release();
-  this->LowTexture->Deactivate();
-  this->CellTexture->Deactivate();
+  for (int l = 1; l <= levels; ++l)
+  {
+    const bool refine = l == levels;
+    f = base;
+    if (refine)
+    {
+      f.Enable("LATTICE_REFINE");
+    }
+    else
+    {
+      f.Enable("LATTICE_INTERPOLATE").Enable("NO_LIGHTS");
+    }
+    vtkShaderProgram* program = this->Programs->Ready(renWin, vtkPlumeLatticeCellsVS, nullptr, AirlightSource(), f);
+    if (!program)
+    {
+      return false;
+    }
+    levelUniforms(program, refine ? l - 1 : l);
+    drawCells(program, l - 1, spacing[l - 1], viewport);
+    this->MarkPass(refine ? "refine" : ("interpolate " + std::to_string(l)).c_str());
+  }
+  for (int l = 0; l < levels; ++l)
+  {
+    this->LatticeNodes[l]->Deactivate();
+    this->LatticeCells[l]->Deactivate();
+  }
+  if (levels > 1)
+  {
+    this->LatticeNodeMap->Deactivate();
+    this->LatticeNodeList->Deactivate();
+  }
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkPlumeAirlightPass::ListLatticeNodes(const int cells[][2])
+{
+  // Level 0's flags, from the bound cell target.
+  std::vector<float> flags(static_cast<size_t>(cells[0][0]) * cells[0][1]);
+  glReadPixels(0, 0, cells[0][0], cells[0][1], GL_RED, GL_FLOAT, flags.data());
+  // Level 1's nodes in refined parents that are not level 0's (both indices
+  // even), each once; parents one level-1 cell wide (the viewport's edge)
+  // are refined whole and need none.
+  const int mw = cells[1][0] + 1, mh = cells[1][1] + 1;
+  std::vector<float> map(static_cast<size_t>(mw) * mh, -1.0f);
+  std::vector<float> list;
+  for (int j = 0; j < cells[0][1]; ++j)
+  {
+    for (int i = 0; i < cells[0][0]; ++i)
+    {
+      if (flags[static_cast<size_t>(j) * cells[0][0] + i] == 0.0f || 2 * i + 2 > cells[1][0] ||
+        2 * j + 2 > cells[1][1])
+      {
+        continue;
+      }
+      for (int b = 0; b < 3; ++b)
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          const int nx = 2 * i + a, ny = 2 * j + b;
+          float& k = map[static_cast<size_t>(ny) * mw + nx];
+          if ((nx % 2 != 0 || ny % 2 != 0) && k < 0.0f)
+          {
+            k = static_cast<float>(list.size() / 2);
+            list.push_back(static_cast<float>(nx));
+            list.push_back(static_cast<float>(ny));
+          }
+        }
+      }
+    }
+  }
+  const int rows = std::max(1, static_cast<int>((list.size() / 2 + 63) / 64));
+  list.resize(static_cast<size_t>(64) * rows * 2, 0.0f);
+  this->LatticeNodeMap->Create2DFromRaw(mw, mh, 1, VTK_FLOAT, map.data());
+  this->LatticeNodeList->Create2DFromRaw(64, rows, 2, VTK_FLOAT, list.data());
+  this->LatticeNodeMap->Activate();
+  this->LatticeNodeList->Activate();
+  return rows;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightPass::CountLatticeFlags()
+{
+  if (!this->LatticeFlagsPending || !this->LatticeWindow)
+  {
+    return;
+  }
+  this->LatticeFlagsPending = false;
+  const int levels = this->LatticeFrame[0], w = this->LatticeFrame[1], h = this->LatticeFrame[2];
+  int spacing[MaximumLatticeLevels], cells[MaximumLatticeLevels][2];
+  if (LatticeGeometry(this->Downsampling, this->LatticeLevels, w, h, spacing, cells) != levels ||
+    !this->LatticeCells[levels - 1])
+  {
+    return; // changed since that frame: nothing to count
+  }
+  this->LatticeWindow->MakeCurrent();
+  for (int l : { 0, levels - 1 })
+  {
+    vtkSmartPointer<vtkPixelBufferObject> pbo =
+      vtkSmartPointer<vtkPixelBufferObject>::Take(this->LatticeCells[l]->Download());
+    const float* flags = static_cast<const float*>(pbo->MapPackedBuffer());
+    if (!flags)
+    {
+      continue;
+    }
+    size_t refinedCells = 0, refinedPixels = 0;
+    for (int j = 0; j < cells[l][1]; ++j)
+    {
+      for (int i = 0; i < cells[l][0]; ++i)
+      {
+        if (flags[static_cast<size_t>(j) * cells[l][0] + i] != 0.0f)
+        {
+          // the last cell of a row or column reaches the viewport's edge
+          const int cw = (i == cells[l][0] - 1 ? w : (i + 1) * spacing[l]) - i * spacing[l];
+          const int ch = (j == cells[l][1] - 1 ? h : (j + 1) * spacing[l]) - j * spacing[l];
+          ++refinedCells;
+          refinedPixels += static_cast<size_t>(cw) * ch;
+        }
+      }
+    }
+    pbo->UnmapPackedBuffer();
+    if (l == 0)
+    {
+      this->LastRefinedCellFraction = refinedCells / double(cells[0][0] * cells[0][1]);
+    }
+    if (l == levels - 1)
+    {
+      this->LastRefinedPixelFraction = refinedPixels / double(w * h);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlumeAirlightPass::MarkPass(const char* pass)
+{
+  if (!this->ProfilePasses)
+  {
+    return;
+  }
+  glFinish();
+  const double now =
+    std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  const double cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC; // all the process's threads
+  if (pass)
+  {
+    this->PassSeconds.push_back({ pass, now - this->PassStart, cpu - this->PassStartCPU });
+  }
+  else
+  {
+    this->PassSeconds.clear();
+  }
+  this->PassStart = now;
+  this->PassStartCPU = cpu;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPlumeAirlightPass::GetProfiledPassName(int pass)
+{
+  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].Name.c_str() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeAirlightPass::GetProfiledPassSeconds(int pass)
+{
+  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].Seconds : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeAirlightPass::GetProfiledPassCPUSeconds(int pass)
+{
+  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].CPUSeconds : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeAirlightPass::GetLastRefinedCellFraction()
+{
+  this->CountLatticeFlags();
+  return this->LastRefinedCellFraction;
+}
+
+//------------------------------------------------------------------------------
+double vtkPlumeAirlightPass::GetLastRefinedPixelFraction()
+{
+  this->CountLatticeFlags();
+  return this->LastRefinedPixelFraction;
 }
 
 //------------------------------------------------------------------------------
 void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
 {
+  if (w && w == this->LatticeWindow)
+  {
+    this->CountLatticeFlags(); // before the flags' textures go
+  }
+  this->LatticeFlagsPending = false;
   this->Superclass::ReleaseGraphicsResources(w);
   this->Programs->ReleaseGraphicsResources(w);
   for (vtkTextureObject** t :
-    { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->LowTexture, &this->CellTexture,
-      &this->MediaTexture,
+    { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->MediaTexture,
       &this->MediaTransmittanceTexture, &this->TextureAtlas })
   {
     if (*t)
     {
       (*t)->Delete();
       *t = nullptr;
+    }
+  }
+  for (vtkTextureObject** t : { &this->LatticeNodeMap, &this->LatticeNodeList })
+  {
+    if (*t)
+    {
+      (*t)->Delete();
+      *t = nullptr;
+    }
+  }
+  for (int l = 0; l < MaximumLatticeLevels; ++l)
+  {
+    for (vtkTextureObject** t : { &this->LatticeNodes[l], &this->LatticeCells[l] })
+    {
+      if (*t)
+      {
+        (*t)->Delete();
+        *t = nullptr;
+      }
     }
   }
   this->EmptyVAO->ReleaseGraphicsResources();

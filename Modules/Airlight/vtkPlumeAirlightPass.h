@@ -104,6 +104,7 @@
 #include "vtkImageProcessingPass.h"
 #include "vtkNew.h"                      // For vtkNew
 #include "vtkTimeStamp.h"                // For vtkTimeStamp
+#include "vtkWeakPointer.h"              // For LatticeWindow
 #include "vtkPlumeShaderProgramCache.h" // For Programs
 
 #include <functional> // For std::function
@@ -226,14 +227,33 @@ public:
    * the cell or its eight neighbours (a glow peaks between nodes), nor the
    * axis of a spot narrower than 10 degrees within 1.5 cells (its shaft can
    * pass between nodes); and (4)
-   * no translucent medium covers one of its pixels. Every pixel of the other
-   * cells is evaluated exactly, in a pass drawn over those cells only
-   * (vtkPlumeLatticeCellsVS). Lights that cast shadows or project an image
+   * no translucent medium covers one of its pixels. The other cells go to
+   * the second lattice level (LatticeLevels), and every pixel of the cells
+   * it refines (with one level: of the other cells) is evaluated exactly, in
+   * a pass drawn over those cells only (vtkPlumeLatticeCellsVS). Lights that cast shadows or project an image
    * are always evaluated at every pixel: a shadow or a shaft narrower than a
    * cell could fall between the nodes. Clamped to 1..8. Default 8.
    */
   vtkSetClampMacro(Downsampling, int, 1, 8);
   vtkGetMacro(Downsampling, int);
+  ///@}
+
+  ///@{
+  /**
+   * Levels of the airlight lattice (with Downsampling > 1). Level 0 is the
+   * lattice of Downsampling; level 1 (with an even Downsampling of at least
+   * 4) halves the spacing inside the cells level 0 refined: their 3 x 3
+   * nodes are known (the parent's four corners) or evaluated (the other
+   * five, listed on the CPU from the parent's flags and evaluated densely),
+   * their 2 x 2 cells classified by the same four rules at their own size
+   * (the second differences from the parent's middle row and column) and
+   * interpolated where they pass; only the last level's refined cells are
+   * evaluated at every pixel. 1: one level. Clamped to 1..2. Default 1
+   * (2 is no faster on llvmpipe and failed the error goal in
+   * TestAirlightMedia, see Documentation/Airlight.md).
+   */
+  vtkSetClampMacro(LatticeLevels, int, 1, 2);
+  vtkGetMacro(LatticeLevels, int);
   ///@}
 
   ///@{
@@ -249,9 +269,48 @@ public:
 
   /**
    * The fraction of the airlight lattice's cells refined (evaluated at every
-   * pixel) in the last frame's last light group; 0 without a lattice.
+   * pixel) in the last frame's last light group on the lattice; 0 without a
+   * lattice. A diagnostic, computed when asked: it reads the cell flags back
+   * from the GPU (a wait for the frame, which the frames themselves no longer
+   * pay); ReleaseGraphicsResources counts them before their textures go.
    */
-  vtkGetMacro(LastRefinedCellFraction, double);
+  double GetLastRefinedCellFraction();
+
+  /**
+   * The fraction of the viewport's pixels evaluated exactly in the last
+   * frame's last light group on the lattice (the last level's refined
+   * cells); 0 without a lattice. Computed when asked, as
+   * GetLastRefinedCellFraction.
+   */
+  double GetLastRefinedPixelFraction();
+
+  ///@{
+  /**
+   * Time each pass of every frame (diagnostics for benchmarks: the GL work is
+   * finished after each pass, so the frame is slower). Default off.
+   */
+  vtkSetMacro(ProfilePasses, bool);
+  vtkGetMacro(ProfilePasses, bool);
+  vtkBooleanMacro(ProfilePasses, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The passes timed in the last frame with ProfilePasses on, in order:
+   * "scene" (the delegate), then per light group either "pixels" (every
+   * pixel) or the lattice's "nodes", "classify" (level 0), "nodes L",
+   * "classify L" (finer level L), "resolve", "interpolate L" and "refine".
+   * Seconds of wall time each (CPU and GL), and of the process's CPU time
+   * (all its threads, llvmpipe's included: steadier on a loaded machine).
+   */
+  int GetNumberOfProfiledPasses() { return static_cast<int>(this->PassSeconds.size()); }
+  const char* GetProfiledPassName(int pass);
+  double GetProfiledPassSeconds(int pass);
+  double GetProfiledPassCPUSeconds(int pass);
+  ///@}
+
+  /** At most this many lattice levels (LatticeLevels). */
+  static constexpr int MaximumLatticeLevels = 2;
 
   ///@{
   /**
@@ -464,6 +523,7 @@ protected:
   double ScatteringAnisotropy = 0.0;
   int SpotSteps = 8;
   int Downsampling = 8;
+  int LatticeLevels = 1;
   double UpsamplingTolerance = 0.005;
   int TableResolution = 64;
   int MarchSteps = 0;
@@ -517,10 +577,41 @@ protected:
   vtkTextureObject* DepthTexture = nullptr;
   vtkTextureObject* TableTexture = nullptr;
   vtkOpenGLFramebufferObject* LowFrameBuffer = nullptr; // Downsampling > 1
-  vtkTextureObject* LowTexture = nullptr;  // the lattice nodes' airlight (RGBA32F)
-  vtkTextureObject* CellTexture = nullptr; // per lattice cell: 1 refined, 0 interpolated (R32F)
+  // Per lattice level: the nodes' airlight (RGBA32F) and per cell 1 refined,
+  // 0 interpolated (R32F; a finer level's cells outside its parent's refined
+  // cells are 0).
+  vtkTextureObject* LatticeNodes[MaximumLatticeLevels] = {};
+  vtkTextureObject* LatticeCells[MaximumLatticeLevels] = {};
+  // Level 1: per node its texel index in LatticeNodes[1] or -1 (R32F), and
+  // per texel of LatticeNodes[1] its node (RG32F), uploaded every frame.
+  vtkTextureObject* LatticeNodeMap = nullptr;
+  vtkTextureObject* LatticeNodeList = nullptr;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO; // the refined cells' quads come from gl_VertexID
   double LastRefinedCellFraction = 0.0;
+  double LastRefinedPixelFraction = 0.0;
+  // The last lattice frame's flags are in LatticeCells, not yet counted
+  // (CountLatticeFlags reads them back on LatticeWindow): its levels and
+  // viewport width and height.
+  bool LatticeFlagsPending = false;
+  int LatticeFrame[3] = { 0, 0, 0 };
+  vtkWeakPointer<vtkOpenGLRenderWindow> LatticeWindow;
+  void CountLatticeFlags();
+  // Reads level 0's cell flags back (their target bound), lists the level-1
+  // nodes to evaluate into LatticeNodeMap/LatticeNodeList (activated) and
+  // returns the rows of LatticeNodes[1] they fill.
+  int ListLatticeNodes(const int cells[][2]);
+  // ProfilePasses: (pass, seconds) of the last frame, and when the pass being
+  // timed began. MarkPass finishes the GL work so far and records the time
+  // since the last mark as `pass` (nullptr: starts the clock, a new frame).
+  bool ProfilePasses = false;
+  struct PassTime
+  {
+    std::string Name;
+    double Seconds, CPUSeconds;
+  };
+  std::vector<PassTime> PassSeconds;
+  double PassStart = 0.0, PassStartCPU = 0.0;
+  void MarkPass(const char* pass);
   // One light group's airlight on the lattice (Downsampling > 1): nodes, cell
   // classification, the frame with the interpolated airlight, the refined
   // cells' exact airlight. `lights`, `axes`, `cosCones`: the group's eye
@@ -528,7 +619,7 @@ protected:
   // program does not build.
   bool RenderLattice(vtkOpenGLRenderWindow* renWin, const vtkPlumeShaderFeatures& base,
     const std::function<void(vtkShaderProgram*)>& setUniforms, const std::function<void()>& blendGroup,
-    const int cells[2], int x, int y, int w, int h, vtkMatrix4x4* projection, const float* lights,
+    int x, int y, int w, int h, vtkMatrix4x4* projection, const float* lights,
     const float* axes, const float* cosCones, int count);
   vtkTextureObject* MediaTexture = nullptr; // translucent media's premultiplied layer
   vtkTextureObject* MediaTransmittanceTexture = nullptr; // the media over 1: minus the layer, their RGB transmittance

@@ -49,7 +49,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
 #include <functional>
+#include <map>
 
 namespace plume
 {
@@ -226,10 +229,13 @@ nlohmann::json ErrorAgainst(const test::FloatImage& image, const Expected& expec
 
 // Median time of `frames` renders after `warmups`; the camera turns by half
 // a degree each frame (a real re-render); `beforeFrame(f)` may change the scene.
+// `cpu` (optional): the median CPU time of the process per frame (all its
+// threads, llvmpipe's included: less sensitive to the machine's load than
+// wall time).
 double TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, int frames, int warmups = 2,
-  const std::function<void(int)>& beforeFrame = nullptr)
+  const std::function<void(int)>& beforeFrame = nullptr, double* cpu = nullptr)
 {
-  std::vector<double> times;
+  std::vector<double> times, cpuTimes;
   for (int f = 0; f < frames + warmups; ++f)
   {
     renderer->GetActiveCamera()->Azimuth(f % 2 ? 0.5 : -0.5);
@@ -238,12 +244,18 @@ double TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, int frames, in
       beforeFrame(f);
     }
     const double t0 = Now();
+    const std::clock_t c0 = std::clock();
     window->Render();
     window->WaitForCompletion();
     if (f >= warmups)
     {
       times.push_back(Now() - t0);
+      cpuTimes.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
     }
+  }
+  if (cpu)
+  {
+    *cpu = Median(cpuTimes);
   }
   return Median(times);
 }
@@ -367,12 +379,32 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
     grey = true;
     job = job.substr(5);
   }
+  // "points_J": job J with the spot light made a point light (cone 180) at
+  // the same place: two lights at the closed form's cheapest (two table
+  // look-ups each, no spot sub-intervals), for the floor of the per-pixel cost.
+  bool points = false;
+  if (job.rfind("points_", 0) == 0)
+  {
+    points = true;
+    job = job.substr(7);
+  }
+  // "spotN_J": job J with SpotSteps N (default 8).
+  int spotSteps = 0;
+  if (job.rfind("spot", 0) == 0 && job.find('_') != std::string::npos)
+  {
+    spotSteps = std::stoi(job.substr(4, job.find('_') - 4));
+    job = job.substr(job.find('_') + 1);
+  }
   const int frames = context.Quick ? 3 : 7;
   auto window = context.MakeWindow(size, size);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.1, 0.15, 0.3);
   window->AddRenderer(renderer);
   BuildScene(renderer);
+  if (points)
+  {
+    vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(1))->SetConeAngle(180);
+  }
   if (job.rfind("smoke:", 0) == 0)
   {
     // a slow peer (seconds per frame at 512x512): one warm-up, two frames
@@ -437,14 +469,24 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
     // decided) would cost at best
     pass->SetShadowSteps(std::stoi(job.substr(13)));
   }
+  if (spotSteps > 0)
+  {
+    pass->SetSpotSteps(spotSteps);
+  }
   if (job.rfind("down:", 0) == 0)
   {
-    // "down:D" or "down:D:TOL": the airlight lattice every D pixels (1: none), tolerance TOL.
+    // "down:D", "down:D:TOL" or "down:D:TOL:L": the airlight lattice every D
+    // pixels (1: none), tolerance TOL, L levels.
     pass->SetDownsampling(std::stoi(job.substr(5)));
     const size_t colon = job.find(':', 5);
     if (colon != std::string::npos)
     {
       pass->SetUpsamplingTolerance(std::stod(job.substr(colon + 1)));
+      const size_t levels = job.find(':', colon + 1);
+      if (levels != std::string::npos)
+      {
+        pass->SetLatticeLevels(std::stoi(job.substr(levels + 1)));
+      }
     }
   }
   if (job == "floor")
@@ -466,16 +508,45 @@ nlohmann::json RunJob(const Context& context, const std::string& jobName)
     renderer->SetPass(copy);
   }
   vtkLight* spot = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(1));
-  const double frameTime = TimeFrames(window, renderer, frames, 2, [&](int f) {
-    if (job == "shadow_rebake")
-    {
-      spot->SetPosition(2.5, 3.5, f % 2 ? -1.5 : -1.500001); // a changed light: its map is rebuilt
-    }
-  });
-  nlohmann::json result = { { "frame_s", frameTime }, { "peak_rss_mb", PeakRSSMB() },
+  double frameCPU = 0.0;
+  const double frameTime = TimeFrames(
+    window, renderer, frames, 2,
+    [&](int f) {
+      if (job == "shadow_rebake")
+      {
+        spot->SetPosition(2.5, 3.5, f % 2 ? -1.5 : -1.500001); // a changed light: its map is rebuilt
+      }
+    },
+    &frameCPU);
+  nlohmann::json result = { { "frame_s", frameTime }, { "frame_cpu_s", frameCPU }, { "peak_rss_mb", PeakRSSMB() },
     { "shadowed_lights", pass->GetNumberOfShadowedLights() }, { "bakes", pass->GetNumberOfShadowMapBakes() },
     { "light_groups", pass->GetNumberOfLightGroups() }, { "downsampling", pass->GetDownsampling() },
-    { "tolerance", pass->GetUpsamplingTolerance() }, { "refined_cells", pass->GetLastRefinedCellFraction() } };
+    { "tolerance", pass->GetUpsamplingTolerance() }, { "lattice_levels", pass->GetLatticeLevels() },
+    { "refined_cells", pass->GetLastRefinedCellFraction() },
+    { "refined_pixels", pass->GetLastRefinedPixelFraction() } };
+  if (std::getenv("PLUME_BENCH_AIRLIGHT_PROFILE") && job != "copy")
+  {
+    // Per-pass times (the pass's ProfilePasses: the GL work finished after
+    // each pass), medians of `frames` more frames, ms.
+    pass->ProfilePassesOn();
+    std::map<std::string, std::vector<double>> passes, passesCPU;
+    TimeFrames(window, renderer, frames, 1, [&](int f) {
+      for (int k = 0; f > 1 && k < pass->GetNumberOfProfiledPasses(); ++k)
+      {
+        passes[pass->GetProfiledPassName(k)].push_back(1e3 * pass->GetProfiledPassSeconds(k));
+        passesCPU[pass->GetProfiledPassName(k)].push_back(1e3 * pass->GetProfiledPassCPUSeconds(k));
+      }
+    });
+    pass->ProfilePassesOff();
+    nlohmann::json times, cpuTimes;
+    for (auto& p : passes)
+    {
+      times[p.first] = Median(p.second);
+      cpuTimes[p.first] = Median(passesCPU[p.first]);
+    }
+    result["passes_ms"] = times;
+    result["passes_cpu_ms"] = cpuTimes;
+  }
   if (job == "opaque" || job == "shadow_rebake" || job == "floor" || job == "copy")
   {
     return result;
@@ -500,6 +571,7 @@ std::vector<std::string> Jobs(bool quick)
   const std::string half = quick ? "@64" : "@256";
   std::vector<std::string> jobs = { "opaque", "ours", "grey", "shadow", "shadow_rebake", "opaque" + half,
     "ours" + half, "floor", "copy", "down:1", "down:2", "down:4", "down:8", "down:8:0.01", "down:8:0", "grey_down:8",
+    "down:8:0.005:1", "down:8:0.005:2", "points_down:1", "points_down:8", "spot4_down:8", "spot2_down:8",
     "lights:7", "lights:8", "lights:9", "lights:16", "lights:17" };
   for (int n : MarchSteps(quick))
   {
@@ -648,7 +720,8 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
   }
   // The airlight lattice (Downsampling D) against the full resolution,
   // and the floor of any full-screen pass on this renderer.
-  for (const std::string d : { "1", "2", "4", "8", "8:0.01", "8:0" })
+  for (const std::string d :
+    { "1", "2", "4", "8", "8:0.01", "8:0", "8:0.005:1", "8:0.005:2" })
   {
     const auto down = results.find("down:" + d);
     if (down == results.end())
@@ -658,8 +731,10 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
     const double downTime = down->second.value("frame_s", 0.0);
     nlohmann::json line = { { "bench", "airlight" },
       { "case", size + " point+spot, airlight lattice every " + d.substr(0, 1) + " pixels, tolerance " +
-          std::to_string(down->second.value("tolerance", 0.0)) },
+          std::to_string(down->second.value("tolerance", 0.0)) + ", " +
+          std::to_string(down->second.value("lattice_levels", 1)) + " level(s)" },
       { "refined_cells", down->second.value("refined_cells", 0.0) },
+      { "refined_pixels", down->second.value("refined_pixels", 0.0) },
       { "ours_s", downTime }, { "peer", "ours at full resolution" }, { "peer_s", oursTime },
       { "ratio", downTime > 0 ? oursTime / downTime : 0.0 }, { "error", down->second.value("error", 0.0) },
       { "peer_error", oursError }, { "error_max", down->second.value("error_max", 0.0) },
@@ -670,6 +745,26 @@ std::vector<nlohmann::json> Report(const std::map<std::string, nlohmann::json>& 
       line["added_ms"] = 1e3 * (downTime - opaque->second.value("frame_s", 0.0));
     }
     lines.push_back(line);
+  }
+  // The floor of the lattice frame's per-pixel work: the two lights at their
+  // cheapest (the spot made a point light: two table look-ups per light and
+  // channel, no spot sub-intervals) at every pixel, against the pass with no
+  // light; per pixel, and over the default lattice's refined pixels only.
+  const auto pointsFull = results.find("points_down:1");
+  const auto floorFrame = results.find("floor");
+  if (pointsFull != results.end() && floorFrame != results.end())
+  {
+    const double n = quick ? 128.0 * 128.0 : 512.0 * 512.0;
+    const double t = pointsFull->second.value("frame_s", 0.0), t0 = floorFrame->second.value("frame_s", 0.0);
+    const double refined = ours->second.value("refined_pixels", 0.0);
+    lines.push_back({ { "bench", "airlight" },
+      { "case", size + " floor: two point lights at every pixel (the closed form at its cheapest)" },
+      { "ours_s", t }, { "peer", "the pass with no light" }, { "peer_s", t0 }, { "ratio", t > 0 ? t0 / t : 0.0 },
+      { "per_pixel_ns", 1e9 * (t - t0) / n }, { "refined_pixels", refined },
+      { "over_refined_pixels_ms", 1e3 * (t - t0) * refined },
+      { "error", pointsFull->second.value("error", 0.0) },
+      { "error_max", pointsFull->second.value("error_max", 0.0) },
+      { "peak_rss_mb", pointsFull->second.value("peak_rss_mb", 0.0) } });
   }
   // Light groups: the frame with N lights against 8 (one group); the cost of a
   // group beyond the first is what a 9th light costs over an 8th.

@@ -33,13 +33,22 @@ uniform vec2 ViewportSize;    // w, h of the full-resolution viewport
 // between four nodes that must be refined; LATTICE_RESOLVE (no light code)
 // writes the frame with the nodes' bilinear interpolation in the other cells
 // and no airlight in refined ones; LATTICE_REFINE (drawn by the lattice cells'
-// vertex shader over refined cells only) adds their exact airlight.
+// vertex shader over refined cells only) adds their exact airlight. The
+// second level (spacing D/2, vtkPlumeAirlightPass::LatticeLevels) runs NODES
+// on its listed nodes (see nodeAirlight) and CLASSIFY inside level 0's
+// refined cells (drawn there by the same vertex shader), LATTICE_INTERPOLATE
+// adds its interpolation in its interpolated cells, and LATTICE_REFINE runs
+// in its refined cells only. The uniforms below describe the level drawn.
 uniform int Lattice;               // D
 uniform ivec2 LatticeCellCount;    // cells per row and column (nodes: one more)
 uniform sampler2D LatticeNodes;    // RGB: the nodes' airlight
 uniform sampler2D LatticeCells;    // R: 0 interpolated, 1 refined
 uniform float LatticeTolerance;    // the largest estimated interpolation error (absolute)
 uniform float LatticeDepthTolerance; // relative eye-depth mismatch that marks a surface edge
+uniform int LatticeParentBlock;    // a finer level: its cells per parent cell side (2); 0 on level 0
+uniform sampler2D LatticeCoarseNodes; // a finer level: its parent level's nodes
+uniform sampler2D LatticeNodeMap;  // a finer level: per node, its texel index in LatticeNodes (see nodeAirlight)
+uniform sampler2D LatticeNodeList; // a finer level's nodes pass: per texel of LatticeNodes, its node (RG)
 //PLUME::IF LATTICE_CLASSIFY
 uniform vec3 LightPixel[NUMBER_OF_LIGHTS]; // the lights' viewport pixel and 1 if in front of the eye
 uniform vec4 LightShaft[NUMBER_OF_LIGHTS]; // a narrow spot's axis on the viewport: pixels (x0, y0), (x1, y1)
@@ -826,6 +835,26 @@ ivec2 nodePixel(ivec2 node)
   return min(node * Lattice, ivec2(ViewportSize) - 1);
 }
 
+// Node n's airlight. Level 0 stores its nodes in order. A finer level
+// (spacing halved) evaluates only the nodes of its parent's refined cells
+// that are not the parent's own nodes, packed densely 64 a row as the CPU
+// listed them (llvmpipe shades 4 x 4 blocks: a block per parent cell would
+// run 16 lanes for its 5 new nodes); its nodes with both indices even are
+// the parent's.
+vec3 nodeAirlight(ivec2 n)
+{
+  if (LatticeParentBlock == 0)
+  {
+    return texelFetch(LatticeNodes, n, 0).rgb;
+  }
+  if (all(equal(n % 2, ivec2(0))))
+  {
+    return texelFetch(LatticeCoarseNodes, n / 2, 0).rgb;
+  }
+  int k = int(texelFetch(LatticeNodeMap, n, 0).r);
+  return texelFetch(LatticeNodes, ivec2(k % 64, k / 64), 0).rgb;
+}
+
 // The cell holding viewport pixel `pixel` (the last cell of a row or column
 // also holds the viewport's last pixel).
 ivec2 cellOf(ivec2 pixel)
@@ -841,20 +870,27 @@ vec3 interpolatedAirlight(ivec2 pixel)
   ivec2 c = cellOf(pixel);
   vec2 p0 = vec2(nodePixel(c));
   vec2 f = (vec2(pixel) - p0) / (vec2(nodePixel(c + 1)) - p0);
+  if (LatticeParentBlock > 0)
+  {
+    vec3 a = mix(nodeAirlight(c), nodeAirlight(c + ivec2(1, 0)), f.x);
+    vec3 b = mix(nodeAirlight(c + ivec2(0, 1)), nodeAirlight(c + 1), f.x);
+    return mix(a, b, f.y);
+  }
   return textureLod(LatticeNodes, (vec2(c) + f + 0.5) / vec2(LatticeCellCount + 1), 0.0).rgb;
 }
 
 //PLUME::IF LATTICE_CLASSIFY
 // |second difference| of the nodes' airlight along `axis` at node n, centred
-// one node inwards at the lattice's border (the nodes n - axis, n, n + axis).
-vec3 secondDifference(ivec2 n, ivec2 axis)
+// one node inwards at the border of the nodes [lo, hi] it may use (the nodes
+// n - axis, n, n + axis).
+vec3 secondDifference(ivec2 n, ivec2 axis, ivec2 lo, ivec2 hi)
 {
   int i = axis.x == 1 ? n.x : n.y;
-  int last = axis.x == 1 ? LatticeCellCount.x : LatticeCellCount.y; // the last node
-  ivec2 c = n + axis * (clamp(i, 1, last - 1) - i);
-  vec3 a = texelFetch(LatticeNodes, c - axis, 0).rgb;
-  vec3 b = texelFetch(LatticeNodes, c, 0).rgb;
-  vec3 d = texelFetch(LatticeNodes, c + axis, 0).rgb;
+  ivec2 range = axis.x == 1 ? ivec2(lo.x, hi.x) : ivec2(lo.y, hi.y);
+  ivec2 c = n + axis * (clamp(i, range.x + 1, range.y - 1) - i);
+  vec3 a = nodeAirlight(c - axis);
+  vec3 b = nodeAirlight(c);
+  vec3 d = nodeAirlight(c + axis);
   return abs(a - 2.0 * b + d);
 }
 
@@ -898,11 +934,24 @@ float classifyCell(ivec2 cell)
       return 1.0;
     }
   }
+  // The nodes the second differences may use: the whole lattice, or on a
+  // finer level its parent cell's (the only ones evaluated: 3 x 3, the
+  // differences centred on its middle row and column).
+  ivec2 lo = ivec2(0), hi = LatticeCellCount;
+  if (LatticeParentBlock > 0)
+  {
+    lo = cell / LatticeParentBlock * LatticeParentBlock;
+    hi = min(lo + LatticeParentBlock, LatticeCellCount);
+    if (any(lessThan(hi - lo, ivec2(2))))
+    {
+      return 1.0; // a parent one cell wide (the viewport's edge): no second difference
+    }
+  }
   vec3 e = vec3(0.0);
   for (int k = 0; k < 4; ++k)
   {
     ivec2 n = cell + ivec2(k & 1, k >> 1);
-    e = max(e, secondDifference(n, ivec2(1, 0)) + secondDifference(n, ivec2(0, 1)));
+    e = max(e, secondDifference(n, ivec2(1, 0), lo, hi) + secondDifference(n, ivec2(0, 1), lo, hi));
   }
   if (any(greaterThan(e, vec3(8.0 * LatticeTolerance))))
   {
@@ -966,7 +1015,8 @@ void main()
 #ifdef PLUME_FEATURE_LATTICE_NODES
   // One lattice node per fragment of the nodes' target: the airlight of its
   // ray over the whole ray (cells with a translucent medium are refined).
-  ivec2 node = nodePixel(ivec2(gl_FragCoord.xy));
+  ivec2 t = ivec2(gl_FragCoord.xy);
+  ivec2 node = nodePixel(LatticeParentBlock > 0 ? ivec2(texelFetch(LatticeNodeList, t, 0).rg) : t);
   float xsNode = viewRay(node, texelFetch(SceneDepth, node, 0).r, o, r);
   gl_FragDepth = 1.0;
   gl_FragData[0] = vec4(airlightOf(o, r, xsNode), 1.0);
@@ -978,6 +1028,19 @@ void main()
   return;
 //PLUME::ENDIF
   ivec2 pixel = ivec2(gl_FragCoord.xy - ViewportOrigin);
+#ifdef PLUME_FEATURE_LATTICE_INTERPOLATE
+  // A finer level, drawn over its parent's refined cells: its interpolated
+  // cells' airlight, added to what LATTICE_RESOLVE wrote (no airlight there);
+  // its refined cells get theirs from LATTICE_REFINE. (No medium: cells with
+  // one are refined at every level.)
+  if (texelFetch(LatticeCells, cellOf(pixel), 0).r != 0.0)
+  {
+    discard;
+  }
+  gl_FragDepth = 1.0;
+  gl_FragData[0] = vec4(interpolatedAirlight(pixel), 0.0);
+  return;
+#endif
   vec4 color = texelFetch(SceneColor, pixel, 0);
   float depth = texelFetch(SceneDepth, pixel, 0).r;
   gl_FragDepth = depth;

@@ -5,10 +5,12 @@
 // vtkPlumeAirlightReference at every pixel: a room with a box and a sphere
 // (depth edges), a point light in view (its glow peaks between nodes) and a
 // spot light with exponent 2 whose cone edges cross the view, coloured haze.
-// At D = 8 (the coarsest) the whole image, the pixels at depth edges and the
-// pixels near the light's image meet the goal (RMS <= 0.5 %, max <=
-// 2 % of the airlight range); the lattice really interpolates (some cells,
-// not all, refined; the image differs from the per-pixel one). With a
+// At every D (1, 2, 4, 8) and number of lattice levels the whole image, the
+// pixels at depth edges and the pixels near the light's image meet the
+// issue's goal (RMS <= 0.5 %, max <= 2 % of the airlight range); the lattice
+// really interpolates (some cells, not all, refined; the image differs from
+// the per-pixel one), and a finer level evaluates fewer pixels exactly than
+// one level of the same spacing. With a
 // thin occluder and shadows on, the frame is the per-pixel one.
 #include "plumeAirlightTestUtil.h"
 
@@ -89,16 +91,24 @@ int TestAirlightLattice(int, char*[])
   PLUME_CHECK(edgeCount > 200);
   PLUME_CHECK(nearCount > 300);
 
-  for (int d : { 1, 2, 4, 8 })
+  // Every spacing with one level, and the second level (spacing halved
+  // inside refined cells: 8 -> 4, 4 -> 2).
+  double onePixels = 0.0; // the refined pixels with one level, at this spacing
+  for (const std::pair<int, int> dl : std::vector<std::pair<int, int>>{
+         { 1, 1 }, { 2, 1 }, { 4, 1 }, { 4, 2 }, { 8, 1 }, { 8, 2 } })
   {
+    const int d = dl.first, levels = dl.second;
     s.Pass->SetDownsampling(d);
+    s.Pass->SetLatticeLevels(levels);
     const airtest::FloatImage image = render();
     PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
     const airtest::Error all = airtest::Compare(image, ref, air);
     const airtest::Error edge = airtest::Compare(image, edges, air);
     const airtest::Error near = airtest::Compare(image, nearLight, air);
     const airtest::Error vsFull = airtest::Compare(image, full, air);
-    std::cout << "downsampling " << d << ", refined cells " << s.Pass->GetLastRefinedCellFraction() << ":\n";
+    const double pixels = s.Pass->GetLastRefinedPixelFraction();
+    std::cout << "downsampling " << d << ", " << levels << " level(s), refined cells "
+              << s.Pass->GetLastRefinedCellFraction() << ", refined pixels " << pixels << ":\n";
     // the subsets' errors in units of the whole image's airlight range
     const double edgeMax = edge.Max * edge.Range / all.Range, nearMax = near.Max * near.Range / all.Range;
     airtest::Print("  all pixels", all);
@@ -116,6 +126,18 @@ int TestAirlightLattice(int, char*[])
       PLUME_CHECK(s.Pass->GetLastRefinedCellFraction() > 0.0);
       PLUME_CHECK(s.Pass->GetLastRefinedCellFraction() < 0.9);
       PLUME_CHECK(vsFull.Max > 1e-6); // some pixels really are interpolated
+      PLUME_CHECK(pixels > 0.0);
+    }
+    if (levels == 1)
+    {
+      onePixels = pixels;
+    }
+    else
+    {
+      // The second level interpolates a good part of the coarse refined cells
+      // (here 49-54 % of their pixels; wrong level-1 nodes, e.g. another
+      // node's value, only 23-31 %: their second differences refine more).
+      PLUME_CHECK(pixels < 0.6 * onePixels);
     }
   }
 
@@ -127,10 +149,12 @@ int TestAirlightLattice(int, char*[])
   s.Pass->SetDownsampling(1);
   const airtest::FloatImage shadowedFull = render();
   s.Pass->SetDownsampling(8);
+  s.Pass->SetLatticeLevels(2);
   const airtest::FloatImage shadowed = render();
   const airtest::Error shadowedVsFull = airtest::Compare(shadowed, shadowedFull, air);
   airtest::Print("shadowed, default against every pixel", shadowedVsFull);
   PLUME_CHECK(shadowedVsFull.Max <= 1e-7);
   PLUME_CHECK(s.Pass->GetLastRefinedCellFraction() == 0.0);
+  PLUME_CHECK(s.Pass->GetLastRefinedPixelFraction() == 0.0);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -20,7 +20,7 @@ int TestAirlightParameters(int, char*[])
   using Kind = vtkPlumeParameterTable::Kind;
   const vtkPlumeParameterTable& table = vtkPlumeAirlightPass::GetParameterTable();
   PLUME_CHECK(table.GetSceneType() == "medium");
-  PLUME_CHECK(table.GetParameters().size() == 13);
+  PLUME_CHECK(table.GetParameters().size() == 14);
 
   vtkNew<vtkPlumeAirlightPass> pass;
   PLUME_CHECK(!pass->HasMedium()); // clear air by default: the pass only runs its delegate
