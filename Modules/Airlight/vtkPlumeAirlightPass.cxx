@@ -729,27 +729,59 @@ void vtkPlumeAirlightPass::BuildMinMax(ShadowMap* m, vtkOpenGLRenderWindow* renW
   // level L - 1, and the last one of an odd row also the leftover, so a texel
   // always covers at least its 2^L x 2^L block of the map (the shader's
   // footprint test is conservative).
-  std::vector<float> depth(static_cast<size_t>(w) * h);
+  // One RG32F texture of one level: the map at (0, 0), level L > 0 right of
+  // it at (w, h - (h >> (L - 1))) (the levels' heights h/2, h/4, ... stack
+  // into h when h is a power of two; otherwise no pyramid, Top 0). (A real mip
+  // chain read with texelFetch(..., level) returned stale levels on llvmpipe
+  // after the pass's textures had been released and made again.)
+  // Each level is reduced straight from the previous one inside the atlas,
+  // and the buffers are not value-initialized: a point light's atlas at the
+  // default size is 75 MB, so zero-filling and copying it dominated a bake.
+  int top = 0;
+  if ((h & (h - 1)) == 0)
+  {
+    while ((h >> top) > 1)
+    {
+      ++top;
+    }
+  }
+  const int atlasW = top > 0 ? w + std::max(w >> 1, 1) : w;
+  const size_t count = static_cast<size_t>(w) * h;
+  std::unique_ptr<float[]> depth(new float[count]);
   // Raw binds on the current unit, restored after: no texture unit of VTK's
   // manager is taken, so none is left pointing at these textures.
   GLint previous = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
   glBindTexture(GL_TEXTURE_2D, m->Depth->GetHandle());
-  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.get());
   glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
-  std::vector<std::vector<float>> levels(1);
-  levels[0].resize(2 * depth.size());
-  for (size_t i = 0; i < depth.size(); ++i)
+  std::unique_ptr<float[]> atlas(new float[2 * static_cast<size_t>(atlasW) * h]);
+  float* const a = atlas.get();
+  vtkSMPTools::For(0, h, [&](vtkIdType y0, vtkIdType y1) {
+    for (vtkIdType y = y0; y < y1; ++y)
+    {
+      float* row = a + 2 * static_cast<size_t>(y) * atlasW;
+      const float* d = depth.get() + static_cast<size_t>(y) * w;
+      for (int x = 0; x < w; ++x)
+      {
+        row[2 * x] = row[2 * x + 1] = d[x];
+      }
+      std::fill(row + 2 * static_cast<size_t>(w), row + 2 * static_cast<size_t>(atlasW), 1.0f);
+    }
+  });
+  depth.reset();
+  // level l's first texel in the atlas (its rows atlasW texels apart)
+  auto origin = [&](int l) {
+    const int x0 = l == 0 ? 0 : w;
+    const int y0 = l == 0 ? 0 : h - (h >> (l - 1));
+    return a + 2 * (static_cast<size_t>(y0) * atlasW + x0);
+  };
+  int pw = w, ph = h;
+  for (int l = 1; l <= top; ++l)
   {
-    levels[0][2 * i] = levels[0][2 * i + 1] = depth[i];
-  }
-  std::vector<std::pair<int, int>> sizes{ { w, h } };
-  while (sizes.back().first > 1 || sizes.back().second > 1)
-  {
-    const int pw = sizes.back().first, ph = sizes.back().second;
     const int lw = std::max(pw / 2, 1), lh = std::max(ph / 2, 1);
-    const std::vector<float>& prev = levels.back();
-    std::vector<float> next(2 * static_cast<size_t>(lw) * lh);
+    const float* prev = origin(l - 1);
+    float* next = origin(l);
     vtkSMPTools::For(0, lh, [&](vtkIdType y0, vtkIdType y1) {
       for (vtkIdType y = y0; y < y1; ++y)
       {
@@ -764,46 +796,19 @@ void vtkPlumeAirlightPass::BuildMinMax(ShadowMap* m, vtkOpenGLRenderWindow* renW
           {
             for (int sx = sx0; sx <= sx1; ++sx)
             {
-              const size_t i = 2 * (static_cast<size_t>(sy) * pw + sx);
+              const size_t i = 2 * (static_cast<size_t>(sy) * atlasW + sx);
               lo = std::min(lo, prev[i]);
               hi = std::max(hi, prev[i + 1]);
             }
           }
-          const size_t o = 2 * (static_cast<size_t>(y) * lw + x);
+          const size_t o = 2 * (static_cast<size_t>(y) * atlasW + x);
           next[o] = lo;
           next[o + 1] = hi;
         }
       }
     });
-    levels.push_back(std::move(next));
-    sizes.emplace_back(lw, lh);
-  }
-  // One RG32F texture of one level: the map at (0, 0), level L > 0 right of
-  // it at (w, h - (h >> (L - 1))) (the levels' heights h/2, h/4, ... stack
-  // into h when h is a power of two; otherwise no pyramid, Top 0). (A real mip
-  // chain read with texelFetch(..., level) returned stale levels on llvmpipe
-  // after the pass's textures had been released and made again.)
-  int top = 0;
-  if ((h & (h - 1)) == 0)
-  {
-    while ((h >> top) > 1)
-    {
-      ++top;
-    }
-  }
-  const int atlasW = top > 0 ? w + std::max(w >> 1, 1) : w;
-  std::vector<float> atlas(2 * static_cast<size_t>(atlasW) * h, 1.0f);
-  for (int l = 0; l <= top; ++l)
-  {
-    const int x0 = l == 0 ? 0 : w;
-    const int y0 = l == 0 ? 0 : h - (h >> (l - 1));
-    const int lw = sizes[l].first, lh = sizes[l].second;
-    for (int y = 0; y < lh; ++y)
-    {
-      std::copy(levels[l].begin() + 2 * static_cast<size_t>(y) * lw,
-        levels[l].begin() + 2 * (static_cast<size_t>(y) + 1) * lw,
-        atlas.begin() + 2 * ((static_cast<size_t>(y0) + y) * atlasW + x0));
-    }
+    pw = lw;
+    ph = lh;
   }
   if (!m->MinMax)
   {
@@ -814,7 +819,20 @@ void vtkPlumeAirlightPass::BuildMinMax(ShadowMap* m, vtkOpenGLRenderWindow* renW
     m->MinMax->SetMinificationFilter(vtkTextureObject::Nearest);
     m->MinMax->SetMagnificationFilter(vtkTextureObject::Nearest);
   }
-  m->MinMax->Create2DFromRaw(atlasW, h, 2, VTK_FLOAT, atlas.data());
+  if (m->MinMax->GetHandle() != 0 && static_cast<int>(m->MinMax->GetWidth()) == atlasW &&
+    static_cast<int>(m->MinMax->GetHeight()) == h && m->MinMax->GetComponents() == 2)
+  {
+    // same size as the last bake: update in place (a new texture of this
+    // size would be allocated and cleared by the driver each bake)
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
+    glBindTexture(GL_TEXTURE_2D, m->MinMax->GetHandle());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, atlasW, h, GL_RG, GL_FLOAT, a);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
+  }
+  else
+  {
+    m->MinMax->Create2DFromRaw(atlasW, h, 2, VTK_FLOAT, a);
+  }
   m->Top = top;
 }
 

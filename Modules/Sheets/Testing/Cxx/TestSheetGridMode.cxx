@@ -24,10 +24,14 @@
 
 namespace
 {
-int Check(sheettest::Scene& s, vtkPolyData* mesh, const std::string& name, vtkPlumeSheetReference* ref = nullptr)
+int Check(sheettest::Scene& s, vtkPolyData* mesh, const std::string& name)
 {
   s.Mapper->SetRenderMode(vtkPlumeSheetMapper::RENDER_GRID);
-  const sheettest::Result r = sheettest::CompareWithReference(s, mesh, name, ref);
+  // The reference at every 2nd pixel along x and y (a quarter of its cost,
+  // most of this test's): the grid's errors come from its spacing (2 nodes per
+  // sigma, several pixels here) and span many pixels. With the spacing 4x
+  // coarser every scene fails on this lattice (RMS 1.7-54 %, max 13-88 %).
+  const sheettest::Result r = sheettest::CompareWithReference(s, 2, mesh, name);
   std::printf("%-28s grid spacing %.4g, %d grids\n", "", s.Mapper->GetGridSpacing(), s.Mapper->GetGridComputeCount());
   return sheettest::CheckGoal(r, name);
 }
@@ -60,7 +64,7 @@ int TestSheetGridMode(int, char*[])
       s.Mapper->SetRenderMode(vtkPlumeSheetMapper::RENDER_GRID);
       // (CompareWithReference resets the clipping range from the bounds: the
       // camera is inside them, so VTK puts the near plane close to the eye)
-      return sheettest::CompareWithReference(s, tri, "grid camera inside");
+      return sheettest::CompareWithReference(s, 2, tri, "grid camera inside");
     }(), "grid camera inside");
     // the actor moved, rotated and scaled (sigmas scale, densities stay per world area)
     vtkNew<vtkTransform> xf;
@@ -171,7 +175,7 @@ int TestSheetGridMode(int, char*[])
     pts->Modified();
     changed("mesh points moved");
     // the reference agrees with the last frame (not a stale one)
-    failures += sheettest::CheckGoal(sheettest::CompareWithReference(s, ring, "grid after changes"), "grid after changes");
+    failures += sheettest::CheckGoal(sheettest::CompareWithReference(s, 2, ring, "grid after changes"), "grid after changes");
   }
   {
     // stress: NaN density and position, huge sigma, zero-area triangle: finite pixels, no GL error

@@ -9,7 +9,11 @@
 // thickness and density come from point arrays made from its temperature.
 // Goal: RMS <= 1 %, max <= 5 % of the reference's transmittance range (as
 // every accuracy test), and RMS <= 0.2 % on the single triangles (today's
-// default quality elsewhere).
+// default quality elsewhere). The triangles' reference is computed at every
+// 2nd pixel along x and y (a quarter of its cost, most of this test's): with
+// the shader's varying-sigma branch switched off (SigmaVaries false), four of
+// the six triangle scenes fail on that lattice (RMS up to 3.3 %, max up to
+// 45 %).
 #include "plumeSheetMeshes.h"
 #include "plumeSheetTestUtil.h"
 
@@ -65,7 +69,7 @@ int TestSheetVaryingSigma(int, char*[])
     s.Mapper->SetThicknessArrayName("thickness");
     s.Camera(0.0, 0.0, 5.0, 0, 0, 0);
     failures += sheettest::CheckGoal(
-      sheettest::CompareWithReference(s, tri, "sigma_b 0.06/0.10/0.14"), "sigma_b varies", 0.002);
+      sheettest::CompareWithReference(s, 2, tri, "sigma_b 0.06/0.10/0.14"), "sigma_b varies", 0.002);
   }
   {
     // all three vary
@@ -77,13 +81,13 @@ int TestSheetVaryingSigma(int, char*[])
     s.Mapper->SetThicknessArrayName("thickness");
     s.Camera(0.4, -0.3, 5.0, 0, 0, 0);
     failures += sheettest::CheckGoal(
-      sheettest::CompareWithReference(s, tri, "d, sigma_b, sigma_t vary"), "all vary", 0.002);
+      sheettest::CompareWithReference(s, 2, tri, "d, sigma_b, sigma_t vary"), "all vary", 0.002);
     s.Camera(4.6, 0.5, 1.2, 0, 0, 0);
     failures += sheettest::CheckGoal(
-      sheettest::CompareWithReference(s, tri, "all vary, grazing"), "all vary grazing", 0.002);
+      sheettest::CompareWithReference(s, 2, tri, "all vary, grazing"), "all vary grazing", 0.002);
     s.Camera(0.2, -5.0, 2.9, 0, 0, 0); // nearly in the tilted plane
     failures += sheettest::CheckGoal(
-      sheettest::CompareWithReference(s, tri, "all vary, edge-on"), "all vary edge-on", 0.002);
+      sheettest::CompareWithReference(s, 2, tri, "all vary, edge-on"), "all vary edge-on", 0.002);
   }
   {
     // a tenfold sigma_b ratio across the triangle
@@ -95,10 +99,10 @@ int TestSheetVaryingSigma(int, char*[])
     s.Mapper->SetThicknessArrayName("thickness");
     s.Camera(-0.3, 0.4, 5.0, 0, 0, 0);
     failures += sheettest::CheckGoal(
-      sheettest::CompareWithReference(s, tri, "sigma_b ratio 10"), "ratio 10", 0.002);
+      sheettest::CompareWithReference(s, 2, tri, "sigma_b ratio 10"), "ratio 10", 0.002);
     s.Mapper->SetThinSheet(true);
     failures += sheettest::CheckGoal(
-      sheettest::CompareWithReference(s, tri, "sigma_b ratio 10, thin"), "ratio 10 thin", 0.002);
+      sheettest::CompareWithReference(s, 2, tri, "sigma_b ratio 10, thin"), "ratio 10 thin", 0.002);
   }
   {
     // a real mesh whose arrays vary: the fire mfrac isosurface, blur, thickness

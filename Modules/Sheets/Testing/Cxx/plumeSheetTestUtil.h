@@ -197,6 +197,14 @@ inline Result CompareWithReference(Scene& s, vtkPolyData* mesh, const std::strin
   return r;
 }
 
+/** CompareWithReference with the reference at every `stride`-th pixel along x and y only. */
+inline Result CompareWithReference(Scene& s, int stride, vtkPolyData* mesh, const std::string& name)
+{
+  vtkNew<vtkPlumeSheetReference> ref;
+  ref->SetPixelStride(stride);
+  return CompareWithReference(s, mesh, name, ref);
+}
+
 /** The accuracy goal of issue 4: RMS <= 1 %, max <= 5 % of the reference's dynamic range. */
 inline int CheckGoal(const Result& r, const std::string& name, double rms = 0.01, double max = 0.05)
 {
