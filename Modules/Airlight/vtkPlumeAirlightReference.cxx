@@ -58,7 +58,7 @@ double MaxAbs(const RGB& a)
 
 // Adaptive Simpson for an RGB-valued integrand (error: the largest channel's).
 template <class F>
-RGB Simpson(const F& f, double a, const RGB& fa, double m, const RGB& fm, double b, const RGB& fb,
+RGB ReferenceSimpson(const F& f, double a, const RGB& fa, double m, const RGB& fm, double b, const RGB& fb,
   const RGB& whole, double tol, int depth)
 {
   const double lm = 0.5 * (a + m);
@@ -76,16 +76,16 @@ RGB Simpson(const F& f, double a, const RGB& fa, double m, const RGB& fm, double
   {
     return (left + right) + (1.0 / 15.0) * delta;
   }
-  return Simpson(f, a, fa, lm, flm, m, fm, left, 0.5 * tol, depth - 1) +
-    Simpson(f, m, fm, rm, frm, b, fb, right, 0.5 * tol, depth - 1);
+  return ReferenceSimpson(f, a, fa, lm, flm, m, fm, left, 0.5 * tol, depth - 1) +
+    ReferenceSimpson(f, m, fm, rm, frm, b, fb, right, 0.5 * tol, depth - 1);
 }
 
 template <class F>
-RGB Integrate(const F& f, double a, double b, double tol)
+RGB ReferenceIntegrate(const F& f, double a, double b, double tol)
 {
   const double m = 0.5 * (a + b);
   const RGB fa = f(a), fm = f(m), fb = f(b);
-  return Simpson(f, a, fa, m, fm, b, fb, ((b - a) / 6.0) * (fa + 4.0 * fm + fb), tol, 50);
+  return ReferenceSimpson(f, a, fa, m, fm, b, fb, ((b - a) / 6.0) * (fa + 4.0 * fm + fb), tol, 50);
 }
 }
 
@@ -559,7 +559,7 @@ void vtkPlumeAirlightReference::ComputeSmoke(const double origin[3], const doubl
     {
       const RGB fa = f(cuts[p]), fb = f(cuts[p + 1]);
       const double scale = std::max(MaxAbs(fa), MaxAbs(fb)) * (cuts[p + 1] - cuts[p]);
-      const RGB v = Integrate(f, cuts[p], cuts[p + 1], this->RelativeTolerance * scale + 1e-300);
+      const RGB v = ReferenceIntegrate(f, cuts[p], cuts[p + 1], this->RelativeTolerance * scale + 1e-300);
       for (int c = 0; c < 3; ++c)
       {
         emission[c] += v[c];
@@ -739,13 +739,13 @@ void vtkPlumeAirlightReference::ComputeRay(
         if (b > a && (!light.Shadowed || inside(0.5 * (a + b))))
         {
           sum = sum + (coarse ? ((b - a) / 6.0) * (f(a) + 4.0 * f(0.5 * (a + b)) + f(b))
-                              : Integrate(f, a, b, tol));
+                              : ReferenceIntegrate(f, a, b, tol));
         }
       }
       if (infinite && (!light.Shadowed || inside(breaks.back() + 1.0)))
       {
         auto g = mapped(breaks.back());
-        sum = sum + (coarse ? (1.0 / 6.0) * (g(0.0) + 4.0 * g(0.5) + g(1.0)) : Integrate(g, 0.0, 1.0, tol));
+        sum = sum + (coarse ? (1.0 / 6.0) * (g(0.0) + 4.0 * g(0.5) + g(1.0)) : ReferenceIntegrate(g, 0.0, 1.0, tol));
       }
       return sum;
     };

@@ -29,12 +29,12 @@ namespace
 {
 const double MaximumSigma = 1e15; // as vtkPlumeSheetMapper::MaximumSigma
 
-double Clean(double v)
+double GridClean(double v)
 {
   return std::isfinite(v) && v > 0.0 ? v : 0.0;
 }
 
-vtkDataArray* Named(vtkPolyData* poly, const std::string& name)
+vtkDataArray* GridArray(vtkPolyData* poly, const std::string& name)
 {
   if (name.empty())
   {
@@ -117,9 +117,9 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
     vtkErrorMacro(<< "no input mesh");
     return false;
   }
-  vtkDataArray* dArr = Named(poly, this->DensityArrayName);
-  vtkDataArray* bArr = Named(poly, this->BlurArrayName);
-  vtkDataArray* tArr = Named(poly, this->ThicknessArrayName);
+  vtkDataArray* dArr = GridArray(poly, this->DensityArrayName);
+  vtkDataArray* bArr = GridArray(poly, this->BlurArrayName);
+  vtkDataArray* tArr = GridArray(poly, this->ThicknessArrayName);
   const double scale = this->DensityScale;
 
   // ---- triangles with the mapper's conventions; only their point ids are
@@ -136,11 +136,11 @@ bool vtkPlumeSheetDensityGrid::Run(bool budgetOnly)
         return false;
       }
       c[k].P = glm::dvec3(p[0], p[1], p[2]);
-      c[k].D = std::min(Clean((dArr ? dArr->GetComponent(ids[k], 0) : this->Density) * scale), 1e30);
-      c[k].SB = std::min(Clean(bArr ? bArr->GetComponent(ids[k], 0) : this->BlurRadius), MaximumSigma);
+      c[k].D = std::min(GridClean((dArr ? dArr->GetComponent(ids[k], 0) : this->Density) * scale), 1e30);
+      c[k].SB = std::min(GridClean(bArr ? bArr->GetComponent(ids[k], 0) : this->BlurRadius), MaximumSigma);
       c[k].ST = this->ThinSheet
         ? 0.0
-        : std::min(Clean(tArr ? tArr->GetComponent(ids[k], 0) : this->Thickness), MaximumSigma);
+        : std::min(GridClean(tArr ? tArr->GetComponent(ids[k], 0) : this->Thickness), MaximumSigma);
       any = any || c[k].D > 0;
     }
     const double area = glm::length(glm::cross(c[1].P - c[0].P, c[2].P - c[0].P));

@@ -31,7 +31,7 @@ const double Huge = 1e300;
 // from the ray are skipped (exp(-18) ~ 1.5e-8 of the peak)
 const double Support = 6.0;
 
-double Clean(double v)
+double ReferenceClean(double v)
 {
   return std::isfinite(v) && v > 0.0 ? v : 0.0;
 }
@@ -368,7 +368,7 @@ Vec Unproject(const double inv[16], double x, double y, double z)
   return { out[0] / out[3], out[1] / out[3], out[2] / out[3] };
 }
 
-vtkDataArray* Named(vtkPolyData* poly, const std::string& name, int comps)
+vtkDataArray* ReferenceArray(vtkPolyData* poly, const std::string& name, int comps)
 {
   if (name.empty())
   {
@@ -427,10 +427,10 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
   vtkMatrix4x4::Invert(M, Minv);
 
   // ---- triangles with the model's conventions
-  vtkDataArray* dArr = Named(poly, this->DensityArrayName, 1);
-  vtkDataArray* bArr = Named(poly, this->BlurArrayName, 1);
-  vtkDataArray* tArr = Named(poly, this->ThicknessArrayName, 1);
-  vtkDataArray* aArr = Named(poly, this->AbsorptionArrayName, 3);
+  vtkDataArray* dArr = ReferenceArray(poly, this->DensityArrayName, 1);
+  vtkDataArray* bArr = ReferenceArray(poly, this->BlurArrayName, 1);
+  vtkDataArray* tArr = ReferenceArray(poly, this->ThicknessArrayName, 1);
+  vtkDataArray* aArr = ReferenceArray(poly, this->AbsorptionArrayName, 3);
   // model -> world: positions by the matrix, sigmas by its length scale
   const double* MM = this->ModelMatrix;
   const double lengthScale = std::cbrt(std::fabs(MM[0] * (MM[5] * MM[10] - MM[6] * MM[9]) -
@@ -463,19 +463,19 @@ bool vtkPlumeSheetReference::Compute(vtkRenderer* renderer, const float* depth)
       }
       t.P[k] = { p[0] / p[3], p[1] / p[3], p[2] / p[3] };
       const double d =
-        Clean((dArr ? dArr->GetComponent(ids[k], 0) : this->Density) * this->DensityScale);
+        ReferenceClean((dArr ? dArr->GetComponent(ids[k], 0) : this->Density) * this->DensityScale);
       for (int c = 0; c < 3; ++c)
       {
-        t.D[k][c] = d * (aArr ? Clean(aArr->GetComponent(ids[k], c)) : 1.0);
+        t.D[k][c] = d * (aArr ? ReferenceClean(aArr->GetComponent(ids[k], c)) : 1.0);
         any = any || t.D[k][c] > 0;
       }
       const double floorSigma = this->MinimumSigmaPixels * pixelSize(t.P[k]);
       t.SB[k] = std::max(
-        Clean(bArr ? bArr->GetComponent(ids[k], 0) : this->BlurRadius) * lengthScale, floorSigma);
+        ReferenceClean(bArr ? bArr->GetComponent(ids[k], 0) : this->BlurRadius) * lengthScale, floorSigma);
       t.ST[k] = this->ThinSheet
         ? 0.0
         : std::max(
-            Clean(tArr ? tArr->GetComponent(ids[k], 0) : this->Thickness) * lengthScale, floorSigma);
+            ReferenceClean(tArr ? tArr->GetComponent(ids[k], 0) : this->Thickness) * lengthScale, floorSigma);
     }
     const Vec n = glm::cross((t.P[1] - t.P[0]), (t.P[2] - t.P[0]));
     const double nl = glm::length(n);

@@ -2,7 +2,8 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkPlumeParameterTable.h"
-#include "vtkSMPTools.h"
+
+#include "plumeGridRows.h"
 
 #include <HYPRE_struct_ls.h>
 #include <mpi.h>
@@ -13,6 +14,8 @@
 #include <cstdlib>
 
 vtkStandardNewMacro(vtkPlumePressureSolver);
+
+using plume::smoke::ForRows;
 
 namespace
 {
@@ -52,20 +55,6 @@ void EnsureMPIAndHypre()
     return true;
   }();
   (void)ready;
-}
-
-// Rows (j, k) of the cell grid, threaded; every sum over rows lands in its
-// own slot and is added up in row order, so results do not depend on the
-// number of threads.
-template <class F>
-void ForRows(const int n[3], F&& f)
-{
-  vtkSMPTools::For(0, vtkIdType(n[1]) * n[2], [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      f(int(r % n[1]), int(r / n[1]));
-    }
-  });
 }
 }
 

@@ -3,6 +3,7 @@
 #include "vtkPlumeParameterTable.h"
 #include "vtkPlumePressureSolver.h"
 
+#include "plumeGridRows.h"
 #include "plumeSmokeGPU.h"
 #include "vtkPlumeQuietExecutive.h"
 #include "vtkPlumeTextureHandOver.h"
@@ -40,6 +41,8 @@
 
 vtkStandardNewMacro(vtkPlumeSmokeSolver);
 
+using plume::smoke::ForRows;
+
 namespace
 {
 const char* const FaceNames[6] = { "xmin", "xmax", "ymin", "ymax", "zmin", "zmax" };
@@ -74,18 +77,6 @@ std::string Text(double v)
   std::ostringstream out;
   out << v;
   return out.str();
-}
-
-// Threaded loop over the rows (j, k) of a grid with n[1] × n[2] rows.
-template <class F>
-void ForRows(const int n[3], F&& f)
-{
-  vtkSMPTools::For(0, vtkIdType(n[1]) * n[2], [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      f(int(r % n[1]), int(r / n[1]));
-    }
-  });
 }
 
 // Trilinear sample of a grid with m points per axis whose point (0,0,0) is
