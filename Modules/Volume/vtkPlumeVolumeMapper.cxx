@@ -5,6 +5,7 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeImageFrame.h"
+#include "vtkPlumeLatticeCellsVS.h"
 #include "vtkPlumeLightVolume.h"
 #include "vtkPlumeLookupTexture.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
@@ -1327,7 +1328,6 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
   vtkPlumeShaderFeatures& refineFeatures = frame.RefineFeatures;
   refineFeatures = features;
   refineFeatures.Enable("REFINE");
-  features.Enable("CELLS", lattice > 1);
   // An opaque isosurface writes its depth (as opaque geometry does), so what
   // draws after it, e.g. vtkPlumeAirlightPass's medium, stops there. Only
   // when every pixel casts its own ray: interpolated lattice pixels have no
@@ -1362,7 +1362,9 @@ bool vtkPlumeVolumeMapper::Internals::ReadyPrograms(vtkPlumeVolumeMapper* self, 
     }
   }
   vtkShaderProgram*& program = frame.Program;
-  program = this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, features);
+  // with the lattice the ray program draws the refined cells' quads (the
+  // shared cells vertex shader), otherwise the box
+  program = this->Programs->Ready(renWin, lattice > 1 ? vtkPlumeLatticeCellsVS : vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, features);
   if (!program)
   {
     vtkErrorWithObjectMacro(self, << "could not build the volume shader program");
@@ -1805,7 +1807,7 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
     glDrawArrays(GL_TRIANGLES, 0, 36);
     this->MarkPass(self, "interpolation");
   }
-  this->Programs->Ready(renWin, vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.Features);
+  this->Programs->Ready(renWin, lattice > 1 ? vtkPlumeLatticeCellsVS : vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.Features);
   this->SetUniforms(self, frame, program);
   program->SetUniform2f("ClipScale", unitScale);
   program->SetUniform2f("ClipOffset", noOffset);
@@ -1814,9 +1816,11 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
     // each pixel of the other cells casts its own ray: one quad per cell, those
     // of interpolated cells collapsed in the vertex shader, so their pixels
     // never run the ray program (llvmpipe would run its set-up for them)
-    program->SetUniformi("CellRefine", this->Cells->GetTextureUnit());
-    program->SetUniformf("Lattice", static_cast<float>(lattice));
-    program->SetUniform2f("LatticeSize", latticeDims);
+    const float target[2] = { float(vpWidth), float(vpHeight) };
+    program->SetUniformi("DrawCells", this->Cells->GetTextureUnit());
+    program->SetUniformi("DrawCellSize", lattice);
+    program->SetUniform2i("DrawCellCount", latticeSize);
+    program->SetUniform2f("DrawTargetSize", target);
     state->vtkglDisable(GL_CULL_FACE);
     glDrawArrays(GL_TRIANGLES, 0, 6 * latticeSize[0] * latticeSize[1]);
     state->vtkglEnable(GL_CULL_FACE);

@@ -41,7 +41,7 @@
 //                    classified 0 interpolates the lattice bilinearly (one
 //                    filtered look-up); elsewhere it is discarded (nothing
 //                    else runs), and the ray program draws the cells
-//                    classified 1 (the vertex shader's CELLS)
+//                    classified 1 (vtkPlumeLatticeCellsVS)
 //   ISO_DEPTH        ISO without REFINE: the hit writes its window depth
 //                    (gl_FragDepth), as opaque geometry does
 //   SHADOW_RAYS | LIGHT_CACHE   SMOKE: a shadow ray per sample and light | the

@@ -2,6 +2,8 @@
 
 // vtkPlumeVolumeMapper vertex shader: the 12 triangles of the volume's box,
 // generated from gl_VertexID (no vertex buffer). Corners are in index space.
+// (The ray lattice's refined cells are drawn by the shared
+// vtkPlumeLatticeCellsVS instead.)
 
 uniform mat4 IndexToClip;
 uniform vec3 DrawMin; // the box drawn: the volume, or only its non-transparent blocks
@@ -14,30 +16,9 @@ uniform vec2 ClipOffset; // (0, 0)   lattice texture (lattice ray i is the ray t
 const int Corners[36] = int[36](0, 6, 2, 0, 4, 6, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
   2, 7, 3, 2, 6, 7, 0, 3, 1, 0, 2, 3, 4, 5, 7, 4, 7, 6);
 
-//PLUME::IF CELLS
-uniform sampler2D CellRefine; // per lattice cell: 0 = interpolated, 1 = cast own rays
-uniform float Lattice;
-uniform vec2 LatticeSize;
-uniform vec2 ViewportSize;
-const ivec2 QuadCorners[6] = ivec2[6](ivec2(0, 0), ivec2(1, 0), ivec2(1, 1), ivec2(0, 0), ivec2(1, 1), ivec2(0, 1));
-//PLUME::ENDIF
 
 void main()
 {
-//PLUME::IF CELLS
-  // the rays of the cells that cast their own: one quad per lattice cell (its
-  // L x L pixels), collapsed to a point outside the view where the cell is
-  // interpolated, so those pixels are never shaded by the ray program
-  ivec2 cell = ivec2(gl_VertexID / 6 % int(LatticeSize.x), gl_VertexID / 6 / int(LatticeSize.x));
-  if (texelFetch(CellRefine, cell, 0).r == 0.0)
-  {
-    gl_Position = vec4(2.0, 2.0, 0.0, 1.0);
-    return;
-  }
-  vec2 corner = min(vec2((cell + QuadCorners[gl_VertexID % 6]) * int(Lattice)), ViewportSize);
-  gl_Position = vec4(2.0 * corner / ViewportSize - 1.0, 0.0, 1.0);
-  return;
-//PLUME::ENDIF
 //PLUME::IF CLASSIFY LIGHT_VOLUME
   // the cell classification covers the whole lattice texture, a light-volume
   // slice the whole slice: one triangle
