@@ -913,14 +913,6 @@ vec3 secondDifference(ivec2 n, ivec2 axis, ivec2 lo, ivec2 hi)
   return abs(a - 2.0 * b + d);
 }
 
-// The eye-space z of the point at pixel `pixel` and window depth `depth`.
-float eyeZ(ivec2 pixel, float depth)
-{
-  vec2 ndc = (vec2(pixel) + 0.5) / ViewportSize * 2.0 - 1.0;
-  vec4 p = InverseProjection * vec4(ndc, 2.0 * depth - 1.0, 1.0);
-  return p.z / p.w;
-}
-
 // 1 if cell `cell` must be refined (every pixel evaluated exactly), else 0.
 // Bilinear interpolation errs by about (|f_xx| + |f_yy|) D^2 / 8 inside the
 // cell; the nodes' second differences estimate f_xx D^2 and f_yy D^2 at its
@@ -985,7 +977,14 @@ float classifyCell(ivec2 cell)
   // the cell's pixels (the last cell of a row or column: up to the viewport's edge)
   ivec2 end = ivec2(cell.x == LatticeCellCount.x - 1 ? int(ViewportSize.x) : p1.x,
     cell.y == LatticeCellCount.y - 1 ? int(ViewportSize.y) : p1.y);
-  vec2 size = vec2(p1 - p0);
+  vec2 invSize = 1.0 / vec2(p1 - p0);
+  // At a pixel, eye z is (a + b zn) / (c + e zn) of zn = 2 depth - 1 (the
+  // inverse projection's z and w rows; a and c depend on the pixel): the
+  // mismatch |z' - z| > tolerance |z| is compared multiplied out, without a
+  // division or a second unprojection.
+  vec4 rowZ = vec4(InverseProjection[0].z, InverseProjection[1].z, InverseProjection[2].z, InverseProjection[3].z);
+  vec4 rowW = vec4(InverseProjection[0].w, InverseProjection[1].w, InverseProjection[2].w, InverseProjection[3].w);
+  vec2 ndcScale = 2.0 / ViewportSize;
   for (int j = p0.y; j < end.y; ++j)
   {
     for (int i = p0.x; i < end.x; ++i)
@@ -1008,10 +1007,15 @@ float classifyCell(ivec2 cell)
         }
         continue;
       }
-      vec2 f = (vec2(p - p0)) / size;
+      vec2 f = vec2(p - p0) * invSize;
       float predicted = mix(mix(z.x, z.y, f.x), mix(z.z, z.w, f.x), f.y);
-      float ze = eyeZ(p, d);
-      if (d >= 1.0 || abs(eyeZ(p, predicted) - ze) > LatticeDepthTolerance * abs(ze))
+      vec2 ndc = (vec2(p) + 0.5) * ndcScale - 1.0;
+      float a = dot(rowZ.xy, ndc) + rowZ.w;
+      float c = dot(rowW.xy, ndc) + rowW.w;
+      float zn = 2.0 * d - 1.0, zp = 2.0 * predicted - 1.0;
+      float num = a + rowZ.z * zn, den = c + rowW.z * zn;
+      float numP = a + rowZ.z * zp, denP = c + rowW.z * zp;
+      if (d >= 1.0 || abs(numP * den - num * denP) > LatticeDepthTolerance * abs(num * denP))
       {
         return 1.0;
       }

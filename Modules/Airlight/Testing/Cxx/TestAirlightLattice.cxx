@@ -12,8 +12,9 @@
 // the per-pixel one), and a finer level evaluates fewer pixels exactly than
 // one level of the same spacing; at the nodes' pixels the frame is the
 // per-pixel one (the interpolation's geometry, the narrower last cells
-// included). With a
-// thin occluder and shadows on, the frame is the per-pixel one.
+// included). A thin pole's pixels (narrower than a cell) are the per-pixel
+// ones (the depth rule refines its cells); with shadows on, the whole frame
+// is the per-pixel one.
 #include "plumeAirlightTestUtil.h"
 
 int TestAirlightLattice(int, char*[])
@@ -164,6 +165,35 @@ int TestAirlightLattice(int, char*[])
   // Shadowed lights stay off the lattice: a thin pole's shadow shaft (about
   // 2 pixels wide here) can fall between nodes, where no classification rule
   // would see it. The default frame equals the per-pixel one.
+  {
+    // A pole narrower than a cell, away from the lights' images (smooth
+    // airlight): the depth rule alone refines the cells it crosses (their
+    // pixels leave the surface their corners predict), so its pixels are the
+    // per-pixel ones.
+    s.AddBox(-2.03, -1.97, 0.0, 3.0, 0.47, 0.53, 0.5, 0.5, 0.5);
+    const airtest::FloatImage poled = s.RenderFloat(nullptr);
+    s.Pass->SetDownsampling(1);
+    const airtest::FloatImage poleFull = render();
+    s.Pass->SetDownsampling(8);
+    s.Pass->SetLatticeLevels(1);
+    const airtest::FloatImage poleLattice = render();
+    double poleMax = 0.0;
+    size_t poleCount = 0;
+    for (size_t p = 0; p < poled.Depth.size(); ++p)
+    {
+      if (poled.Depth[p] < plain.Depth[p])
+      {
+        ++poleCount;
+        for (int c = 0; c < 3; ++c)
+        {
+          poleMax = std::max(poleMax, static_cast<double>(std::fabs(poleLattice.RGBA[4 * p + c] - poleFull.RGBA[4 * p + c])));
+        }
+      }
+    }
+    std::cout << "the pole's " << poleCount << " pixels against the per-pixel pass: max " << poleMax << "\n";
+    PLUME_CHECK(poleCount > 100);
+    PLUME_CHECK(poleMax <= 1e-5);
+  }
   s.AddBox(1.4, 1.46, 0.0, 2.4, -1.6, -1.54, 0.5, 0.5, 0.5);
   s.Pass->ShadowsOn();
   s.Pass->SetDownsampling(1);
