@@ -683,8 +683,13 @@ vec3 spanAirlight(vec3 o, vec3 r, vec2 span, float tc, float h, int l, float exp
   float th0 = atan(span.x - tc, h);
   float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
   // The weight's angular width shrinks as 1/sqrt(exponent): SpotSteps
-  // sub-intervals per unit of sqrt(exponent / 2), at most 256.
-  steps = weighted ? min(SpotSteps * int(ceil(sqrt(max(exponent, 2.0) / 2.0))), 256) : 1;
+  // sub-intervals per unit of sqrt(exponent / 2) for a chord that spans the
+  // cone's full angle 2 alpha (the most a chord inside the cone subtends at
+  // the apex), a shorter chord's share of them (the same angular step), at
+  // most 256.
+  float share = min((th1 - th0) / (2.0 * acos(clamp(LightCosCone[l], -1.0, 1.0))), 1.0);
+  steps = weighted
+    ? clamp(int(ceil(float(SpotSteps) * ceil(sqrt(max(exponent, 2.0) / 2.0)) * share)), 1, 256) : 1;
 //PLUME::IF TEXTURE
   if (textured(l))
   {
