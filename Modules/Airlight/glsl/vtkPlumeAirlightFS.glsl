@@ -1002,6 +1002,19 @@ float classifyCell(ivec2 cell)
   ivec2 end = ivec2(cell.x == LatticeCellCount.x - 1 ? int(ViewportSize.x) : p1.x,
     cell.y == LatticeCellCount.y - 1 ? int(ViewportSize.y) : p1.y);
   vec2 size = vec2(p1 - p0);
+  // A crease (two surfaces meeting, the depth continuous: a room's corner)
+  // hides nothing between the nodes, and the second differences above bound
+  // its kink: where the corners' eye depths are within CREASE_SPREAD of each
+  // other, a pixel may also lie within their range instead of on the
+  // corners' plane. Anything in front of or behind the corners (a small
+  // object, a hole, a convex edge) is still refined.
+  vec4 zc = -vec4(eyeZ(p0, z.x), eyeZ(ivec2(p1.x, p0.y), z.y), eyeZ(ivec2(p0.x, p1.y), z.z), eyeZ(p1, z.w));
+  float zlo = min(min(zc.x, zc.y), min(zc.z, zc.w));
+  float zhi = max(max(zc.x, zc.y), max(zc.z, zc.w));
+  const float CREASE_SPREAD = 0.05;
+  bool crease = zhi <= (1.0 + CREASE_SPREAD) * zlo;
+  zlo *= 1.0 - LatticeDepthTolerance;
+  zhi *= 1.0 + LatticeDepthTolerance;
   for (int j = p0.y; j < end.y; ++j)
   {
     for (int i = p0.x; i < end.x; ++i)
@@ -1027,7 +1040,8 @@ float classifyCell(ivec2 cell)
       vec2 f = (vec2(p - p0)) / size;
       float predicted = mix(mix(z.x, z.y, f.x), mix(z.z, z.w, f.x), f.y);
       float ze = eyeZ(p, d);
-      if (d >= 1.0 || abs(eyeZ(p, predicted) - ze) > LatticeDepthTolerance * abs(ze))
+      bool inRange = crease && -ze >= zlo && -ze <= zhi;
+      if (d >= 1.0 || (!inRange && abs(eyeZ(p, predicted) - ze) > LatticeDepthTolerance * abs(ze)))
       {
         return 1.0;
       }
