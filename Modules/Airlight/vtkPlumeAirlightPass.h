@@ -37,8 +37,9 @@
  * the ray segment crosses the foot; a grey medium, kt equal in R, G and B,
  * compiles a variant with one look-up for the three channels). A spot light's hard cone boundary is
  * exact (ray-cone interval); its exponent weight pow(cos, e) is applied per
- * sub-interval, SpotSteps * ceil(sqrt(e/2)) sub-intervals uniform in the
- * angle seen from the light (one when e = 0, then exact).
+ * sub-interval, up to SpotSteps * ceil(sqrt(e/2)) sub-intervals uniform in the
+ * angle seen from the light (for a chord across the whole cone; fewer for a
+ * shorter one, the same angular step; one when e = 0, then exact).
  *
  * Lights: every switched-on positional vtkLight of the renderer (after the
  * delegate has updated the light geometry, so head/camera lights work);
@@ -205,7 +206,10 @@ public:
   ///@{
   /**
    * Sub-intervals along a spot light's cone for its exponent weight, per unit
-   * of sqrt(exponent / 2) (at most 256 in all; unused when the exponent is 0). Default 8.
+   * of sqrt(exponent / 2), for a view ray whose chord inside the cone spans
+   * the cone's full angle as seen from the light; a shorter chord gets its
+   * share (the same angular step), at least 1 (at most 256 in all; unused
+   * when the exponent is 0). Default 8.
    */
   vtkSetClampMacro(SpotSteps, int, 1, 256);
   vtkGetMacro(SpotSteps, int);
