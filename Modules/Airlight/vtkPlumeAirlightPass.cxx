@@ -46,8 +46,6 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
-#include <chrono>
-#include <ctime>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -1285,7 +1283,8 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   }
 
   // 1. The scene into our float colour + depth targets.
-  this->MarkPass(nullptr);
+  this->Profiler.SetEnabled(this->ProfilePasses);
+  this->Profiler.Start();
   ostate->PushFramebufferBindings();
   this->FrameBuffer->Bind();
   this->FrameBuffer->AddColorAttachment(0, this->ColorTexture);
@@ -1298,7 +1297,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   inner.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
   inner.SetFrameBuffer(this->FrameBuffer);
   this->RenderDelegate(&inner, anyTexture);
-  this->MarkPass("scene");
+  this->Profiler.Mark("scene");
   this->FrameBuffer->RemoveColorAttachments(1);
   this->FrameBuffer->RemoveDepthAttachment();
   ostate->PopFramebufferBindings();
@@ -1748,7 +1747,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       ostate->vtkglViewport(x, y, w, h);
       ostate->vtkglScissor(x, y, w, h);
       quad->Render();
-      this->MarkPass("pixels");
+      this->Profiler.Mark("pixels");
     }
     else if (!this->RenderLattice(renWin, features, setUniforms, blendGroup, x, y, w, h,
                camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0),
@@ -1937,7 +1936,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
       into(this->LatticeNodes[l], used);
       quad->Render();
     }
-    this->MarkPass(l == 0 ? "nodes" : ("nodes " + std::to_string(l)).c_str());
+    this->Profiler.Mark("nodes", l);
 
     f = base;
     f.Enable("LATTICE_CLASSIFY").Enable("NO_LIGHTS");
@@ -1975,7 +1974,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
       drawCells(program, l - 1, 2, cells[l]);
     }
-    this->MarkPass(l == 0 ? "classify" : ("classify " + std::to_string(l)).c_str());
+    this->Profiler.Mark("classify", l);
   }
   // counted only if asked (GetLastRefinedCellFraction): no wait here
   this->LatticeFlagsPending = true;
@@ -2000,7 +1999,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
   ostate->vtkglViewport(x, y, w, h);
   ostate->vtkglScissor(x, y, w, h);
   quad->Render();
-  this->MarkPass("resolve");
+  this->Profiler.Mark("resolve");
 
   // 4. Added in the parent's refined cells: each finer level's interpolated
   // airlight (no light code), then the last level's refined cells' exact
@@ -2028,7 +2027,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     }
     levelUniforms(program, refine ? l - 1 : l);
     drawCells(program, l - 1, spacing[l - 1], viewport);
-    this->MarkPass(refine ? "refine" : ("interpolate " + std::to_string(l)).c_str());
+    this->Profiler.Mark(refine ? "refine" : "interpolate", refine ? 0 : l);
   }
   for (int l = 0; l < levels; ++l)
   {
@@ -2139,47 +2138,6 @@ void vtkPlumeAirlightPass::CountLatticeFlags()
       this->LastRefinedPixelFraction = refinedPixels / double(w * h);
     }
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkPlumeAirlightPass::MarkPass(const char* pass)
-{
-  if (!this->ProfilePasses)
-  {
-    return;
-  }
-  glFinish();
-  const double now =
-    std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-  const double cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC; // all the process's threads
-  if (pass)
-  {
-    this->PassSeconds.push_back({ pass, now - this->PassStart, cpu - this->PassStartCPU });
-  }
-  else
-  {
-    this->PassSeconds.clear();
-  }
-  this->PassStart = now;
-  this->PassStartCPU = cpu;
-}
-
-//------------------------------------------------------------------------------
-const char* vtkPlumeAirlightPass::GetProfiledPassName(int pass)
-{
-  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].Name.c_str() : nullptr;
-}
-
-//------------------------------------------------------------------------------
-double vtkPlumeAirlightPass::GetProfiledPassSeconds(int pass)
-{
-  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].Seconds : 0.0;
-}
-
-//------------------------------------------------------------------------------
-double vtkPlumeAirlightPass::GetProfiledPassCPUSeconds(int pass)
-{
-  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].CPUSeconds : 0.0;
 }
 
 //------------------------------------------------------------------------------
