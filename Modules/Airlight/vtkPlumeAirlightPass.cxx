@@ -2164,33 +2164,20 @@ void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
   this->LatticeFlagsPending = false;
   this->Superclass::ReleaseGraphicsResources(w);
   this->Programs->ReleaseGraphicsResources(w);
-  for (vtkTextureObject** t :
-    { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->MediaTexture,
-      &this->MediaTransmittanceTexture, &this->TextureAtlas })
-  {
-    if (*t)
-    {
-      (*t)->Delete();
-      *t = nullptr;
-    }
-  }
-  for (vtkTextureObject** t : { &this->LatticeNodeMap, &this->LatticeNodeList })
-  {
-    if (*t)
-    {
-      (*t)->Delete();
-      *t = nullptr;
-    }
-  }
+  // every texture of the pass (the lattice's levels too), in one list
+  std::vector<vtkTextureObject**> textures = { &this->ColorTexture, &this->DepthTexture, &this->TableTexture,
+    &this->MediaTexture, &this->MediaTransmittanceTexture, &this->TextureAtlas, &this->LatticeNodeMap,
+    &this->LatticeNodeList };
   for (int l = 0; l < MaximumLatticeLevels; ++l)
   {
-    for (vtkTextureObject** t : { &this->LatticeNodes[l], &this->LatticeCells[l] })
+    textures.insert(textures.end(), { &this->LatticeNodes[l], &this->LatticeCells[l] });
+  }
+  for (vtkTextureObject** t : textures)
+  {
+    if (*t)
     {
-      if (*t)
-      {
-        (*t)->Delete();
-        *t = nullptr;
-      }
+      (*t)->Delete();
+      *t = nullptr;
     }
   }
   this->EmptyVAO->ReleaseGraphicsResources();
