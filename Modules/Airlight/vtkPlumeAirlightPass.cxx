@@ -1978,9 +1978,9 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
   }
   // counted only if asked (GetLastRefinedCellFraction): no wait here
   this->LatticeFlagsPending = true;
-  this->LatticeFrame[0] = levels;
-  this->LatticeFrame[1] = w;
-  this->LatticeFrame[2] = h;
+  this->LatticeFrame = { levels, { w, h } };
+  std::copy(spacing, spacing + levels, this->LatticeFrame.Spacing);
+  std::copy(&cells[0][0], &cells[0][0] + 2 * levels, &this->LatticeFrame.Cells[0][0]);
   this->LatticeWindow = renWin;
   this->LowFrameBuffer->RemoveColorAttachments(1);
   ostate->PopFramebufferBindings();
@@ -2096,12 +2096,18 @@ void vtkPlumeAirlightPass::CountLatticeFlags()
     return;
   }
   this->LatticeFlagsPending = false;
-  const int levels = this->LatticeFrame[0], w = this->LatticeFrame[1], h = this->LatticeFrame[2];
-  int spacing[MaximumLatticeLevels], cells[MaximumLatticeLevels][2];
-  if (LatticeGeometry(this->Downsampling, this->LatticeLevels, w, h, spacing, cells) != levels ||
-    !this->LatticeCells[levels - 1])
+  // the lattice of the frame that drew the flags (Downsampling and
+  // LatticeLevels may have changed since)
+  const int levels = this->LatticeFrame.Levels, w = this->LatticeFrame.Size[0], h = this->LatticeFrame.Size[1];
+  const int* spacing = this->LatticeFrame.Spacing;
+  const int(*cells)[2] = this->LatticeFrame.Cells;
+  for (int l = 0; l < levels; ++l)
   {
-    return; // changed since that frame: nothing to count
+    vtkTextureObject* t = this->LatticeCells[l];
+    if (!t || static_cast<int>(t->GetWidth()) != cells[l][0] || static_cast<int>(t->GetHeight()) != cells[l][1])
+    {
+      return; // resized since that frame (a later frame's viewport): nothing to count
+    }
   }
   this->LatticeWindow->MakeCurrent();
   for (int l : { 0, levels - 1 })

@@ -592,10 +592,18 @@ protected:
   double LastRefinedCellFraction = 0.0;
   double LastRefinedPixelFraction = 0.0;
   // The last lattice frame's flags are in LatticeCells, not yet counted
-  // (CountLatticeFlags reads them back on LatticeWindow): its levels and
-  // viewport width and height.
+  // (CountLatticeFlags reads them back on LatticeWindow): the lattice that
+  // frame drew (its levels, viewport width and height, each level's node
+  // spacing and cells per row and column).
   bool LatticeFlagsPending = false;
-  int LatticeFrame[3] = { 0, 0, 0 };
+  struct LatticeFrameGeometry
+  {
+    int Levels = 0;
+    int Size[2] = { 0, 0 };
+    int Spacing[MaximumLatticeLevels] = {};
+    int Cells[MaximumLatticeLevels][2] = {};
+  };
+  LatticeFrameGeometry LatticeFrame;
   vtkWeakPointer<vtkOpenGLRenderWindow> LatticeWindow;
   void CountLatticeFlags();
   // Reads level 0's cell flags back (their target bound), lists the level-1
