@@ -4,6 +4,7 @@
 #include "vtkPlumeLightTexture.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeGLMatrix.h"
+#include "vtkPlumeLatticeCellsDraw.h"
 #include "vtkPlumeLatticeCellsVS.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
@@ -1811,13 +1812,8 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
   // the level's spacing) or the next level's cells (scale 2: each cell holds
   // 2 x 2 of the next level's).
   auto drawCells = [&](vtkShaderProgram* program, int l, int scale, const int size[2]) {
-    program->SetUniformi("DrawCells", this->LatticeCells[l]->GetTextureUnit());
-    program->SetUniformi("DrawCellSize", scale);
-    program->SetUniform2i("DrawCellCount", cells[l]);
-    const float target[2] = { static_cast<float>(size[0]), static_cast<float>(size[1]) };
-    program->SetUniform2f("DrawTargetSize", target);
     this->EmptyVAO->Bind();
-    glDrawArrays(GL_TRIANGLES, 0, 6 * cells[l][0] * cells[l][1]);
+    plume::DrawLatticeCells(program, this->LatticeCells[l]->GetTextureUnit(), scale, cells[l], size);
     this->EmptyVAO->Release();
   };
   auto into = [&](vtkTextureObject* target, const int size[2]) {

@@ -5,6 +5,7 @@
 #include "vtkPlumeGLMatrix.h"
 #include "vtkPlumeCompositingPass.h"
 #include "vtkPlumeImageFrame.h"
+#include "vtkPlumeLatticeCellsDraw.h"
 #include "vtkPlumeLatticeCellsVS.h"
 #include "vtkPlumeLightVolume.h"
 #include "vtkPlumeLookupTexture.h"
@@ -1797,13 +1798,9 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
     // each pixel of the other cells casts its own ray: one quad per cell, those
     // of interpolated cells collapsed in the vertex shader, so their pixels
     // never run the ray program (llvmpipe would run its set-up for them)
-    const float target[2] = { float(vpWidth), float(vpHeight) };
-    program->SetUniformi("DrawCells", this->Cells->GetTextureUnit());
-    program->SetUniformi("DrawCellSize", lattice);
-    program->SetUniform2i("DrawCellCount", latticeSize);
-    program->SetUniform2f("DrawTargetSize", target);
+    const int target[2] = { vpWidth, vpHeight };
     state->vtkglDisable(GL_CULL_FACE);
-    glDrawArrays(GL_TRIANGLES, 0, 6 * latticeSize[0] * latticeSize[1]);
+    plume::DrawLatticeCells(program, this->Cells->GetTextureUnit(), lattice, latticeSize, target);
     state->vtkglEnable(GL_CULL_FACE);
   }
   else

@@ -213,45 +213,64 @@ vec3 tailPotential(float t, float h, float x)
 #endif
 }
 
-// Integral of exp(-kt (x + d)) / d^2 dx * (2 pi)... over [a, b] (b may be inf),
-// i.e. the airlight of a unit light without the factor ks I0 / (2 pi).
-vec3 segment(float a, float b, float tc, float h)
-{
-  if (!(b > a))
-  {
-    return vec3(0.0);
-  }
-  float ta = a - tc;
-  float tb = b - tc;
-  vec3 sum = vec3(0.0);
-  if (ta < 0.0)
-  {
-    float te = min(tb, 0.0);
-    sum += exp(-KappaT * tc) * (headPotential(te, h) - headPotential(ta, h));
-  }
-  if (tb > 0.0)
-  {
-    float ts = max(ta, 0.0);
-    sum += tailPotential(ts, h, ts + tc) - tailPotential(tb, h, b);
-  }
-  return max(sum, vec3(0.0));
-}
-
-//PLUME::IF SPOT
 // A running integral Phi(x) of the unit airlight along the ray, so that the
 // integral over [a, b] is Phi(b) - Phi(a): the head potential before the foot,
 // then the foot's value minus the tail's decrease. `footPhi` = Phi(tc) (0 if
 // the foot lies behind the origin), `footTail` = P_tail(foot) (or at x = 0).
+// One table fetch per channel: the head reads H at (kt (t + d), tau), the tail
+// G at (kt (t + d), eps), and with q = d + |t| (d - t before the foot, t + d
+// past it) both are at rho = h / q (tau or eps), so the side is a per-pixel
+// select of the coordinates, the channel and the exponent, not a branch
+// (llvmpipe runs both sides of a divergent `if`: headPotential and
+// tailPotential would cost two fetches per channel).
 vec3 runningIntegral(float x, float tc, float h, vec3 footPhi, vec3 footTail)
 {
-  float t = x - tc;
-  if (t <= 0.0)
+  bool infinite = isinf(x);
+  float t = infinite ? 0.0 : x - tc;
+  bool head = !infinite && t <= 0.0;
+  float d = sqrt(t * t + h * h);
+  float q = max(d + abs(t), 1e-30);
+  float rho = min(h / q, 1.0);
+  float len = head ? h * rho : q; // t + d (before the foot h^2 / (d - t): no cancellation)
+  // lookupH / lookupG's row warps, selected
+  float mScale = head ? 1.0 / (1.0 + PhaseStretch.x * rho) : 1.0 + PhaseStretch.y * rho;
+  float k = head ? PhaseRows.x : PhaseRows.y;
+  float w = head ? PhaseRows.z : PhaseRows.w;
+  float u = rho * (1.0 + k) / (1.0 + k * rho);
+  float n1 = float(TableSize - 1);
+  float path = head ? tc : x + d; // the exponent's optical length over kt
+#ifdef PLUME_FEATURE_GREY
+  const int CHANNELS = 1;
+#else
+  const int CHANNELS = 3;
+#endif
+  vec3 P;
+  for (int c = 0; c < CHANNELS; ++c)
   {
-    return exp(-KappaT * tc) * headPotential(t, h);
+    float ms = KappaT[c] * len * mScale;
+    float p = sqrt(ms / (1.0 + ms));
+    vec2 hg = texture(Table, (clamp(vec2(p, u), 0.0, 1.0) * n1 + 0.5) / float(TableSize)).rg;
+    P[c] = exp(-KappaT[c] * path) * (head ? hg.r : hg.g) / ((1.0 + ms) * (1.0 + w * rho) * q);
   }
-  return footPhi + footTail - tailPotential(t, h, x);
+#ifdef PLUME_FEATURE_GREY
+  P = vec3(P[0]);
+#endif
+  P = infinite ? vec3(0.0) : P; // the tail potential vanishes at infinity
+  return head ? P : footPhi + footTail - P;
 }
 
+// Phi's constants for the ray: the head potential at the foot times its
+// exponential (0 if the foot is behind the origin), and the tail potential at
+// the foot or, if that is behind the origin, at x = 0. (A foot at the origin,
+// tc = 0, has a head side: runningIntegral(0) takes it, so footPhi must too.)
+void footPotentials(float tc, float h, out vec3 footPhi, out vec3 footTail)
+{
+  footPhi = tc >= 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
+  float tStart = max(-tc, 0.0);
+  footTail = tailPotential(tStart, h, tStart + tc);
+}
+
+//PLUME::IF SPOT
 bool insideCone(vec3 p, vec3 apex, vec3 axis, float cosCone)
 {
   vec3 v = p - apex;
@@ -528,9 +547,8 @@ vec3 shadowedMarch(vec3 o, vec3 r, vec2 span, float tc, float h, int l, float ex
   float dth = (th1 - th0) / float(steps);
   // Interleaved gradient noise: a per-pixel offset of the lit test in each step.
   float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-  vec3 footPhi = tc > 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
-  float tStart = max(-tc, 0.0);
-  vec3 footTail = tailPotential(tStart, h, tStart + tc);
+  vec3 footPhi, footTail;
+  footPotentials(tc, h, footPhi, footTail);
   vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
   int s = LightShadow[l];
   vec3 unit = vec3(0.0);
@@ -651,6 +669,58 @@ vec3 march(vec3 o, vec3 r, float xs, int l)
 }
 #endif
 
+// The unshadowed airlight of light l over the lit part [span.x, span.y] of
+// the ray, without the factor ks I0/(2 pi): Phi(span.y) - Phi(span.x) for an
+// unweighted light (a point light, a spot with exponent 0); a weighted one (a
+// spot's exponent, a light's image) in sub-intervals uniform in the angle
+// theta = atan(t/h) seen from the light, each weighted by pow(cos angle to
+// the axis) (and the image) at its middle. One code path for both: llvmpipe
+// would run a separate closed form for the unweighted case beside the loop.
+vec3 spanAirlight(vec3 o, vec3 r, vec2 span, float tc, float h, int l, float exponent, bool weighted)
+{
+  int steps = 1;
+//PLUME::IF SPOT
+  float th0 = atan(span.x - tc, h);
+  float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
+  // The weight's angular width shrinks as 1/sqrt(exponent): SpotSteps
+  // sub-intervals per unit of sqrt(exponent / 2), at most 256.
+  steps = weighted ? min(SpotSteps * int(ceil(sqrt(max(exponent, 2.0) / 2.0))), 256) : 1;
+//PLUME::IF TEXTURE
+  if (textured(l))
+  {
+    steps = textureSteps(l, o, r, span, steps);
+  }
+//PLUME::ENDIF
+  float dth = (th1 - th0) / float(steps);
+  vec3 L = LightPosition[l];
+//PLUME::ENDIF
+  vec3 footPhi, footTail;
+  footPotentials(tc, h, footPhi, footTail);
+  vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
+  vec3 unit = vec3(0.0);
+  for (int k = 1; k <= steps; ++k)
+  {
+    float xb = span.y;
+    vec3 w = vec3(1.0);
+//PLUME::IF SPOT
+    xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
+    float thm = th0 + (float(k) - 0.5) * dth;
+    vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
+    w = vec3(exponent == 0.0 ? 1.0 : pow(max(dot(dir, LightAxis[l]), 0.0), exponent));
+//PLUME::IF TEXTURE
+    if (textured(l))
+    {
+      w *= lightTexture(l, dir);
+    }
+//PLUME::ENDIF
+//PLUME::ENDIF
+    vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
+    unit += w * (phiB - phiA); // not clamped per step, see shadowedMarch
+    phiA = phiB;
+  }
+  return max(unit, vec3(0.0));
+}
+
 // The airlight of the view ray o + x r, x in [0, xs], summed over the lights.
 vec3 airlightOf(vec3 o, vec3 r, float xs)
 {
@@ -689,50 +759,9 @@ vec3 airlightOf(vec3 o, vec3 r, float xs)
       }
       else
 //PLUME::ENDIF
-      if (!weighted)
       {
-        unit = segment(span.x, span.y, tc, h);
+        unit = spanAirlight(o, r, span, tc, h, l, exponent, weighted);
       }
-//PLUME::IF SPOT
-      else
-      {
-        // Sub-intervals uniform in the angle theta = atan(t/h) seen from the
-        // light; each weighted by pow(cos angle to the axis) at its middle.
-        float th0 = atan(span.x - tc, h);
-        float th1 = isinf(span.y) ? 1.5707963267948966 : atan(span.y - tc, h);
-        // The weight's angular width shrinks as 1/sqrt(exponent): SpotSteps
-        // sub-intervals per unit of sqrt(exponent / 2), at most 256.
-        int steps = min(SpotSteps * int(ceil(sqrt(max(exponent, 2.0) / 2.0))), 256);
-//PLUME::IF TEXTURE
-        if (textured(l))
-        {
-          steps = textureSteps(l, o, r, span, steps);
-        }
-//PLUME::ENDIF
-        float dth = (th1 - th0) / float(steps);
-        vec3 footPhi = tc > 0.0 ? exp(-KappaT * tc) * headPotential(0.0, h) : vec3(0.0);
-        float tStart = max(-tc, 0.0);
-        vec3 footTail = tailPotential(tStart, h, tStart + tc);
-        vec3 phiA = runningIntegral(span.x, tc, h, footPhi, footTail);
-        for (int k = 1; k <= steps; ++k)
-        {
-          float xb = (k == steps) ? span.y : tc + h * tan(th0 + float(k) * dth);
-          float thm = th0 + (float(k) - 0.5) * dth;
-          vec3 dir = normalize(o + (tc + h * tan(thm)) * r - L);
-          vec3 w = vec3(exponent == 0.0 ? 1.0 : pow(max(dot(dir, LightAxis[l]), 0.0), exponent));
-//PLUME::IF TEXTURE
-          if (textured(l))
-          {
-            w *= lightTexture(l, dir);
-          }
-//PLUME::ENDIF
-          vec3 phiB = runningIntegral(xb, tc, h, footPhi, footTail);
-          unit += w * (phiB - phiA); // not clamped per step, see shadowedMarch
-          phiA = phiB;
-        }
-        unit = max(unit, vec3(0.0));
-      }
-//PLUME::ENDIF
     }
 #endif
     airlight += min(KappaS * LightI0[l] * INV_2PI * unit, vec3(HUGE));

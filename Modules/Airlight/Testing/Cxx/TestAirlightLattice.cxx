@@ -18,23 +18,19 @@
 int TestAirlightLattice(int, char*[])
 {
   int failures = 0;
-  const int W = 160, H = 120;
-  airtest::Scene s(W, H);
-  s.AddRoom();
-  s.AddPointLight(0.6, 2.2, -2.6, 1.0, 0.85, 0.6, 0.6);
-  const double sp[3] = { 2.5, 3.5, -1.5 }, sf[3] = { 0.5, 0.0, -1.5 };
-  s.AddSpotLight(sp, sf, 35.0, 2.0, 0.7, 0.8, 1.0, 1.0);
-  s.Pass->SetScattering(0.25, 0.2, 0.15);
-  s.Pass->SetAbsorption(0.02, 0.04, 0.08);
-  s.Pass->SetIntensityScale(30.0);
-  s.Camera(0.5, 1.6, 6.0, -0.3, 1.2, -2.0);
-
-  const airtest::FloatImage plain = s.RenderFloat(nullptr);
-  airtest::FloatImage air;
+  auto setUp = [](airtest::Scene& s) {
+    s.AddRoom();
+    s.AddPointLight(0.6, 2.2, -2.6, 1.0, 0.85, 0.6, 0.6);
+    const double sp[3] = { 2.5, 3.5, -1.5 }, sf[3] = { 0.5, 0.0, -1.5 };
+    s.AddSpotLight(sp, sf, 35.0, 2.0, 0.7, 0.8, 1.0, 1.0);
+    s.Pass->SetScattering(0.25, 0.2, 0.15);
+    s.Pass->SetAbsorption(0.02, 0.04, 0.08);
+    s.Pass->SetIntensityScale(30.0);
+    s.Camera(0.5, 1.6, 6.0, -0.3, 1.2, -2.0);
+  };
   // Clamped to [0, 1] as the window shows them (the light's glow exceeds 1
   // nearby: unclamped, the range would be 30 and every error tiny against it).
-  const airtest::FloatImage ref = s.Reference(plain, 1, &air);
-  auto render = [&s, &failures]() {
+  auto render = [&failures](airtest::Scene& s) {
     airtest::FloatImage image = s.RenderFloat(s.Pass);
     PLUME_CHECK(!plume::test::HasNonFinite(image));
     for (float& v : image.RGBA)
@@ -43,8 +39,51 @@ int TestAirlightLattice(int, char*[])
     }
     return image;
   };
+
+  // A frame whose size is no multiple of D: the last cell of every row and
+  // column is D + 1 pixels wide (97 = 12 x 8 + 1), drawn as a quad, the other
+  // refined cells as points of D pixels (plume::DrawLatticeCells). Each
+  // refined pixel must get its airlight exactly once: every pixel against
+  // the reference, one and two levels.
+  {
+    airtest::Scene odd(97, 73);
+    setUp(odd);
+    airtest::FloatImage oddAir;
+    const airtest::FloatImage oddRef = odd.Reference(odd.RenderFloat(nullptr), 1, &oddAir);
+    for (int levels = 1; levels <= 2; ++levels)
+    {
+      odd.Pass->SetLatticeLevels(levels);
+      const airtest::Error e = airtest::Compare(render(odd), oddRef, oddAir);
+      std::cout << "97 x 73, downsampling 8, " << levels << " level(s), refined cells "
+                << odd.Pass->GetLastRefinedCellFraction() << ":\n";
+      airtest::Print("  all pixels", e);
+      PLUME_CHECK(plume::test::GLErrors(odd.Window).empty());
+      PLUME_CHECK(e.Range > 0.5);
+      PLUME_CHECK(e.RMS <= 0.005);
+      PLUME_CHECK(e.Max <= 0.02);
+      PLUME_CHECK(odd.Pass->GetLastRefinedCellFraction() > 0.0);
+    }
+    // Every cell refined (tolerance 0: no haze is linear between nodes): the
+    // frame is the per-pixel one up to rounding, so a pixel covered twice or
+    // not at all shows (the last cells drawn as D-pixel points: 0.018 off).
+    odd.Pass->SetLatticeLevels(1);
+    odd.Pass->SetUpsamplingTolerance(0.0);
+    const airtest::FloatImage allRefined = render(odd);
+    PLUME_CHECK(odd.Pass->GetLastRefinedCellFraction() == 1.0);
+    odd.Pass->SetDownsampling(1);
+    const airtest::Error vsFull = airtest::Compare(allRefined, render(odd), oddAir);
+    airtest::Print("  every cell refined, against the per-pixel pass", vsFull);
+    PLUME_CHECK(vsFull.Max * vsFull.Range <= 1e-5);
+  }
+
+  const int W = 160, H = 120;
+  airtest::Scene s(W, H);
+  setUp(s);
+  const airtest::FloatImage plain = s.RenderFloat(nullptr);
+  airtest::FloatImage air;
+  const airtest::FloatImage ref = s.Reference(plain, 1, &air);
   s.Pass->SetDownsampling(1);
-  const airtest::FloatImage full = render();
+  const airtest::FloatImage full = render(s);
 
   // Depth-edge pixels: the surface distance (window depth) jumps to a
   // 4-neighbour, or the surface ends. Near-light pixels: within 12 pixels of
@@ -101,7 +140,7 @@ int TestAirlightLattice(int, char*[])
     const int d = dl.first, levels = dl.second;
     s.Pass->SetDownsampling(d);
     s.Pass->SetLatticeLevels(levels);
-    const airtest::FloatImage image = render();
+    const airtest::FloatImage image = render(s);
     PLUME_CHECK(plume::test::GLErrors(s.Window).empty());
     const airtest::Error all = airtest::Compare(image, ref, air);
     const airtest::Error edge = airtest::Compare(image, edges, air);
@@ -163,10 +202,10 @@ int TestAirlightLattice(int, char*[])
   s.AddBox(1.4, 1.46, 0.0, 2.4, -1.6, -1.54, 0.5, 0.5, 0.5);
   s.Pass->ShadowsOn();
   s.Pass->SetDownsampling(1);
-  const airtest::FloatImage shadowedFull = render();
+  const airtest::FloatImage shadowedFull = render(s);
   s.Pass->SetDownsampling(8);
   s.Pass->SetLatticeLevels(2);
-  const airtest::FloatImage shadowed = render();
+  const airtest::FloatImage shadowed = render(s);
   const airtest::Error shadowedVsFull = airtest::Compare(shadowed, shadowedFull, air);
   airtest::Print("shadowed, default against every pixel", shadowedVsFull);
   PLUME_CHECK(shadowedVsFull.Max <= 1e-7);
