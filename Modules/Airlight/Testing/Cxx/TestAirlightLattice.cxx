@@ -10,8 +10,7 @@
 // issue's goal (RMS <= 0.5 %, max <= 2 % of the airlight range); the lattice
 // really interpolates (some cells, not all, refined; the image differs from
 // the per-pixel one), and a finer level evaluates fewer pixels exactly than
-// one level of the same spacing; the refined fractions count the lattice
-// the last frame drew after Downsampling changed. With a
+// one level of the same spacing. With a
 // thin occluder and shadows on, the frame is the per-pixel one.
 #include "plumeAirlightTestUtil.h"
 
