@@ -47,8 +47,6 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
-#include <chrono>
-#include <ctime>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -1286,7 +1284,8 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   }
 
   // 1. The scene into our float colour + depth targets.
-  this->MarkPass(nullptr);
+  this->Profiler.SetEnabled(this->ProfilePasses);
+  this->Profiler.Start();
   ostate->PushFramebufferBindings();
   this->FrameBuffer->Bind();
   this->FrameBuffer->AddColorAttachment(0, this->ColorTexture);
@@ -1299,7 +1298,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
   inner.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
   inner.SetFrameBuffer(this->FrameBuffer);
   this->RenderDelegate(&inner, anyTexture);
-  this->MarkPass("scene");
+  this->Profiler.Mark("scene");
   this->FrameBuffer->RemoveColorAttachments(1);
   this->FrameBuffer->RemoveDepthAttachment();
   ostate->PopFramebufferBindings();
@@ -1749,7 +1748,7 @@ void vtkPlumeAirlightPass::Render(const vtkRenderState* s)
       ostate->vtkglViewport(x, y, w, h);
       ostate->vtkglScissor(x, y, w, h);
       quad->Render();
-      this->MarkPass("pixels");
+      this->Profiler.Mark("pixels");
     }
     else if (!this->RenderLattice(renWin, features, setUniforms, blendGroup, x, y, w, h,
                camera->GetProjectionTransformMatrix(r->GetTiledAspectRatio(), -1.0, 1.0),
@@ -1948,7 +1947,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
       into(this->LatticeNodes[l], used);
       quad->Render();
     }
-    this->MarkPass(l == 0 ? "nodes" : ("nodes " + std::to_string(l)).c_str());
+    this->Profiler.Mark("nodes", l);
 
     f = base;
     f.Enable("LATTICE_CLASSIFY").Enable("NO_LIGHTS").Enable("LATTICE_FINE", l > 0);
@@ -1986,13 +1985,13 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
       drawCells(program, l - 1, 2, cells[l]);
     }
-    this->MarkPass(l == 0 ? "classify" : ("classify " + std::to_string(l)).c_str());
+    this->Profiler.Mark("classify", l);
   }
   // counted only if asked (GetLastRefinedCellFraction): no wait here
   this->LatticeFlagsPending = true;
-  this->LatticeFrame[0] = levels;
-  this->LatticeFrame[1] = w;
-  this->LatticeFrame[2] = h;
+  this->LatticeFrame = { levels, { w, h } };
+  std::copy(spacing, spacing + levels, this->LatticeFrame.Spacing);
+  std::copy(&cells[0][0], &cells[0][0] + 2 * levels, &this->LatticeFrame.Cells[0][0]);
   this->LatticeWindow = renWin;
   this->LowFrameBuffer->RemoveColorAttachments(1);
   ostate->PopFramebufferBindings();
@@ -2011,7 +2010,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
   ostate->vtkglViewport(x, y, w, h);
   ostate->vtkglScissor(x, y, w, h);
   quad->Render();
-  this->MarkPass("resolve");
+  this->Profiler.Mark("resolve");
 
   // 4. Added in the parent's refined cells: each finer level's interpolated
   // airlight (no light code), then the last level's refined cells' exact
@@ -2039,7 +2038,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     }
     levelUniforms(program, refine ? l - 1 : l);
     drawCells(program, l - 1, spacing[l - 1], viewport);
-    this->MarkPass(refine ? "refine" : ("interpolate " + std::to_string(l)).c_str());
+    this->Profiler.Mark(refine ? "refine" : "interpolate", refine ? 0 : l);
   }
   for (int l = 0; l < levels; ++l)
   {
@@ -2108,12 +2107,18 @@ void vtkPlumeAirlightPass::CountLatticeFlags()
     return;
   }
   this->LatticeFlagsPending = false;
-  const int levels = this->LatticeFrame[0], w = this->LatticeFrame[1], h = this->LatticeFrame[2];
-  int spacing[MaximumLatticeLevels], cells[MaximumLatticeLevels][2];
-  if (LatticeGeometry(this->Downsampling, this->LatticeLevels, w, h, spacing, cells) != levels ||
-    !this->LatticeCells[levels - 1])
+  // the lattice of the frame that drew the flags (Downsampling and
+  // LatticeLevels may have changed since)
+  const int levels = this->LatticeFrame.Levels, w = this->LatticeFrame.Size[0], h = this->LatticeFrame.Size[1];
+  const int* spacing = this->LatticeFrame.Spacing;
+  const int(*cells)[2] = this->LatticeFrame.Cells;
+  for (int l = 0; l < levels; ++l)
   {
-    return; // changed since that frame: nothing to count
+    vtkTextureObject* t = this->LatticeCells[l];
+    if (!t || static_cast<int>(t->GetWidth()) != cells[l][0] || static_cast<int>(t->GetHeight()) != cells[l][1])
+    {
+      return; // resized since that frame (a later frame's viewport): nothing to count
+    }
   }
   this->LatticeWindow->MakeCurrent();
   for (int l : { 0, levels - 1 })
@@ -2153,47 +2158,6 @@ void vtkPlumeAirlightPass::CountLatticeFlags()
 }
 
 //------------------------------------------------------------------------------
-void vtkPlumeAirlightPass::MarkPass(const char* pass)
-{
-  if (!this->ProfilePasses)
-  {
-    return;
-  }
-  glFinish();
-  const double now =
-    std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-  const double cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC; // all the process's threads
-  if (pass)
-  {
-    this->PassSeconds.push_back({ pass, now - this->PassStart, cpu - this->PassStartCPU });
-  }
-  else
-  {
-    this->PassSeconds.clear();
-  }
-  this->PassStart = now;
-  this->PassStartCPU = cpu;
-}
-
-//------------------------------------------------------------------------------
-const char* vtkPlumeAirlightPass::GetProfiledPassName(int pass)
-{
-  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].Name.c_str() : nullptr;
-}
-
-//------------------------------------------------------------------------------
-double vtkPlumeAirlightPass::GetProfiledPassSeconds(int pass)
-{
-  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].Seconds : 0.0;
-}
-
-//------------------------------------------------------------------------------
-double vtkPlumeAirlightPass::GetProfiledPassCPUSeconds(int pass)
-{
-  return pass >= 0 && pass < this->GetNumberOfProfiledPasses() ? this->PassSeconds[pass].CPUSeconds : 0.0;
-}
-
-//------------------------------------------------------------------------------
 double vtkPlumeAirlightPass::GetLastRefinedCellFraction()
 {
   this->CountLatticeFlags();
@@ -2217,33 +2181,20 @@ void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
   this->LatticeFlagsPending = false;
   this->Superclass::ReleaseGraphicsResources(w);
   this->Programs->ReleaseGraphicsResources(w);
-  for (vtkTextureObject** t :
-    { &this->ColorTexture, &this->DepthTexture, &this->TableTexture, &this->MediaTexture,
-      &this->MediaTransmittanceTexture, &this->TextureAtlas })
-  {
-    if (*t)
-    {
-      (*t)->Delete();
-      *t = nullptr;
-    }
-  }
-  for (vtkTextureObject** t : { &this->LatticeNodeMap, &this->LatticeNodeList })
-  {
-    if (*t)
-    {
-      (*t)->Delete();
-      *t = nullptr;
-    }
-  }
+  // every texture of the pass (the lattice's levels too), in one list
+  std::vector<vtkTextureObject**> textures = { &this->ColorTexture, &this->DepthTexture, &this->TableTexture,
+    &this->MediaTexture, &this->MediaTransmittanceTexture, &this->TextureAtlas, &this->LatticeNodeMap,
+    &this->LatticeNodeList };
   for (int l = 0; l < MaximumLatticeLevels; ++l)
   {
-    for (vtkTextureObject** t : { &this->LatticeNodes[l], &this->LatticeCells[l] })
+    textures.insert(textures.end(), { &this->LatticeNodes[l], &this->LatticeCells[l] });
+  }
+  for (vtkTextureObject** t : textures)
+  {
+    if (*t)
     {
-      if (*t)
-      {
-        (*t)->Delete();
-        *t = nullptr;
-      }
+      (*t)->Delete();
+      *t = nullptr;
     }
   }
   this->EmptyVAO->ReleaseGraphicsResources();

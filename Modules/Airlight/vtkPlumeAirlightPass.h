@@ -106,6 +106,7 @@
 #include "vtkNew.h"                      // For vtkNew
 #include "vtkTimeStamp.h"                // For vtkTimeStamp
 #include "vtkWeakPointer.h"              // For LatticeWindow
+#include "vtkPlumePassProfiler.h"       // For Profiler
 #include "vtkPlumeShaderProgramCache.h" // For Programs
 
 #include <functional> // For std::function
@@ -306,11 +307,12 @@ public:
    * "classify L" (finer level L), "resolve", "interpolate L" and "refine".
    * Seconds of wall time each (CPU and GL), and of the process's CPU time
    * (all its threads, llvmpipe's included: steadier on a loaded machine).
+   * Out of range: nullptr and 0.
    */
-  int GetNumberOfProfiledPasses() { return static_cast<int>(this->PassSeconds.size()); }
-  const char* GetProfiledPassName(int pass);
-  double GetProfiledPassSeconds(int pass);
-  double GetProfiledPassCPUSeconds(int pass);
+  int GetNumberOfProfiledPasses() { return this->Profiler.GetNumberOfPasses(); }
+  const char* GetProfiledPassName(int pass) { return this->Profiler.GetPassName(pass); }
+  double GetProfiledPassSeconds(int pass) { return this->Profiler.GetPassSeconds(pass); }
+  double GetProfiledPassCPUSeconds(int pass) { return this->Profiler.GetPassCPUSeconds(pass); }
   ///@}
 
   /** At most this many lattice levels (LatticeLevels). */
@@ -594,28 +596,28 @@ protected:
   double LastRefinedCellFraction = 0.0;
   double LastRefinedPixelFraction = 0.0;
   // The last lattice frame's flags are in LatticeCells, not yet counted
-  // (CountLatticeFlags reads them back on LatticeWindow): its levels and
-  // viewport width and height.
+  // (CountLatticeFlags reads them back on LatticeWindow): the lattice that
+  // frame drew (its levels, viewport width and height, each level's node
+  // spacing and cells per row and column).
   bool LatticeFlagsPending = false;
-  int LatticeFrame[3] = { 0, 0, 0 };
+  struct LatticeFrameGeometry
+  {
+    int Levels = 0;
+    int Size[2] = { 0, 0 };
+    int Spacing[MaximumLatticeLevels] = {};
+    int Cells[MaximumLatticeLevels][2] = {};
+  };
+  LatticeFrameGeometry LatticeFrame;
   vtkWeakPointer<vtkOpenGLRenderWindow> LatticeWindow;
   void CountLatticeFlags();
   // Reads level 0's cell flags back (their target bound), lists the level-1
   // nodes to evaluate into LatticeNodeMap/LatticeNodeList (activated) and
   // returns the rows of LatticeNodes[1] they fill.
   int ListLatticeNodes(const int cells[][2]);
-  // ProfilePasses: (pass, seconds) of the last frame, and when the pass being
-  // timed began. MarkPass finishes the GL work so far and records the time
-  // since the last mark as `pass` (nullptr: starts the clock, a new frame).
+  // ProfilePasses: the passes of the last frame timed (enabled from
+  // ProfilePasses at each frame's start)
   bool ProfilePasses = false;
-  struct PassTime
-  {
-    std::string Name;
-    double Seconds, CPUSeconds;
-  };
-  std::vector<PassTime> PassSeconds;
-  double PassStart = 0.0, PassStartCPU = 0.0;
-  void MarkPass(const char* pass);
+  vtkPlumePassProfiler Profiler;
   // One light group's airlight on the lattice (Downsampling > 1): nodes, cell
   // classification, the frame with the interpolated airlight, the refined
   // cells' exact airlight. `lights`, `axes`, `cosCones`: the group's eye

@@ -11,6 +11,7 @@
 #include "vtkPlumeLookupTexture.h"
 #include "vtkPlumeOpaqueDepthTexture.h"
 #include "vtkPlumeParameterTable.h"
+#include "vtkPlumePassProfiler.h"
 #include "vtkPlumeScalarTexture3D.h"
 #include "vtkPlumeShaderFeatures.h"
 #include "vtkPlumeShaderProgramCache.h"
@@ -48,7 +49,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -146,10 +146,9 @@ public:
   vtkNew<vtkPlumeLightVolume> LightVolume; // smoke: transmittance towards each light per node
   vtkOpenGLRenderWindow* Window = nullptr;
   double AutomaticBudgetMB = 0; // of Window
-  // ProfilePasses: (pass, seconds) of the last render, and when the pass
-  // being timed began
-  std::vector<std::pair<std::string, double>> PassSeconds;
-  std::chrono::steady_clock::time_point PassStart;
+  // ProfilePasses: the passes of the last render timed (enabled from
+  // ProfilePasses at each render's start)
+  vtkPlumePassProfiler Profiler;
   int FrameCount = 0; // frames drawn (animated jitter)
   double TableUnit = 0; // opacity unit distance of the table
   vtkTimeStamp TableUnitTime;
@@ -224,28 +223,6 @@ public:
   void SetUniforms(vtkPlumeVolumeMapper* self, Frame& frame, vtkShaderProgram* program);
   void Draw(vtkPlumeVolumeMapper* self, Frame& frame);
 
-  // ProfilePasses: the GL work so far finished, and the time since the last
-  // mark recorded as `pass` (the first mark of a render only starts the clock)
-  void MarkPass(vtkPlumeVolumeMapper* self, const char* pass)
-  {
-    if (!self->ProfilePasses)
-    {
-      return;
-    }
-    glFinish();
-    const auto now = std::chrono::steady_clock::now();
-    if (pass)
-    {
-      this->PassSeconds.emplace_back(pass, std::chrono::duration<double>(now - this->PassStart).count());
-    }
-    else
-    {
-      this->PassSeconds.clear();
-    }
-    this->PassStart = now;
-  }
-
-
   void ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Scalars->ReleaseGraphicsResources(window);
@@ -299,19 +276,22 @@ vtkTextureObject* vtkPlumeVolumeMapper::GetLightVolumeTexture()
 
 int vtkPlumeVolumeMapper::GetNumberOfProfiledPasses()
 {
-  return static_cast<int>(this->Impl->PassSeconds.size());
+  return this->Impl->Profiler.GetNumberOfPasses();
 }
 
 const char* vtkPlumeVolumeMapper::GetProfiledPassName(int pass)
 {
-  const auto& passes = this->Impl->PassSeconds;
-  return pass >= 0 && pass < static_cast<int>(passes.size()) ? passes[pass].first.c_str() : nullptr;
+  return this->Impl->Profiler.GetPassName(pass);
 }
 
 double vtkPlumeVolumeMapper::GetProfiledPassSeconds(int pass)
 {
-  const auto& passes = this->Impl->PassSeconds;
-  return pass >= 0 && pass < static_cast<int>(passes.size()) ? passes[pass].second : 0.0;
+  return this->Impl->Profiler.GetPassSeconds(pass);
+}
+
+double vtkPlumeVolumeMapper::GetProfiledPassCPUSeconds(int pass)
+{
+  return this->Impl->Profiler.GetPassCPUSeconds(pass);
 }
 
 //------------------------------------------------------------------------------
@@ -634,7 +614,8 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   plume::ReleaseOnWindowChange(impl, renWin);
 
-  impl.MarkPass(this, nullptr);
+  impl.Profiler.SetEnabled(this->ProfilePasses);
+  impl.Profiler.Start();
   Internals::Frame frame;
   frame.Renderer = ren;
   frame.Volume = vol;
@@ -645,9 +626,9 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  impl.MarkPass(this, "resources");
+  impl.Profiler.Mark("resources");
   impl.AcquireDepth(this, frame);
-  impl.MarkPass(this, "depth");
+  impl.Profiler.Mark("depth");
   if (!impl.ComputeFrame(this, frame))
   {
     return;
@@ -661,7 +642,7 @@ void vtkPlumeVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  impl.MarkPass(this, "setup");
+  impl.Profiler.Mark("setup");
   impl.Draw(this, frame);
   ++impl.FrameCount;
 }
@@ -1736,7 +1717,7 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
         state->vtkglViewport(0, y0, latticeSize[0], rows);
         glDrawArrays(GL_TRIANGLES, 0, 36);
       }
-      this->MarkPass(self, "lattice_rays");
+      this->Profiler.Mark("lattice_rays");
       state->vtkglViewport(0, 0, latticeSize[0], latticeSize[1]);
 
       // then classify every cell (one triangle over the whole texture)
@@ -1757,7 +1738,7 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
       glDrawArrays(GL_TRIANGLES, 0, 3);
       state->vtkglEnable(GL_CULL_FACE);
       this->Lattice->Deactivate();
-      this->MarkPass(self, "classify");
+      this->Profiler.Mark("classify");
       if (self->CountRays)
       {
         // the lattice's rays, plus every pixel of the viewport in a cell that casts its own
@@ -1806,7 +1787,7 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
     refine->SetUniform2f("ClipScale", unitScale);
     refine->SetUniform2f("ClipOffset", noOffset);
     glDrawArrays(GL_TRIANGLES, 0, 36);
-    this->MarkPass(self, "interpolation");
+    this->Profiler.Mark("interpolation");
   }
   this->Programs->Ready(renWin, lattice > 1 ? vtkPlumeLatticeCellsVS : vtkPlumeVolumeVS, nullptr, vtkPlumeVolumeFS, frame.Features);
   this->SetUniforms(self, frame, program);
@@ -1826,7 +1807,7 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
   {
     glDrawArrays(GL_TRIANGLES, 0, 36);
   }
-  this->MarkPass(self, "rays");
+  this->Profiler.Mark("rays");
   this->EmptyVAO->Release();
   if (lattice > 1)
   {

@@ -259,11 +259,14 @@ public:
    * "resources" (uploads, block summaries), "depth" (the opaque depth),
    * "setup" (matrices, lights, programs, the light volume), then with a ray
    * lattice "lattice_rays", "classify", "interpolation", and "rays" (the
-   * rays cast per pixel). Seconds of wall time each (CPU and GL).
+   * rays cast per pixel). Seconds of wall time each (CPU and GL), and of the
+   * process's CPU time (all its threads, llvmpipe's included: steadier on a
+   * loaded machine). Out of range: nullptr and 0.
    */
   int GetNumberOfProfiledPasses();
   const char* GetProfiledPassName(int pass);
   double GetProfiledPassSeconds(int pass);
+  double GetProfiledPassCPUSeconds(int pass);
   ///@}
 
   ///@{

@@ -405,7 +405,8 @@ bool IsFloor(const std::string& kind)
 
 // PLUME_BENCH_VOLUME_PROFILE=1: our jobs time each of the mapper's passes
 // (vtkPlumeVolumeMapper::ProfilePasses: the GL work finished after each, so
-// the frames are slower) and report the medians in "pass_ms"
+// the frames are slower) and report the medians in "pass_ms" (wall) and
+// "pass_cpu_ms" (the process's CPU time)
 bool ProfilePasses()
 {
   const char* profile = std::getenv("PLUME_BENCH_VOLUME_PROFILE");
@@ -722,7 +723,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
 
   const bool profile = isOurs && ProfilePasses();
   ours->SetProfilePasses(profile);
-  std::map<std::string, std::vector<double>> passTimes;
+  std::map<std::string, std::vector<double>> passTimes, passCPUTimes;
   std::vector<double> times;
   // warm-up frames (texture upload, shader compilation; the auto-adjusting
   // peers settle their sample distances over a few frames)
@@ -750,6 +751,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
       for (int pass = 0; profile && pass < ours->GetNumberOfProfiledPasses(); ++pass)
       {
         passTimes[ours->GetProfiledPassName(pass)].push_back(ours->GetProfiledPassSeconds(pass));
+        passCPUTimes[ours->GetProfiledPassName(pass)].push_back(ours->GetProfiledPassCPUSeconds(pass));
       }
     }
   }
@@ -804,6 +806,7 @@ nlohmann::json RunJob(const Context& context, const std::string& job)
   for (const auto& pass : passTimes)
   {
     result["pass_ms"][pass.first] = 1e3 * Median(pass.second);
+    result["pass_cpu_ms"][pass.first] = 1e3 * Median(passCPUTimes[pass.first]);
   }
   // the image sample distance the peer ended on (auto: what it adapted to)
   if (gpuPeer)

@@ -202,6 +202,21 @@ int TestAirlightLattice(int, char*[])
     }
   }
 
+  // The refined fractions count the lattice the last frame drew, also when
+  // Downsampling changed after it (no frame since): the same as right after
+  // it. (In the window: the pass keeps its textures, the flags are counted
+  // when asked.)
+  s.RenderAirlight();
+  const double cells8 = s.Pass->GetLastRefinedCellFraction(), pixels8 = s.Pass->GetLastRefinedPixelFraction();
+  PLUME_CHECK(cells8 > 0.0 && pixels8 > 0.0);
+  s.RenderAirlight();
+  s.Pass->SetDownsampling(2);
+  std::cout << "in the window, downsampling 8, 2 levels: refined cells " << cells8 << ", refined pixels " << pixels8
+            << "; counted after Downsampling 2 was set: " << s.Pass->GetLastRefinedCellFraction() << ", "
+            << s.Pass->GetLastRefinedPixelFraction() << "\n";
+  PLUME_CHECK(s.Pass->GetLastRefinedCellFraction() == cells8);
+  PLUME_CHECK(s.Pass->GetLastRefinedPixelFraction() == pixels8);
+
   // Shadowed lights stay off the lattice: a thin pole's shadow shaft (about
   // 2 pixels wide here) can fall between nodes, where no classification rule
   // would see it. The default frame equals the per-pixel one.
