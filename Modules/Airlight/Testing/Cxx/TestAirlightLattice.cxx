@@ -12,8 +12,9 @@
 // the per-pixel one), and a finer level evaluates fewer pixels exactly than
 // one level of the same spacing; at the nodes' pixels the frame is the
 // per-pixel one (the interpolation's geometry, the narrower last cells
-// included). A thin pole between the nodes is refined; with it and shadows
-// on, the frame is the per-pixel one.
+// included). Thin poles between the nodes are refined (one away from the
+// lights: its pixels are the per-pixel ones); with them and shadows on, the
+// frame is the per-pixel one.
 #include "plumeAirlightTestUtil.h"
 
 int TestAirlightLattice(int, char*[])
@@ -220,6 +221,35 @@ int TestAirlightLattice(int, char*[])
   // Shadowed lights stay off the lattice: a thin pole's shadow shaft (about
   // 2 pixels wide here) can fall between nodes, where no classification rule
   // would see it. The default frame equals the per-pixel one.
+  {
+    // A pole narrower than a cell away from the lights' images (smooth
+    // airlight): its pixels are the per-pixel ones, an absolute check (the
+    // poles below are compared with the scene's own largest difference,
+    // which grows with them if the depth rule is weakened everywhere).
+    s.AddBox(-2.03, -1.97, 0.0, 3.0, 0.47, 0.53, 0.5, 0.5, 0.5);
+    const airtest::FloatImage poled = s.RenderFloat(nullptr);
+    s.Pass->SetDownsampling(1);
+    const airtest::FloatImage poleFull = render(s);
+    s.Pass->SetDownsampling(8);
+    s.Pass->SetLatticeLevels(1);
+    const airtest::FloatImage poleLattice = render(s);
+    double poleMax = 0.0;
+    size_t poleCount = 0;
+    for (size_t p = 0; p < poled.Depth.size(); ++p)
+    {
+      if (poled.Depth[p] < plain.Depth[p])
+      {
+        ++poleCount;
+        for (int c = 0; c < 3; ++c)
+        {
+          poleMax = std::max(poleMax, static_cast<double>(std::fabs(poleLattice.RGBA[4 * p + c] - poleFull.RGBA[4 * p + c])));
+        }
+      }
+    }
+    std::cout << "the pole's " << poleCount << " pixels against the per-pixel pass: max " << poleMax << "\n";
+    PLUME_CHECK(poleCount > 100);
+    PLUME_CHECK(poleMax <= 1e-5);
+  }
   s.AddBox(1.4, 1.46, 0.0, 2.4, -1.6, -1.54, 0.5, 0.5, 0.5);
   // Unshadowed first, with a second thin pole near the camera, 2-3 cells
   // beside the point light's image: in front of the light's glow, its pixels
