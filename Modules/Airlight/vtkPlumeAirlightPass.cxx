@@ -1801,7 +1801,22 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     program->SetUniform2i("LatticeCellCount", cells[l]);
     program->SetUniformi("LatticeNodes", this->LatticeNodes[l]->GetTextureUnit());
     program->SetUniformi("LatticeCells", this->LatticeCells[l]->GetTextureUnit());
-    program->SetUniformi("LatticeParentBlock", l == 0 ? 0 : 2);
+    // the lattice coordinate's two lines per axis: pixel / D, and the last
+    // cell's (from its first pixel p0 to the viewport's last pixel)
+    float slope[2], offset[2], inverseNodes[2];
+    for (int a = 0; a < 2; ++a)
+    {
+      const int last = cells[l][a] - 1;
+      const double p0 = static_cast<double>(last) * spacing[l];
+      const double width = viewport[a] - 1 - p0;
+      slope[a] = static_cast<float>(1.0 / width);
+      offset[a] = static_cast<float>(last - p0 / width);
+      inverseNodes[a] = static_cast<float>(1.0 / (cells[l][a] + 1));
+    }
+    program->SetUniformf("LatticeInverse", static_cast<float>(1.0 / spacing[l]));
+    program->SetUniform2f("LatticeLastSlope", slope);
+    program->SetUniform2f("LatticeLastOffset", offset);
+    program->SetUniform2f("LatticeInverseNodes", inverseNodes);
     // (level 0 reads none of these; its samplers still need a valid unit)
     program->SetUniformi("LatticeCoarseNodes", this->LatticeNodes[0]->GetTextureUnit());
     program->SetUniformi("LatticeNodeMap", (l == 0 ? this->LatticeNodes[0] : this->LatticeNodeMap)->GetTextureUnit());
@@ -1896,7 +1911,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
   {
     const int nodes[2] = { LatticeNodesSize(cells, l, 0), LatticeNodesSize(cells, l, 1) };
     vtkPlumeShaderFeatures f = base;
-    f.Enable("LATTICE_NODES");
+    f.Enable("LATTICE_NODES").Enable("LATTICE_FINE", l > 0);
     vtkOpenGLQuadHelper* quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
     vtkShaderProgram* program = quad ? quad->Program : nullptr;
     if (!program)
@@ -1935,7 +1950,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     this->Profiler.Mark("nodes", l);
 
     f = base;
-    f.Enable("LATTICE_CLASSIFY").Enable("NO_LIGHTS");
+    f.Enable("LATTICE_CLASSIFY").Enable("NO_LIGHTS").Enable("LATTICE_FINE", l > 0);
     if (l == 0)
     {
       quad = this->Programs->ReadyQuad(renWin, AirlightSource(), f);
@@ -2014,7 +2029,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     }
     else
     {
-      f.Enable("LATTICE_INTERPOLATE").Enable("NO_LIGHTS");
+      f.Enable("LATTICE_INTERPOLATE").Enable("NO_LIGHTS").Enable("LATTICE_FINE");
     }
     vtkShaderProgram* program = this->Programs->Ready(renWin, vtkPlumeLatticeCellsVS, nullptr, AirlightSource(), f);
     if (!program)

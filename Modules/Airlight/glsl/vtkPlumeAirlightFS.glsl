@@ -45,10 +45,21 @@ uniform sampler2D LatticeNodes;    // RGB: the nodes' airlight
 uniform sampler2D LatticeCells;    // R: 0 interpolated, 1 refined
 uniform float LatticeTolerance;    // the largest estimated interpolation error (absolute)
 uniform float LatticeDepthTolerance; // relative eye-depth mismatch that marks a surface edge
-uniform int LatticeParentBlock;    // a finer level: its cells per parent cell side (2); 0 on level 0
 uniform sampler2D LatticeCoarseNodes; // a finer level: its parent level's nodes
 uniform sampler2D LatticeNodeMap;  // a finer level: per node, its texel index in LatticeNodes (see nodeAirlight)
 uniform sampler2D LatticeNodeList; // a finer level's nodes pass: per texel of LatticeNodes, its node (RG)
+// A finer level's passes are compiled with LATTICE_FINE: llvmpipe runs both
+// sides of a branch on a uniform, so level 0 paid for a finer level's node
+// look-ups (four fetches a node) in its classify and resolve passes.
+#ifdef PLUME_FEATURE_LATTICE_FINE
+const int LatticeParentBlock = 2;  // a finer level's cells per parent cell side
+#endif
+// A pixel's lattice coordinate (see latticeCoordinate), in float: llvmpipe
+// runs an integer division by a uniform one lane at a time.
+uniform float LatticeInverse;      // 1 / D
+uniform vec2 LatticeLastSlope;     // 1 / the last cell's width in pixels (one per axis)
+uniform vec2 LatticeLastOffset;    // (cells - 1) - the last cell's first pixel / its width
+uniform vec2 LatticeInverseNodes;  // 1 / (cells + 1)
 //PLUME::IF LATTICE_CLASSIFY
 uniform vec3 LightPixel[NUMBER_OF_LIGHTS]; // the lights' viewport pixel and 1 if in front of the eye
 uniform vec4 LightShaft[NUMBER_OF_LIGHTS]; // a narrow spot's axis on the viewport: pixels (x0, y0), (x1, y1)
@@ -877,40 +888,48 @@ ivec2 nodePixel(ivec2 node)
 // the parent's.
 vec3 nodeAirlight(ivec2 n)
 {
-  if (LatticeParentBlock == 0)
-  {
-    return texelFetch(LatticeNodes, n, 0).rgb;
-  }
+#ifdef PLUME_FEATURE_LATTICE_FINE
   if (all(equal(n % 2, ivec2(0))))
   {
     return texelFetch(LatticeCoarseNodes, n / 2, 0).rgb;
   }
   int k = int(texelFetch(LatticeNodeMap, n, 0).r);
   return texelFetch(LatticeNodes, ivec2(k % 64, k / 64), 0).rgb;
+#else
+  return texelFetch(LatticeNodes, n, 0).rgb;
+#endif
 }
 
-// The cell holding viewport pixel `pixel` (the last cell of a row or column
-// also holds the viewport's last pixel).
-ivec2 cellOf(ivec2 pixel)
+// Viewport pixel `pixel`'s lattice coordinate: its cell plus the fraction
+// across it, in node units. It is pixel / D in every cell but the last of a
+// row or column, which is narrower (its far node is the viewport's last
+// pixel) and so steeper: the larger of the two lines.
+vec2 latticeCoordinate(ivec2 pixel)
 {
-  return min(pixel / Lattice, LatticeCellCount - 1);
+  vec2 p = vec2(pixel);
+  return max(p * LatticeInverse, p * LatticeLastSlope + LatticeLastOffset);
 }
 
-// The nodes' airlight at `pixel`, bilinear between its cell's four nodes: one
-// filtered fetch at the node coordinate (cell + fraction; the last cell of a
-// row or column is narrower).
-vec3 interpolatedAirlight(ivec2 pixel)
+// The cell at lattice coordinate u (the last cell of a row or column also
+// holds the viewport's last pixel, at u = cells).
+ivec2 cellOf(vec2 u)
 {
-  ivec2 c = cellOf(pixel);
-  vec2 p0 = vec2(nodePixel(c));
-  vec2 f = (vec2(pixel) - p0) / (vec2(nodePixel(c + 1)) - p0);
-  if (LatticeParentBlock > 0)
-  {
-    vec3 a = mix(nodeAirlight(c), nodeAirlight(c + ivec2(1, 0)), f.x);
-    vec3 b = mix(nodeAirlight(c + ivec2(0, 1)), nodeAirlight(c + 1), f.x);
-    return mix(a, b, f.y);
-  }
-  return textureLod(LatticeNodes, (vec2(c) + f + 0.5) / vec2(LatticeCellCount + 1), 0.0).rgb;
+  return min(ivec2(u), LatticeCellCount - 1);
+}
+
+// The nodes' airlight at lattice coordinate u, bilinear between its cell's
+// four nodes: level 0 one filtered fetch (the texture unit's float weights).
+vec3 interpolatedAirlight(vec2 u)
+{
+#ifdef PLUME_FEATURE_LATTICE_FINE
+  ivec2 c = cellOf(u);
+  vec2 f = u - vec2(c);
+  vec3 a = mix(nodeAirlight(c), nodeAirlight(c + ivec2(1, 0)), f.x);
+  vec3 b = mix(nodeAirlight(c + ivec2(0, 1)), nodeAirlight(c + 1), f.x);
+  return mix(a, b, f.y);
+#else
+  return textureLod(LatticeNodes, (u + 0.5) * LatticeInverseNodes, 0.0).rgb;
+#endif
 }
 
 //PLUME::IF LATTICE_CLASSIFY
@@ -972,15 +991,14 @@ float classifyCell(ivec2 cell)
   // finer level its parent cell's (the only ones evaluated: 3 x 3, the
   // differences centred on its middle row and column).
   ivec2 lo = ivec2(0), hi = LatticeCellCount;
-  if (LatticeParentBlock > 0)
+#ifdef PLUME_FEATURE_LATTICE_FINE
+  lo = cell / LatticeParentBlock * LatticeParentBlock;
+  hi = min(lo + LatticeParentBlock, LatticeCellCount);
+  if (any(lessThan(hi - lo, ivec2(2))))
   {
-    lo = cell / LatticeParentBlock * LatticeParentBlock;
-    hi = min(lo + LatticeParentBlock, LatticeCellCount);
-    if (any(lessThan(hi - lo, ivec2(2))))
-    {
-      return 1.0; // a parent one cell wide (the viewport's edge): no second difference
-    }
+    return 1.0; // a parent one cell wide (the viewport's edge): no second difference
   }
+#endif
   vec3 e = vec3(0.0);
   for (int k = 0; k < 4; ++k)
   {
@@ -1001,7 +1019,7 @@ float classifyCell(ivec2 cell)
   // the cell's pixels (the last cell of a row or column: up to the viewport's edge)
   ivec2 end = ivec2(cell.x == LatticeCellCount.x - 1 ? int(ViewportSize.x) : p1.x,
     cell.y == LatticeCellCount.y - 1 ? int(ViewportSize.y) : p1.y);
-  vec2 size = vec2(p1 - p0);
+  vec2 invSize = 1.0 / vec2(p1 - p0);
   // A crease (two surfaces meeting, the depth continuous: a room's corner)
   // hides nothing between the nodes, and the second differences above bound
   // its kink: where the corners' eye depths are within CREASE_SPREAD of each
@@ -1015,6 +1033,13 @@ float classifyCell(ivec2 cell)
   bool crease = zhi <= (1.0 + CREASE_SPREAD) * zlo;
   zlo *= 1.0 - LatticeDepthTolerance;
   zhi *= 1.0 + LatticeDepthTolerance;
+  // At a pixel, eye z is (a + b zn) / (c + e zn) of zn = 2 depth - 1 (the
+  // inverse projection's z and w rows; a and c depend on the pixel): the
+  // mismatch |z' - z| > tolerance |z| is compared multiplied out (z itself,
+  // one division, only for the crease's range): no unprojection per pixel.
+  vec4 rowZ = vec4(InverseProjection[0].z, InverseProjection[1].z, InverseProjection[2].z, InverseProjection[3].z);
+  vec4 rowW = vec4(InverseProjection[0].w, InverseProjection[1].w, InverseProjection[2].w, InverseProjection[3].w);
+  vec2 ndcScale = 2.0 / ViewportSize;
   for (int j = p0.y; j < end.y; ++j)
   {
     for (int i = p0.x; i < end.x; ++i)
@@ -1037,11 +1062,17 @@ float classifyCell(ivec2 cell)
         }
         continue;
       }
-      vec2 f = (vec2(p - p0)) / size;
+      vec2 f = vec2(p - p0) * invSize;
       float predicted = mix(mix(z.x, z.y, f.x), mix(z.z, z.w, f.x), f.y);
-      float ze = eyeZ(p, d);
+      vec2 ndc = (vec2(p) + 0.5) * ndcScale - 1.0;
+      float a = dot(rowZ.xy, ndc) + rowZ.w;
+      float c = dot(rowW.xy, ndc) + rowW.w;
+      float zn = 2.0 * d - 1.0, zp = 2.0 * predicted - 1.0;
+      float num = a + rowZ.z * zn, den = c + rowW.z * zn;
+      float numP = a + rowZ.z * zp, denP = c + rowW.z * zp;
+      float ze = num / den;
       bool inRange = crease && -ze >= zlo && -ze <= zhi;
-      if (d >= 1.0 || (!inRange && abs(eyeZ(p, predicted) - ze) > LatticeDepthTolerance * abs(ze)))
+      if (d >= 1.0 || (!inRange && abs(numP * den - num * denP) > LatticeDepthTolerance * abs(num * denP)))
       {
         return 1.0;
       }
@@ -1064,7 +1095,11 @@ void main()
   // One lattice node per fragment of the nodes' target: the airlight of its
   // ray over the whole ray (cells with a translucent medium are refined).
   ivec2 t = ivec2(gl_FragCoord.xy);
-  ivec2 node = nodePixel(LatticeParentBlock > 0 ? ivec2(texelFetch(LatticeNodeList, t, 0).rg) : t);
+#ifdef PLUME_FEATURE_LATTICE_FINE
+  ivec2 node = nodePixel(ivec2(texelFetch(LatticeNodeList, t, 0).rg));
+#else
+  ivec2 node = nodePixel(t);
+#endif
   float xsNode = viewRay(node, texelFetch(SceneDepth, node, 0).r, o, r);
   gl_FragDepth = 1.0;
   gl_FragData[0] = vec4(airlightOf(o, r, xsNode), 1.0);
@@ -1081,12 +1116,13 @@ void main()
   // cells' airlight, added to what LATTICE_RESOLVE wrote (no airlight there);
   // its refined cells get theirs from LATTICE_REFINE. (No medium: cells with
   // one are refined at every level.)
-  if (texelFetch(LatticeCells, cellOf(pixel), 0).r != 0.0)
+  vec2 u = latticeCoordinate(pixel);
+  if (texelFetch(LatticeCells, cellOf(u), 0).r != 0.0)
   {
     discard;
   }
   gl_FragDepth = 1.0;
-  gl_FragData[0] = vec4(interpolatedAirlight(pixel), 0.0);
+  gl_FragData[0] = vec4(interpolatedAirlight(u), 0.0);
   return;
 #endif
   vec4 color = texelFetch(SceneColor, pixel, 0);
@@ -1102,10 +1138,11 @@ void main()
   // Interpolated cells take the nodes' airlight; refined cells none here
   // (LATTICE_REFINE adds theirs). Classification refines every cell with a
   // translucent medium, so an interpolated pixel's ray is whole.
-  bool interpolated = texelFetch(LatticeCells, cellOf(pixel), 0).r == 0.0;
+  vec2 u = latticeCoordinate(pixel);
+  bool interpolated = texelFetch(LatticeCells, cellOf(u), 0).r == 0.0;
   if (interpolated)
   {
-    airlight = interpolatedAirlight(pixel);
+    airlight = interpolatedAirlight(u);
   }
 #endif
   // A translucent medium at the pixel: the haze splits at xv (mediaSplit)

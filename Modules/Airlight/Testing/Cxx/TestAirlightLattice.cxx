@@ -10,8 +10,11 @@
 // issue's goal (RMS <= 0.5 %, max <= 2 % of the airlight range); the lattice
 // really interpolates (some cells, not all, refined; the image differs from
 // the per-pixel one), and a finer level evaluates fewer pixels exactly than
-// one level of the same spacing. A thin pole between the nodes is refined;
-// with it and shadows on, the frame is the per-pixel one.
+// one level of the same spacing; at the nodes' pixels the frame is the
+// per-pixel one (the interpolation's geometry, the narrower last cells
+// included). Thin poles between the nodes are refined (one away from the
+// lights: its pixels are the per-pixel ones); with them and shadows on, the
+// frame is the per-pixel one.
 #include "plumeAirlightTestUtil.h"
 
 int TestAirlightLattice(int, char*[])
@@ -163,6 +166,24 @@ int TestAirlightLattice(int, char*[])
     PLUME_CHECK(nearMax <= 0.02);
     if (d > 1)
     {
+      // The lattice reproduces its nodes: at every node pixel (i D, j D, the
+      // last row and column at the viewport's edge, where the last cell is
+      // narrower) the frame is the per-pixel one, interpolated cell or not.
+      double nodeMax = 0.0;
+      const int cells[2] = { (W - 2) / d + 1, (H - 2) / d + 1 };
+      for (int j = 0; j <= cells[1]; ++j)
+      {
+        for (int i = 0; i <= cells[0]; ++i)
+        {
+          const size_t p = static_cast<size_t>(std::min(j * d, H - 1)) * W + std::min(i * d, W - 1);
+          for (int c = 0; c < 3; ++c)
+          {
+            nodeMax = std::max(nodeMax, static_cast<double>(std::fabs(image.RGBA[4 * p + c] - full.RGBA[4 * p + c])));
+          }
+        }
+      }
+      std::cout << "  at the nodes against the per-pixel pass: max " << nodeMax << "\n";
+      PLUME_CHECK(nodeMax <= 1e-5);
       PLUME_CHECK(s.Pass->GetLastRefinedCellFraction() > 0.0);
       PLUME_CHECK(s.Pass->GetLastRefinedCellFraction() < 0.9);
       PLUME_CHECK(vsFull.Max > 1e-6); // some pixels really are interpolated
@@ -200,6 +221,35 @@ int TestAirlightLattice(int, char*[])
   // Shadowed lights stay off the lattice: a thin pole's shadow shaft (about
   // 2 pixels wide here) can fall between nodes, where no classification rule
   // would see it. The default frame equals the per-pixel one.
+  {
+    // A pole narrower than a cell away from the lights' images (smooth
+    // airlight): its pixels are the per-pixel ones, an absolute check (the
+    // poles below are compared with the scene's own largest difference,
+    // which grows with them if the depth rule is weakened everywhere).
+    s.AddBox(-2.03, -1.97, 0.0, 3.0, 0.47, 0.53, 0.5, 0.5, 0.5);
+    const airtest::FloatImage poled = s.RenderFloat(nullptr);
+    s.Pass->SetDownsampling(1);
+    const airtest::FloatImage poleFull = render(s);
+    s.Pass->SetDownsampling(8);
+    s.Pass->SetLatticeLevels(1);
+    const airtest::FloatImage poleLattice = render(s);
+    double poleMax = 0.0;
+    size_t poleCount = 0;
+    for (size_t p = 0; p < poled.Depth.size(); ++p)
+    {
+      if (poled.Depth[p] < plain.Depth[p])
+      {
+        ++poleCount;
+        for (int c = 0; c < 3; ++c)
+        {
+          poleMax = std::max(poleMax, static_cast<double>(std::fabs(poleLattice.RGBA[4 * p + c] - poleFull.RGBA[4 * p + c])));
+        }
+      }
+    }
+    std::cout << "the pole's " << poleCount << " pixels against the per-pixel pass: max " << poleMax << "\n";
+    PLUME_CHECK(poleCount > 100);
+    PLUME_CHECK(poleMax <= 1e-5);
+  }
   s.AddBox(1.4, 1.46, 0.0, 2.4, -1.6, -1.54, 0.5, 0.5, 0.5);
   // Unshadowed first, with a second thin pole near the camera, 2-3 cells
   // beside the point light's image: in front of the light's glow, its pixels
