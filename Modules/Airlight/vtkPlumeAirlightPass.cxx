@@ -47,6 +47,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -676,6 +677,17 @@ bool vtkPlumeAirlightPass::UpdateResources(vtkOpenGLRenderWindow* renWin, int w,
         (*t)->Resize(tw, th);
       }
     }
+    // level 0's nodes (and cells, one fewer a side) folded: see the header
+    const int fold[2] = { 2 * LatticeNodesSize(count, 0, 0), (LatticeNodesSize(count, 0, 1) + 1) / 2 };
+    if (!this->LatticeFolded)
+    {
+      this->LatticeFolded = vtkTextureObject::New();
+      this->LatticeFolded->SetContext(renWin);
+      this->LatticeFolded->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->LatticeFolded->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->LatticeFolded->Allocate2D(fold[0], fold[1], 4, VTK_FLOAT);
+    }
+    this->LatticeFolded->Resize(fold[0], fold[1]);
     for (vtkTextureObject** t : { &this->LatticeNodeMap, &this->LatticeNodeList })
     {
       if (levels > 1 && !*t)
@@ -1839,6 +1851,29 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     ostate->vtkglViewport(0, 0, size[0], size[1]);
     ostate->vtkglScissor(0, 0, size[0], size[1]);
   };
+  // Level 0's nodes and cells are drawn into LatticeFolded: the first
+  // ceil(n / 2) rows of an n-row target at x < its width, the others beside
+  // them (the fragment shader unfolds; see the header); `unfold` copies them
+  // to `target`, the natural layout.
+  auto folded = [&](vtkShaderProgram* program, const int size[2]) {
+    const int rows = (size[1] + 1) / 2;
+    program->SetUniform2i("LatticeFold", std::array<int, 2>{ size[0], rows }.data());
+    const int foldSize[2] = { 2 * size[0], rows };
+    into(this->LatticeFolded, foldSize);
+  };
+  auto unfold = [&](vtkTextureObject* target, const int size[2]) {
+    // copied from the bound folded target into `target` on its own texture
+    // unit (Bind alone would bind it on the active unit, another lattice
+    // texture's), the active unit then put back
+    const int rows = (size[1] + 1) / 2;
+    GLint active = GL_TEXTURE0;
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+    target->Activate();
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, size[0], rows);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, rows, size[0], 0, size[0], size[1] - rows);
+    ostate->vtkglActiveTexture(static_cast<unsigned int>(active));
+    into(target, size);
+  };
   ostate->vtkglDisable(GL_BLEND);
   for (int l = 0; l < levels; ++l)
   {
@@ -1922,8 +1957,9 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     levelUniforms(program, l);
     if (l == 0)
     {
-      into(this->LatticeNodes[l], nodes);
+      folded(program, nodes);
       quad->Render();
+      unfold(this->LatticeNodes[l], nodes);
       // read back for the frame's airlight range
       std::vector<float> values(static_cast<size_t>(nodes[0]) * nodes[1] * 4);
       glReadPixels(0, 0, nodes[0], nodes[1], GL_RGBA, GL_FLOAT, values.data());
@@ -1970,10 +2006,11 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     program->SetUniformf("LatticeDepthTolerance", static_cast<float>(LatticeDepthTolerance));
     program->SetUniform3fv("LightPixel", std::max(count, 1), reinterpret_cast<const float(*)[3]>(pixels.data()));
     program->SetUniform4fv("LightShaft", std::max(count, 1), reinterpret_cast<const float(*)[4]>(shafts.data()));
-    into(this->LatticeCells[l], cells[l]);
     if (l == 0)
     {
+      folded(program, cells[l]);
       quad->Render();
+      unfold(this->LatticeCells[l], cells[l]);
       if (levels > 1)
       {
         fineRows = this->ListLatticeNodes(cells);
@@ -1981,6 +2018,7 @@ bool vtkPlumeAirlightPass::RenderLattice(vtkOpenGLRenderWindow* renWin, const vt
     }
     else
     {
+      into(this->LatticeCells[l], cells[l]);
       ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
       drawCells(program, l - 1, 2, cells[l]);
@@ -2184,7 +2222,7 @@ void vtkPlumeAirlightPass::ReleaseGraphicsResources(vtkWindow* w)
   // every texture of the pass (the lattice's levels too), in one list
   std::vector<vtkTextureObject**> textures = { &this->ColorTexture, &this->DepthTexture, &this->TableTexture,
     &this->MediaTexture, &this->MediaTransmittanceTexture, &this->TextureAtlas, &this->LatticeNodeMap,
-    &this->LatticeNodeList };
+    &this->LatticeNodeList, &this->LatticeFolded };
   for (int l = 0; l < MaximumLatticeLevels; ++l)
   {
     textures.insert(textures.end(), { &this->LatticeNodes[l], &this->LatticeCells[l] });

@@ -592,6 +592,12 @@ protected:
   // per texel of LatticeNodes[1] its node (RG32F), uploaded every frame.
   vtkTextureObject* LatticeNodeMap = nullptr;
   vtkTextureObject* LatticeNodeList = nullptr;
+  // Level 0's nodes and cells are drawn folded, the upper half of the rows
+  // beside the lower (RGBA32F, 2 n x ceil(n / 2) for n x n nodes), then
+  // copied to LatticeNodes[0] / LatticeCells[0]: llvmpipe's threads split a
+  // pass by 64 x 64 tiles, and a 64 x 64 target (512^2 at D 8) is one tile,
+  // one thread.
+  vtkTextureObject* LatticeFolded = nullptr;
   vtkNew<vtkOpenGLVertexArrayObject> EmptyVAO; // the refined cells' quads come from gl_VertexID
   double LastRefinedCellFraction = 0.0;
   double LastRefinedPixelFraction = 0.0;

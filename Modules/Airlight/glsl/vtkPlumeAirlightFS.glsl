@@ -874,6 +874,24 @@ float viewRay(ivec2 pixel, float depth, out vec3 o, out vec3 r)
   return xs;
 }
 
+#ifndef PLUME_FEATURE_LATTICE_FINE
+// Level 0's nodes and cells passes draw into a folded target: the first
+// LatticeFold.y rows at x < LatticeFold.x, the others beside them, so that
+// llvmpipe's 64 x 64 tiles split the pass between its threads (a 64 x 64
+// target is one tile). Texel t's node or cell (of `count`); a texel past
+// the last (an odd count's folded half) is discarded.
+uniform ivec2 LatticeFold;
+ivec2 unfold(ivec2 t, ivec2 count)
+{
+  ivec2 u = t.x < LatticeFold.x ? t : ivec2(t.x - LatticeFold.x, t.y + LatticeFold.y);
+  if (any(greaterThanEqual(u, count)))
+  {
+    discard;
+  }
+  return u;
+}
+#endif
+
 // The lattice's node (i, j) is the ray through this pixel.
 ivec2 nodePixel(ivec2 node)
 {
@@ -1098,6 +1116,7 @@ void main()
 #ifdef PLUME_FEATURE_LATTICE_FINE
   ivec2 node = nodePixel(ivec2(texelFetch(LatticeNodeList, t, 0).rg));
 #else
+  t = unfold(t, LatticeCellCount + 1);
   ivec2 node = nodePixel(t);
 #endif
   float xsNode = viewRay(node, texelFetch(SceneDepth, node, 0).r, o, r);
@@ -1107,7 +1126,11 @@ void main()
 #endif
 //PLUME::IF LATTICE_CLASSIFY
   gl_FragDepth = 1.0;
+#ifdef PLUME_FEATURE_LATTICE_FINE
   gl_FragData[0] = vec4(classifyCell(ivec2(gl_FragCoord.xy)), 0.0, 0.0, 1.0);
+#else
+  gl_FragData[0] = vec4(classifyCell(unfold(ivec2(gl_FragCoord.xy), LatticeCellCount)), 0.0, 0.0, 1.0);
+#endif
   return;
 //PLUME::ENDIF
   ivec2 pixel = ivec2(gl_FragCoord.xy - ViewportOrigin);
