@@ -160,7 +160,8 @@ const float HUGE = 1e20;
 // are p = sqrt(m' / (1 + m')), m' = m * mScale, and u = tau (1 + k) / (1 + k tau);
 // the texel holds (1 + m') (1 + w tau) times the function (k = w = 0 and
 // mScale = 1 for the isotropic phase; for Henyey-Greenstein they follow the
-// phase's peak, see vtkPlumeAirlightPass.h). Returns the function itself.
+// phase's peak, see vtkPlumeAirlightPass.h). Returns the function itself:
+// `channel` 0 the table's H, 1 its G.
 float lookup(float m, float tau, float mScale, float k, float w, int channel)
 {
   float ms = m * mScale;
@@ -243,12 +244,11 @@ vec3 runningIntegral(float x, float tc, float h, vec3 footPhi, vec3 footTail)
   float q = max(d + abs(t), 1e-30);
   float rho = min(h / q, 1.0);
   float len = head ? h * rho : q; // t + d (before the foot h^2 / (d - t): no cancellation)
-  // lookupH / lookupG's row warps, selected
+  // lookupH's or lookupG's arguments, selected
   float mScale = head ? 1.0 / (1.0 + PhaseStretch.x * rho) : 1.0 + PhaseStretch.y * rho;
   float k = head ? PhaseRows.x : PhaseRows.y;
   float w = head ? PhaseRows.z : PhaseRows.w;
-  float u = rho * (1.0 + k) / (1.0 + k * rho);
-  float n1 = float(TableSize - 1);
+  int table = head ? 0 : 1;
   float path = head ? tc : x + d; // the exponent's optical length over kt
 #ifdef PLUME_FEATURE_GREY
   const int CHANNELS = 1;
@@ -258,10 +258,7 @@ vec3 runningIntegral(float x, float tc, float h, vec3 footPhi, vec3 footTail)
   vec3 P;
   for (int c = 0; c < CHANNELS; ++c)
   {
-    float ms = KappaT[c] * len * mScale;
-    float p = sqrt(ms / (1.0 + ms));
-    vec2 hg = texture(Table, (clamp(vec2(p, u), 0.0, 1.0) * n1 + 0.5) / float(TableSize)).rg;
-    P[c] = exp(-KappaT[c] * path) * (head ? hg.r : hg.g) / ((1.0 + ms) * (1.0 + w * rho) * q);
+    P[c] = exp(-KappaT[c] * path) * lookup(KappaT[c] * len, rho, mScale, k, w, table) / q;
   }
 #ifdef PLUME_FEATURE_GREY
   P = vec3(P[0]);
