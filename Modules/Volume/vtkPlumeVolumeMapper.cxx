@@ -1795,9 +1795,10 @@ void vtkPlumeVolumeMapper::Internals::Draw(vtkPlumeVolumeMapper* self, Frame& fr
   program->SetUniform2f("ClipOffset", noOffset);
   if (lattice > 1)
   {
-    // each pixel of the other cells casts its own ray: one quad per cell, those
-    // of interpolated cells collapsed in the vertex shader, so their pixels
-    // never run the ray program (llvmpipe would run its set-up for them)
+    // each pixel of the other cells casts its own ray: the refined cells drawn
+    // by plume::DrawLatticeCells, those of interpolated cells moved out of view
+    // in the vertex shader, so their pixels never run the ray program
+    // (llvmpipe would run its set-up for them)
     const int target[2] = { vpWidth, vpHeight };
     state->vtkglDisable(GL_CULL_FACE);
     plume::DrawLatticeCells(program, this->Cells->GetTextureUnit(), lattice, latticeSize, target);
